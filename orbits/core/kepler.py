@@ -21,7 +21,10 @@ How the accuracy is reached:
 
 import numpy as np
 
-from orbits.errors import ConvergenceError, OrbitDomainError
+from orbits.core._checks import check_eccentricity, check_finite
+from orbits.core._dd import two_product, two_sum
+from orbits.core._roots import halley_in_bracket
+from orbits.errors import OrbitDomainError
 
 # 2 pi as an unevaluated sum of three doubles (checked against mpmath in the tests).
 TWO_PI_1 = 6.283185307179586
@@ -31,8 +34,6 @@ TWO_PI_3 = -5.989539619436679e-33
 #: Largest |M| (rad) reduced exactly: 2**50 revolutions.
 MAX_MEAN_ANOMALY = 2.0**50 * TWO_PI_1
 
-_SPLITTER = 134217729.0  # 2**27 + 1
-_MAX_ITERATIONS = 60
 _SERIES_LIMIT = 2.0  # |x| below which x - sin x and sinh x - x come from their series
 _LOG_FORM_LIMIT = 20.0  # H above which the hyperbolic equation is solved in logarithmic form
 _TINY_MEAN_ANOMALY = 1e-280  # below this, E = M / (1 - e) and H = M / (e - 1) are exact roots
@@ -75,36 +76,13 @@ def sinh_minus_x(x):
     return np.where(small, _series(x, _SINH_MINUS_X), large)
 
 
-def _split(a):
-    """Veltkamp split a = hi + lo, each half with at most 26 significant bits."""
-    t = _SPLITTER * a
-    hi = t - (t - a)
-    return hi, a - hi
-
-
-def _two_product(a, b):
-    """Exact product a * b = p + err (Dekker)."""
-    p = a * b
-    a_hi, a_lo = _split(a)
-    b_hi, b_lo = _split(b)
-    err = ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
-    return p, err
-
-
-def _two_sum(a, b):
-    """Exact sum a + b = s + err (Knuth)."""
-    s = a + b
-    bb = s - a
-    return s, (a - (s - bb)) + (b - bb)
-
-
 def reduce_mean_anomaly(M):
     """Reduce M (rad) to M - 2 pi k in [-pi, pi], k = round(M / 2 pi), as a double-double (hi, lo).
 
     Exact to about 2**-100 relative for |M| <= MAX_MEAN_ANOMALY; larger |M| raise OrbitDomainError.
     """
     M = np.asarray(M, dtype=float)
-    _check_finite(M, "mean anomaly M", "rad")
+    check_finite(M, "mean anomaly M", "rad")
     too_large = np.abs(M) > MAX_MEAN_ANOMALY
     if np.any(too_large):
         bad = M[too_large].flat[0]
@@ -113,37 +91,17 @@ def reduce_mean_anomaly(M):
             f"allowed |M| <= {MAX_MEAN_ANOMALY:.6g} rad (2**50 revolutions)"
         )
     k = np.rint(M / TWO_PI_1)
-    p1, e1 = _two_product(k, TWO_PI_1)
-    p2, e2 = _two_product(k, TWO_PI_2)
+    p1, e1 = two_product(k, TWO_PI_1)
+    p2, e2 = two_product(k, TWO_PI_2)
     hi = M - p1  # exact (Sterbenz) since p1 is within a factor 2 of M whenever k != 0
-    hi, lo = _two_sum(hi, -e1)
-    hi, t = _two_sum(hi, -p2)
+    hi, lo = two_sum(hi, -e1)
+    hi, t = two_sum(hi, -p2)
     lo = lo + t - e2 - k * TWO_PI_3
-    hi, lo = _two_sum(hi, lo)
+    hi, lo = two_sum(hi, lo)
     # Rounding of k can leave the result a few ulp outside [-pi, pi]: shift it back by one turn.
     shift = np.where(hi > np.pi, -1.0, np.where(hi < -np.pi, 1.0, 0.0))
-    hi, t = _two_sum(hi + shift * TWO_PI_1, shift * TWO_PI_2)  # hi +/- 2 pi_1 is exact (Sterbenz)
-    return _two_sum(hi, lo + t)
-
-
-def _check_finite(x, name, unit):
-    if not np.all(np.isfinite(x)):
-        bad = np.asarray(x)[~np.isfinite(x)].flat[0]
-        raise OrbitDomainError(f"{name} = {bad!r} {unit} is not finite; it must be a finite number")
-
-
-def _check_eccentricity(e, low, high, low_open, high_open, conic):
-    _check_finite(e, "eccentricity e", "(dimensionless)")
-    below = (e <= low) if low_open else (e < low)
-    above = (e >= high) if high_open else (e > high)
-    bad = below | above
-    if np.any(bad):
-        value = np.asarray(e)[bad].flat[0]
-        lo_br, hi_br = ("(" if low_open else "["), (")" if high_open else "]")
-        raise OrbitDomainError(
-            f"eccentricity e = {value!r} is outside {lo_br}{low}, {high}{hi_br}, "
-            f"where the {conic} Kepler equation is defined"
-        )
+    hi, t = two_sum(hi + shift * TWO_PI_1, shift * TWO_PI_2)  # hi +/- 2 pi_1 is exact (Sterbenz)
+    return two_sum(hi, lo + t)
 
 
 def _cubic_root(linear, cubic, rhs):
@@ -164,45 +122,6 @@ def _cubic_root(linear, cubic, rhs):
         return np.where(linear_regime, rhs / linear, scale / (w * w + ps / 3.0 + v * v))
 
 
-def _halley_in_bracket(x, lo, hi, residual, what, inputs):
-    """Safeguarded Halley iteration for an increasing function inside [lo, hi].
-
-    residual(x, active) returns (f, f', f'') at the points x[active]. Steps leaving the bracket are
-    replaced by bisection. Iterates until the last step is below 2**-26 relative (Halley's cubic
-    convergence then puts the iterate at the root to rounding), then takes one polishing Newton step.
-    """
-    active = np.ones(x.shape, dtype=bool)
-    for _ in range(_MAX_ITERATIONS):
-        idx = np.nonzero(active)
-        if idx[0].size == 0:
-            break
-        xa = x[idx]
-        f, df, d2f = residual(xa, idx)
-        lo[idx] = np.where(f < 0, xa, lo[idx])
-        hi[idx] = np.where(f > 0, xa, hi[idx])
-        with np.errstate(all="ignore"):
-            step = -f / (df - 0.5 * f * d2f / df)
-        new = xa + step
-        inside = np.isfinite(new) & (new >= lo[idx]) & (new <= hi[idx])
-        new = np.where(inside, new, 0.5 * (lo[idx] + hi[idx]))
-        moved = np.abs(new - xa)
-        x[idx] = new
-        done = (f == 0) | (inside & (moved <= 2.0**-26 * np.abs(new)))
-        done |= hi[idx] - lo[idx] <= 2.0**-52 * np.abs(new)
-        active[idx] = ~done
-    if np.any(active):
-        where = np.argwhere(active)[0]
-        raise ConvergenceError(
-            f"{what} did not converge in {_MAX_ITERATIONS} iterations at "
-            + ", ".join(f"{k} = {np.asarray(v)[tuple(where)]!r}" for k, v in inputs.items())
-            + f"; last iterate {x[tuple(where)]!r}, bracket [{lo[tuple(where)]!r}, {hi[tuple(where)]!r}]"
-        )
-    f, df, _ = residual(x, np.nonzero(np.ones(x.shape, dtype=bool)))
-    with np.errstate(all="ignore"):
-        polished = x - f / df
-    return np.where(np.isfinite(polished) & (f != 0), polished, x)
-
-
 def eccentric_anomaly(M, e):
     """Eccentric anomaly E in [-pi, pi] (rad) solving M = E - e sin E, for 0 <= e < 1 and any finite M.
 
@@ -211,7 +130,7 @@ def eccentric_anomaly(M, e):
     Accuracy: within 4 ulp of the exact root for e <= 1 - 2**-53 (tests/core/test_kepler.py).
     """
     M, e = np.broadcast_arrays(np.asarray(M, dtype=float), np.asarray(e, dtype=float))
-    _check_eccentricity(e, 0.0, 1.0, False, True, "elliptic")
+    check_eccentricity(e, 0.0, 1.0, False, True, "elliptic")
     with np.errstate(under="ignore"):  # subnormal and zero results are legitimate
         m_hi, m_lo = reduce_mean_anomaly(M)
         sign = np.where(np.signbit(m_hi), -1.0, 1.0)
@@ -239,7 +158,7 @@ def _solve_elliptic_positive(m_hi, m_lo, e):
         df = om + ee * (2.0 * np.sin(0.5 * x) ** 2)  # 1 - e cos x, cancellation free
         return f, df, ee * np.sin(x)
 
-    E[solve] = _halley_in_bracket(start, lo, hi, residual, "elliptic Kepler solve", {"M": m_hi_s, "e": e_s})
+    E[solve] = halley_in_bracket(start, lo, hi, residual, "elliptic Kepler solve", {"M": m_hi_s, "e": e_s})
     return E
 
 
@@ -251,8 +170,8 @@ def hyperbolic_anomaly(M, e):
     form H + log(e/2) + log1p(-exp(-2H)) = log(M + H).
     """
     M, e = np.broadcast_arrays(np.asarray(M, dtype=float), np.asarray(e, dtype=float))
-    _check_finite(M, "mean anomaly M", "rad")
-    _check_eccentricity(e, 1.0, np.inf, True, True, "hyperbolic")
+    check_finite(M, "mean anomaly M", "rad")
+    check_eccentricity(e, 1.0, np.inf, True, True, "hyperbolic")
     sign = np.where(np.signbit(M), -1.0, 1.0)
     with np.errstate(under="ignore"):  # subnormal and zero results are legitimate
         return sign * _solve_hyperbolic_positive(np.abs(M), e.astype(float, copy=True))
@@ -288,7 +207,7 @@ def _solve_hyperbolic_series_form(M, e, e_minus_1, lower):
         df = em1 + ee * (2.0 * np.sinh(0.5 * x) ** 2)  # e cosh x - 1, cancellation free
         return f, df, ee * np.sinh(x)
 
-    return _halley_in_bracket(start, lower.copy(), hi, residual, "hyperbolic Kepler solve", {"M": M, "e": e})
+    return halley_in_bracket(start, lower.copy(), hi, residual, "hyperbolic Kepler solve", {"M": M, "e": e})
 
 
 def _solve_hyperbolic_log_form(M, e, e_minus_1, lower):
@@ -305,7 +224,7 @@ def _solve_hyperbolic_log_form(M, e, e_minus_1, lower):
         d2f = -4.0 * q / (1.0 - q) ** 2 + (1.0 / mh) ** 2
         return f, df, d2f
 
-    return _halley_in_bracket(lo.copy(), lo, hi, residual, "hyperbolic Kepler solve", {"M": M, "e": e})
+    return halley_in_bracket(lo.copy(), lo, hi, residual, "hyperbolic Kepler solve", {"M": M, "e": e})
 
 
 def parabolic_anomaly(W):
@@ -318,7 +237,7 @@ def parabolic_anomaly(W):
     Odd in W; W = 0 gives 0 exactly; finite for every finite W.
     """
     W = np.asarray(W, dtype=float)
-    _check_finite(W, "parabolic mean anomaly W", "(dimensionless)")
+    check_finite(W, "parabolic mean anomaly W", "(dimensionless)")
     magnitude = np.abs(W)
     D = np.zeros_like(magnitude)
     small = magnitude < 1e-4

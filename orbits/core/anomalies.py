@@ -1,0 +1,146 @@
+"""Conversions between the true anomaly nu and the mean, eccentric, hyperbolic and parabolic anomalies.
+
+Float64 arrays, radians, broadcasting. Conventions:
+- elliptic (0 <= e < 1): M = E - e sin E, tan(nu/2) = sqrt((1+e)/(1-e)) tan(E/2); nu, E, M in [-pi, pi];
+- hyperbolic (e > 1): M = e sinh H - H, tan(nu/2) = sqrt((e+1)/(e-1)) tanh(H/2); |nu| < arccos(-1/e);
+- parabolic (e = 1): D = tan(nu/2), Barker's W = D + D**3 / 3 plays the part of M; |nu| < pi.
+The mixed-conic functions (mean_from_true, true_from_mean, time_since_periapsis) choose the branch
+per element from e.
+"""
+
+import numpy as np
+
+from orbits.core._checks import check_finite
+from orbits.core.kepler import (
+    eccentric_anomaly,
+    hyperbolic_anomaly,
+    parabolic_anomaly,
+    sinh_minus_x,
+    x_minus_sin,
+)
+from orbits.errors import OrbitDomainError
+
+
+def _as_arrays(*values):
+    return np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in values))
+
+
+def true_from_eccentric(E, e):
+    """nu = 2 atan2(sqrt(1+e) sin(E/2), sqrt(1-e) cos(E/2)) (rad), 0 <= e < 1."""
+    E, e = _as_arrays(E, e)
+    return 2.0 * np.arctan2(np.sqrt(1.0 + e) * np.sin(0.5 * E), np.sqrt(1.0 - e) * np.cos(0.5 * E))
+
+
+def eccentric_from_true(nu, e):
+    """E = 2 atan2(sqrt(1-e) sin(nu/2), sqrt(1+e) cos(nu/2)) (rad), 0 <= e < 1."""
+    nu, e = _as_arrays(nu, e)
+    return 2.0 * np.arctan2(np.sqrt(1.0 - e) * np.sin(0.5 * nu), np.sqrt(1.0 + e) * np.cos(0.5 * nu))
+
+
+def mean_from_eccentric(E, e):
+    """M = E - e sin E = (1 - e) E + e (E - sin E) (rad), without cancellation near e = 1."""
+    E, e = _as_arrays(E, e)
+    return (1.0 - e) * E + e * x_minus_sin(E)
+
+
+def true_from_hyperbolic(H, e):
+    """nu = 2 atan2(sqrt(e+1) tanh(H/2), sqrt(e-1)) (rad), e > 1 (no overflow for large H)."""
+    H, e = _as_arrays(H, e)
+    return 2.0 * np.arctan2(np.sqrt(e + 1.0) * np.tanh(0.5 * H), np.sqrt(e - 1.0))
+
+
+def hyperbolic_from_true(nu, e):
+    """H = 2 atanh(sqrt((e-1)/(e+1)) tan(nu/2)) (rad), e > 1 and 1 + e cos nu > 0."""
+    nu, e = _as_arrays(nu, e)
+    _check_inside_asymptotes(nu, e)
+    t = np.sqrt(e - 1.0) * np.sin(0.5 * nu) / (np.sqrt(e + 1.0) * np.cos(0.5 * nu))
+    return 2.0 * np.arctanh(t)
+
+
+def mean_from_hyperbolic(H, e):
+    """M = e sinh H - H = (e - 1) H + e (sinh H - H) (rad), without cancellation near e = 1."""
+    H, e = _as_arrays(H, e)
+    return (e - 1.0) * H + e * sinh_minus_x(H)
+
+
+def true_from_parabolic(D):
+    """nu = 2 atan(D) (rad) for D = tan(nu/2)."""
+    return 2.0 * np.arctan(np.asarray(D, dtype=float))
+
+
+def parabolic_from_true(nu):
+    """D = tan(nu/2) for |nu| < pi; nu = +/-pi lies at infinite distance and is rejected."""
+    nu = np.asarray(nu, dtype=float)
+    check_finite(nu, "true anomaly nu", "rad")
+    if np.any(np.abs(nu) >= np.pi):
+        bad = nu[np.abs(nu) >= np.pi].flat[0]
+        raise OrbitDomainError(
+            f"true anomaly nu = {bad!r} rad lies at infinite distance on a parabola; allowed |nu| < pi rad"
+        )
+    return np.tan(0.5 * nu)
+
+
+def _check_inside_asymptotes(nu, e):
+    """Reject hyperbolic true anomalies on or beyond the asymptotes (1 + e cos nu <= 0)."""
+    check_finite(nu, "true anomaly nu", "rad")
+    outside = (e > 1.0) & (1.0 + e * np.cos(nu) <= 0.0)
+    if np.any(outside):
+        i = np.argwhere(outside)[0]
+        bad_nu, bad_e = nu[tuple(i)], e[tuple(i)]
+        limit = np.arccos(-1.0 / bad_e)
+        raise OrbitDomainError(
+            f"true anomaly nu = {bad_nu!r} rad lies on or beyond the asymptote of a hyperbola with "
+            f"e = {bad_e!r}; allowed |nu| < arccos(-1/e) = {limit!r} rad"
+        )
+
+
+def _check_eccentricity_nonnegative(e):
+    check_finite(e, "eccentricity e", "(dimensionless)")
+    if np.any(e < 0):
+        raise OrbitDomainError(f"eccentricity e = {e[e < 0].flat[0]!r} is negative; allowed e >= 0")
+
+
+def mean_from_true(nu, e):
+    """Mean anomaly from the true anomaly for any conic: M (e != 1, rad) or Barker's W (e = 1)."""
+    nu, e = _as_arrays(nu, e)
+    _check_eccentricity_nonnegative(e)
+    out = np.empty_like(nu)
+    ell, par, hyp = e < 1.0, e == 1.0, e > 1.0
+    out[ell] = mean_from_eccentric(eccentric_from_true(nu[ell], e[ell]), e[ell])
+    d = parabolic_from_true(nu[par])
+    out[par] = d + d**3 / 3.0
+    out[hyp] = mean_from_hyperbolic(hyperbolic_from_true(nu[hyp], e[hyp]), e[hyp])
+    return out
+
+
+def true_from_mean(M, e):
+    """True anomaly (rad) from the mean anomaly M (e != 1) or Barker's W (e = 1), for any conic."""
+    M, e = _as_arrays(M, e)
+    _check_eccentricity_nonnegative(e)
+    out = np.empty_like(M)
+    ell, par, hyp = e < 1.0, e == 1.0, e > 1.0
+    out[ell] = true_from_eccentric(eccentric_anomaly(M[ell], e[ell]), e[ell])
+    out[par] = true_from_parabolic(parabolic_anomaly(M[par]))
+    out[hyp] = true_from_hyperbolic(hyperbolic_anomaly(M[hyp], e[hyp]), e[hyp])
+    return out
+
+
+def mean_motion(p, e, mu):
+    """n (rad/s): sqrt(mu / |a|**3) with a = p / (1 - e**2) for e != 1, and 2 sqrt(mu / p**3) for e = 1.
+
+    For e = 1 this is the rate of Barker's W = D + D**3 / 3 (W = n t), so t = M / n on every conic.
+    """
+    p, e, mu = _as_arrays(p, e, mu)
+    one_minus_e2 = np.abs((1.0 - e) * (1.0 + e))
+    return np.where(e == 1.0, 2.0, one_minus_e2**1.5) * np.sqrt(mu / p**3)
+
+
+def time_since_periapsis(nu, p, e, mu):
+    """t - T (s) at true anomaly nu (rad) on the conic (p in m, mu in m**3/s**2): M / n on every conic."""
+    return mean_from_true(nu, e) / mean_motion(p, e, mu)
+
+
+def true_at_time(t, p, e, mu):
+    """True anomaly (rad) reached t seconds after periapsis passage, for any conic."""
+    t, p, e, mu = _as_arrays(t, p, e, mu)
+    return true_from_mean(mean_motion(p, e, mu) * t, e)
