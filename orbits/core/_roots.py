@@ -37,8 +37,8 @@ def halley_in_bracket(x, lo, hi, residual, what, inputs):
         where = np.argwhere(active)[0]
         raise ConvergenceError(
             f"{what} did not converge in {MAX_ITERATIONS} iterations at "
-            + ", ".join(f"{k} = {np.asarray(v)[tuple(where)]!r}" for k, v in inputs.items())
-            + f"; last iterate {x[tuple(where)]!r}, bracket [{lo[tuple(where)]!r}, {hi[tuple(where)]!r}]"
+            + ", ".join(f"{k} = {float(np.asarray(v)[tuple(where)])!r}" for k, v in inputs.items())
+            + f"; last iterate {float(x[tuple(where)])!r}, bracket [{float(lo[tuple(where)])!r}, {float(hi[tuple(where)])!r}]"
         )
     f, df, _ = residual(x, np.nonzero(np.ones(x.shape, dtype=bool)))
     with np.errstate(all="ignore"):

@@ -75,7 +75,7 @@ def parabolic_from_true(nu):
     if np.any(np.abs(nu) >= np.pi):
         bad = nu[np.abs(nu) >= np.pi].flat[0]
         raise OrbitDomainError(
-            f"true anomaly nu = {bad!r} rad lies at infinite distance on a parabola; allowed |nu| < pi rad"
+            f"true anomaly nu = {float(bad)!r} rad lies at infinite distance on a parabola; allowed |nu| < pi rad"
         )
     return np.tan(0.5 * nu)
 
@@ -89,15 +89,15 @@ def _check_inside_asymptotes(nu, e):
         bad_nu, bad_e = nu[tuple(i)], e[tuple(i)]
         limit = np.arccos(-1.0 / bad_e)
         raise OrbitDomainError(
-            f"true anomaly nu = {bad_nu!r} rad lies on or beyond the asymptote of a hyperbola with "
-            f"e = {bad_e!r}; allowed |nu| < arccos(-1/e) = {limit!r} rad"
+            f"true anomaly nu = {float(bad_nu)!r} rad lies on or beyond the asymptote of a hyperbola with "
+            f"e = {float(bad_e)!r}; allowed |nu| < arccos(-1/e) = {float(limit)!r} rad"
         )
 
 
 def _check_eccentricity_nonnegative(e):
     check_finite(e, "eccentricity e", "(dimensionless)")
     if np.any(e < 0):
-        raise OrbitDomainError(f"eccentricity e = {e[e < 0].flat[0]!r} is negative; allowed e >= 0")
+        raise OrbitDomainError(f"eccentricity e = {float(e[e < 0].flat[0])!r} is negative; allowed e >= 0")
 
 
 def mean_from_true(nu, e):

@@ -40,7 +40,7 @@ def check_state(r, v, mu):
     check_finite(v, "velocity v", "m/s")
     check_finite(mu, "gravitational parameter mu", "m3 / s2")
     if np.any(mu <= 0):
-        raise OrbitDomainError(f"gravitational parameter mu = {mu[mu <= 0].flat[0]!r} m3 / s2 must be positive")
+        raise OrbitDomainError(f"gravitational parameter mu = {float(mu[mu <= 0].flat[0])!r} m3 / s2 must be positive")
     if np.any(_norm(r) == 0):
         raise OrbitDomainError("position r = (0, 0, 0) m coincides with the primary; |r| must be positive")
     shape = np.broadcast_shapes(r.shape, v.shape, mu.shape + (1,))
@@ -81,13 +81,13 @@ def _in_plane_angle(vec, n_hat, m_hat):
     return np.arctan2(_dot(vec, m_hat), _dot(vec, n_hat))
 
 
-def _wrap_two_pi(angle):
+def wrap_two_pi(angle):
     """Wrap to [0, 2 pi)."""
     wrapped = np.mod(angle, TWO_PI)
     return np.where(wrapped >= TWO_PI, 0.0, wrapped)
 
 
-def _wrap_pi(angle):
+def wrap_pi(angle):
     """Wrap to (-pi, pi]."""
     wrapped = np.pi - np.mod(np.pi - angle, TWO_PI)
     return np.where(wrapped <= -np.pi, wrapped + TWO_PI, wrapped)
@@ -111,12 +111,12 @@ def state_to_elements(r, v, mu):
     e = _norm(e_vec)
     n_hat, m_hat, h_hat, node_norm = _node_frame(h)
     inc = np.arctan2(node_norm, h[..., 2])
-    raan = _wrap_two_pi(np.arctan2(h[..., 0], -h[..., 1]))
+    raan = wrap_two_pi(np.arctan2(h[..., 0], -h[..., 1]))
     raan = np.where(node_norm == 0, 0.0, raan)
     argp = np.where(e == 0, 0.0, _in_plane_angle(e_vec, n_hat, m_hat))
     latitude = _in_plane_angle(r, n_hat, m_hat)
-    nu = _wrap_pi(latitude - argp)
-    return h2 / mu, e, inc, raan, _wrap_two_pi(argp), nu
+    nu = wrap_pi(latitude - argp)
+    return h2 / mu, e, inc, raan, wrap_two_pi(argp), nu
 
 
 def _sin_cos(angle):
@@ -132,16 +132,16 @@ def check_conic(p, e, nu):
     check_finite(e, "eccentricity e", "(dimensionless)")
     check_finite(nu, "true anomaly nu", "rad")
     if np.any(p <= 0):
-        raise OrbitDomainError(f"semi-latus rectum p = {p[p <= 0].flat[0]!r} m must be positive")
+        raise OrbitDomainError(f"semi-latus rectum p = {float(p[p <= 0].flat[0])!r} m must be positive")
     if np.any(e < 0):
-        raise OrbitDomainError(f"eccentricity e = {e[e < 0].flat[0]!r} must be >= 0")
+        raise OrbitDomainError(f"eccentricity e = {float(e[e < 0].flat[0])!r} must be >= 0")
     denominator = 1.0 + e * np.cos(nu)
     beyond = (e >= 1.0) & (denominator <= 0.0)
     if np.any(beyond):
         i = tuple(np.argwhere(beyond)[0])
         raise OrbitDomainError(
-            f"true anomaly nu = {nu[i]!r} rad is on or beyond the asymptote of the conic with "
-            f"e = {e[i]!r} (1 + e cos nu = {denominator[i]!r} must be > 0): the point is at infinity"
+            f"true anomaly nu = {float(nu[i])!r} rad is on or beyond the asymptote of the conic with "
+            f"e = {float(e[i])!r} (1 + e cos nu = {float(denominator[i])!r} must be > 0): the point is at infinity"
         )
 
 
@@ -158,10 +158,10 @@ def elements_to_state(p, e, inc, raan, argp, nu, mu):
     check_conic(p, e, nu)
     check_finite(mu, "gravitational parameter mu", "m3 / s2")
     if np.any(mu <= 0):
-        raise OrbitDomainError(f"gravitational parameter mu = {mu[mu <= 0].flat[0]!r} m3 / s2 must be positive")
+        raise OrbitDomainError(f"gravitational parameter mu = {float(mu[mu <= 0].flat[0])!r} m3 / s2 must be positive")
     if np.any((inc < 0) | (inc > np.pi)):
         bad = inc[(inc < 0) | (inc > np.pi)].flat[0]
-        raise OrbitDomainError(f"inclination i = {bad!r} rad is outside [0, pi] rad")
+        raise OrbitDomainError(f"inclination i = {float(bad)!r} rad is outside [0, pi] rad")
     sin_i, cos_i = _sin_cos(inc)
     sin_o, cos_o = np.sin(raan), np.cos(raan)
     n_hat = np.stack([cos_o, sin_o, np.zeros_like(cos_o)], axis=-1)

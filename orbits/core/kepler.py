@@ -36,6 +36,9 @@ MAX_MEAN_ANOMALY = 2.0**50 * TWO_PI_1
 
 _SERIES_LIMIT = 2.0  # |x| below which x - sin x and sinh x - x come from their series
 _LOG_FORM_LIMIT = 20.0  # H above which the hyperbolic equation is solved in logarithmic form
+_OTHER_CONICS = (
+    "; use eccentric_anomaly for e < 1, parabolic_anomaly (Barker) for e = 1, hyperbolic_anomaly for e > 1"
+)
 _TINY_MEAN_ANOMALY = 1e-280  # below this, E = M / (1 - e) and H = M / (e - 1) are exact roots
 
 
@@ -87,7 +90,7 @@ def reduce_mean_anomaly(M):
     if np.any(too_large):
         bad = M[too_large].flat[0]
         raise OrbitDomainError(
-            f"mean anomaly M = {bad!r} rad is too large for an exact reduction modulo 2 pi; "
+            f"mean anomaly M = {float(bad)!r} rad is too large for an exact reduction modulo 2 pi; "
             f"allowed |M| <= {MAX_MEAN_ANOMALY:.6g} rad (2**50 revolutions)"
         )
     k = np.rint(M / TWO_PI_1)
@@ -110,7 +113,7 @@ def _cubic_root(linear, cubic, rhs):
     With p = linear / cubic and q = rhs / cubic, x = w - p / (3 w) for w**3 = q/2 + sqrt(q**2/4 + p**3/27),
     rewritten as x = q / (w**2 + p/3 + (p / (3 w))**2).
     """
-    with np.errstate(over="ignore", under="ignore"):  # inf / 0 intermediates are routed by np.where
+    with np.errstate(all="ignore"):  # inf / 0 intermediates (e.g. subnormal e) are routed by np.where
         q = rhs / cubic
         # x = scale * y turns the cubic into y**3 + ps * y = 1.
         scale = np.where(np.isfinite(q), np.cbrt(q), np.cbrt(rhs) / np.cbrt(cubic))
@@ -130,10 +133,10 @@ def eccentric_anomaly(M, e):
     Accuracy: within 4 ulp of the exact root for e <= 1 - 2**-53 (tests/core/test_kepler.py).
     """
     M, e = np.broadcast_arrays(np.asarray(M, dtype=float), np.asarray(e, dtype=float))
-    check_eccentricity(e, 0.0, 1.0, False, True, "elliptic")
+    check_eccentricity(e, 0.0, 1.0, False, True, "elliptic", _OTHER_CONICS)
     with np.errstate(under="ignore"):  # subnormal and zero results are legitimate
         m_hi, m_lo = reduce_mean_anomaly(M)
-        sign = np.where(np.signbit(m_hi), -1.0, 1.0)
+        sign = np.where(np.signbit(m_hi) | ((m_hi == 0) & np.signbit(M)), -1.0, 1.0)  # keeps -0.0
         return sign * _solve_elliptic_positive(np.abs(m_hi), sign * m_lo, e + 0.0)
 
 
@@ -171,7 +174,7 @@ def hyperbolic_anomaly(M, e):
     """
     M, e = np.broadcast_arrays(np.asarray(M, dtype=float), np.asarray(e, dtype=float))
     check_finite(M, "mean anomaly M", "rad")
-    check_eccentricity(e, 1.0, np.inf, True, True, "hyperbolic")
+    check_eccentricity(e, 1.0, np.inf, True, True, "hyperbolic", _OTHER_CONICS)
     sign = np.where(np.signbit(M), -1.0, 1.0)
     with np.errstate(under="ignore"):  # subnormal and zero results are legitimate
         return sign * _solve_hyperbolic_positive(np.abs(M), e.astype(float, copy=True))

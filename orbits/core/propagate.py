@@ -38,27 +38,31 @@ def _stumpff_series(z, first):
 
 
 def stumpff(z):
-    """Stumpff functions (c0, c1, c2, c3) of z: c0 = cos sqrt z, c1 = sin sqrt z / sqrt z, c2, c3."""
+    """Stumpff functions (c0, c1, c2, c3) of z: c0 = cos sqrt z, c1 = sin sqrt z / sqrt z, c2, c3.
+
+    Overflows to inf (not NaN) for z below about -5e5, where cosh sqrt(-z) exceeds float64.
+    """
     z = np.asarray(z, dtype=float)
-    c2, c3 = _stumpff_series(z, 2), _stumpff_series(z, 3)
-    c0, c1 = 1.0 - z * c2, 1.0 - z * c3
-    pos, neg = z > 1.0, z < -1.0
-    if np.any(pos):
-        s = np.sqrt(z[pos])
-        c0[pos], c1[pos] = np.cos(s), np.sin(s) / s
-        c2[pos], c3[pos] = 2.0 * np.sin(0.5 * s) ** 2 / z[pos], x_minus_sin(s) / (s * z[pos])
-    if np.any(neg):
-        s = np.sqrt(-z[neg])
-        with np.errstate(over="ignore"):
-            c0[neg], c1[neg] = np.cosh(s), np.sinh(s) / s
-            c2[neg], c3[neg] = 2.0 * np.sinh(0.5 * s) ** 2 / -z[neg], sinh_minus_x(s) / (s * -z[neg])
+    c0, c1, c2, c3 = (np.empty_like(z) for _ in range(4))
+    small, pos, neg = np.abs(z) <= 1.0, z > 1.0, z < -1.0
+    zs = z[small]
+    c2[small], c3[small] = _stumpff_series(zs, 2), _stumpff_series(zs, 3)
+    c0[small], c1[small] = 1.0 - zs * c2[small], 1.0 - zs * c3[small]
+    s = np.sqrt(z[pos])
+    c0[pos], c1[pos] = np.cos(s), np.sin(s) / s
+    c2[pos], c3[pos] = 2.0 * np.sin(0.5 * s) ** 2 / z[pos], x_minus_sin(s) / (s * z[pos])
+    s = np.sqrt(-z[neg])
+    with np.errstate(over="ignore"):
+        c0[neg], c1[neg] = np.cosh(s), np.sinh(s) / s
+        c2[neg], c3[neg] = 2.0 * np.sinh(0.5 * s) ** 2 / -z[neg], sinh_minus_x(s) / (s * -z[neg])
     return c0, c1, c2, c3
 
 
 def _g_functions(chi, alpha):
     """G_k = chi**k c_k(alpha chi**2), k = 0..3."""
-    c0, c1, c2, c3 = stumpff(alpha * chi * chi)
-    return c0, chi * c1, chi * chi * c2, chi * chi * chi * c3
+    with np.errstate(over="ignore", invalid="ignore"):  # huge chi on hyperbolas: inf, handled by callers
+        c0, c1, c2, c3 = stumpff(alpha * chi * chi)
+        return c0, chi * c1, chi * chi * c2, chi * chi * chi * c3
 
 
 def _starter(tau, r0, sigma0, alpha):
@@ -83,7 +87,8 @@ def _solve_universal(tau, r0, sigma0, alpha):
             f = (r0[idx] * g1 + sigma0[idx] * g2 + g3) - tau[idx]
             df = r0[idx] * g0 + sigma0[idx] * g1 + g2
             d2f = sigma0[idx] * g0 + (1.0 - alpha[idx] * r0[idx]) * g1
-        return f, df, d2f
+        # F is increasing, so a non-finite value (overflow at huge chi) lies above the root.
+        return np.where(np.isfinite(f), f, np.inf), df, d2f
 
     all_idx = np.nonzero(np.ones(tau.shape, dtype=bool))
     hi = np.maximum(tau / r0, 1e-300)
@@ -157,4 +162,5 @@ def propagate(r0, v0, mu, dt):
     w_new = f_dot[..., None] * x + g_dot[..., None] * w
     w_new = np.where(backwards[..., None], -w_new, w_new)
     r, v = x_new * length[..., None], w_new * speed_scale[..., None]
+    r, v = np.where(dt[..., None] == 0, r0, r), np.where(dt[..., None] == 0, v0, v)  # dt = 0: exactly r0, v0
     return r.reshape(batch + (3,)), v.reshape(batch + (3,))

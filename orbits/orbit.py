@@ -1,0 +1,398 @@
+"""Orbit: a Kepler orbit (or an array of them) about a fixed primary, with astropy units.
+
+    >>> import astropy.units as u
+    >>> from orbits import Orbit
+    >>> leo = Orbit.circular("Earth", radius=6778 * u.km)
+    >>> leo.period.to(u.min).round(2)
+    <Quantity 92.56 min>
+
+Elements are stored once as float64 SI arrays (mu, p, e, i, Omega, omega, nu); every quantity of
+section XXI of the notes is a lazily computed property returning a Quantity. Conventions for
+degenerate angles are those of orbits.core.elements.
+"""
+
+from dataclasses import dataclass
+from functools import cached_property
+
+import astropy.units as u
+import numpy as np
+
+from orbits import units
+from orbits.constants import G, Body, body
+from orbits.core import anomalies, elements, propagate, twobody
+from orbits.errors import OrbitDomainError
+
+
+def gravitational_parameter(primary):
+    """mu (m3/s2) of a primary given as a Body, a body name, a mass (kg) or a GM (m3/s2) Quantity."""
+    if isinstance(primary, str):
+        primary = body(primary)
+    if isinstance(primary, Body):
+        return np.asarray(primary.gm)
+    if isinstance(primary, u.Quantity) and primary.unit.is_equivalent(u.kg):
+        mu = G * units.to_si(primary, units.KG, "primary mass")
+    else:
+        mu = units.to_si(primary, units.M3_PER_S2, "primary gravitational parameter")
+    _require_positive(mu, "primary mass or gravitational parameter", "kg or m3 / s2")
+    return mu
+
+
+def _require_positive(x, name, unit):
+    if not np.all(np.isfinite(x)):
+        raise OrbitDomainError(f"{name} = {float(np.asarray(x)[~np.isfinite(x)].flat[0])!r} {unit} is not finite")
+    if np.any(x <= 0):
+        raise OrbitDomainError(f"{name} = {float(np.asarray(x)[x <= 0].flat[0])!r} {unit} must be positive")
+
+
+def _check_shapes(**arrays):
+    """Raise OrbitDomainError naming the arguments whose shapes do not broadcast together."""
+    try:
+        np.broadcast_shapes(*(np.shape(x) for x in arrays.values()))
+    except ValueError:
+        listing = ", ".join(f"{name} {np.shape(x)}" for name, x in arrays.items())
+        raise OrbitDomainError(f"argument shapes do not broadcast together: {listing}") from None
+
+
+def _semi_latus_rectum(a, e, p, q):
+    """p (m) from exactly one of a (not on the parabola), p or q, with the sign conventions checked."""
+    given = [name for name, value in (("a", a), ("p", p), ("q", q)) if value is not None]
+    if len(given) != 1:
+        raise TypeError(f"give exactly one size element of a, p, q; got {given or 'none'}")
+    if p is not None:
+        value = units.to_si(p, units.M, "semi-latus rectum p")
+        _require_positive(value, "semi-latus rectum p", "m")
+        return value
+    if q is not None:
+        value = units.to_si(q, units.M, "periapsis distance q")
+        _require_positive(value, "periapsis distance q", "m")
+        return value * (1.0 + e)
+    value = units.to_si(a, units.M, "semi-major axis a")
+    if np.any(~np.isfinite(value)):
+        raise OrbitDomainError(f"semi-major axis a = {float(value[~np.isfinite(value)].flat[0])!r} m is not finite")
+    if np.any(e == 1.0):
+        raise OrbitDomainError("parabolic orbit (e = 1) has infinite a: give q or p instead of a")
+    wrong = np.where(e < 1.0, value <= 0.0, value >= 0.0)
+    if np.any(wrong):
+        i = tuple(np.argwhere(np.broadcast_to(wrong, np.broadcast_shapes(value.shape, e.shape)))[0])
+        bad_a, bad_e = np.broadcast_to(value, wrong.shape)[i], np.broadcast_to(e, wrong.shape)[i]
+        rule = "a > 0 for a bound orbit (e < 1)" if bad_e < 1 else "a < 0 for a hyperbola (e > 1)"
+        raise OrbitDomainError(f"semi-major axis a = {float(bad_a)!r} m with e = {float(bad_e)!r}: need {rule}")
+    return value * (1.0 - e) * (1.0 + e)
+
+
+@dataclass(frozen=True, eq=False)
+class Orbit:
+    """Kepler orbit(s) about a fixed primary; fields are float64 SI arrays that broadcast together.
+
+    Build it with Orbit.from_elements, Orbit.from_vectors or Orbit.circular rather than directly.
+    `mass` (kg) is the orbiting body's mass, needed only for U, K, E, L and the LRL vector.
+    """
+
+    mu: np.ndarray
+    p: np.ndarray
+    e: np.ndarray
+    inc: np.ndarray
+    raan: np.ndarray
+    argp: np.ndarray
+    nu: np.ndarray
+    mass: np.ndarray | None = None
+
+    # ---- constructors -------------------------------------------------------------------------
+    @classmethod
+    def from_elements(cls, primary, a=None, e=0.0, *, p=None, q=None, inc=0 * u.deg, raan=0 * u.deg,
+                      argp=0 * u.deg, nu=0 * u.deg, mass=None):
+        """Orbit from one size element (a, p or q), e, i, Omega, omega and the true anomaly nu."""
+        e = units.to_number(e, "eccentricity e")
+        _check_shapes(e=e, a=a, p=p, q=q, inc=inc, raan=raan, argp=argp, nu=nu)
+        if not np.all(np.isfinite(e)) or np.any(e < 0):
+            bad = e[~(np.isfinite(e) & (e >= 0))].flat[0]
+            raise OrbitDomainError(f"eccentricity e = {float(bad)!r} is outside [0, inf)")
+        size = _semi_latus_rectum(a, e + 0.0, p, q)
+        angles = [units.to_si(x, units.RAD, name) for x, name in
+                  ((inc, "inclination i"), (raan, "longitude of the ascending node Omega"),
+                   (argp, "argument of periapsis omega"), (nu, "true anomaly nu"))]
+        mu = gravitational_parameter(primary)
+        r, _ = elements.elements_to_state(size, e + 0.0, *angles, mu)  # validates ranges and asymptotes
+        shape = r.shape[:-1]
+        fields = [np.broadcast_to(x, shape).astype(float) for x in (mu, size, e + 0.0, *angles)]
+        fields[4], fields[5] = elements.wrap_two_pi(fields[4]), elements.wrap_two_pi(fields[5])
+        fields[6] = elements.wrap_pi(fields[6])
+        return cls(*fields, mass=_mass(mass, shape))
+
+    @classmethod
+    def from_vectors(cls, primary, r, v, *, mass=None):
+        """Orbit through the state r (length, shape (..., 3)) and v (speed, shape (..., 3))."""
+        mu = gravitational_parameter(primary)
+        r_si = units.to_si(r, units.M, "position r")
+        v_si = units.to_si(v, units.M_PER_S, "velocity v")
+        fields = elements.state_to_elements(r_si, v_si, mu)
+        shape = fields[0].shape
+        return cls(np.broadcast_to(mu, shape).astype(float), *fields, mass=_mass(mass, shape))
+
+    @classmethod
+    def circular(cls, primary, radius, *, inc=0 * u.deg, raan=0 * u.deg, nu=0 * u.deg, mass=None):
+        """Circular orbit of the given radius (e = 0, so nu is the argument of latitude)."""
+        return cls.from_elements(primary, p=radius, e=0.0, inc=inc, raan=raan, nu=nu, mass=mass)
+
+    # ---- shape ----------------------------------------------------------------------------------
+    @property
+    def shape(self):
+        """Batch shape of the orbits held."""
+        return self.p.shape
+
+    def _require_ellipse(self, quantity):
+        if np.any(self.e >= 1.0):
+            raise OrbitDomainError(
+                f"{quantity} is defined for ellipses only (e < 1); this orbit has e = {float(self.e[self.e >= 1].flat[0])!r}"
+            )
+
+    def _require_mass(self, quantity):
+        if self.mass is None:
+            raise OrbitDomainError(f"{quantity} needs the orbiting body's mass: build the orbit with mass=... kg")
+        return self.mass
+
+    # ---- elements -------------------------------------------------------------------------------
+    @cached_property
+    def eccentricity(self):
+        """e (dimensionless)."""
+        return self.e << u.one
+
+    @cached_property
+    def semilatus_rectum(self):
+        """p = h**2 / mu (m); the notes' l."""
+        return self.p << units.M
+
+    @cached_property
+    def semi_major_axis(self):
+        """a = p / (1 - e**2) (m); negative for hyperbolas, inf for the parabola."""
+        return twobody.semi_major_axis(self.p, self.e) << units.M
+
+    @cached_property
+    def inclination(self):
+        """i (rad), in [0, pi]."""
+        return self.inc << units.RAD
+
+    @cached_property
+    def ascending_node(self):
+        """Omega (rad), in [0, 2 pi); 0 for equatorial orbits."""
+        return self.raan << units.RAD
+
+    @cached_property
+    def argument_of_periapsis(self):
+        """omega (rad), in [0, 2 pi); 0 for circular orbits."""
+        return self.argp << units.RAD
+
+    @cached_property
+    def true_anomaly(self):
+        """nu (rad), in (-pi, pi]."""
+        return self.nu << units.RAD
+
+    # ---- geometry (XXI.iv) ----------------------------------------------------------------------
+    @cached_property
+    def periapsis_distance(self):
+        """r1 = a - c = p / (1 + e) (m)."""
+        return twobody.periapsis_distance(self.p, self.e) << units.M
+
+    @cached_property
+    def apoapsis_distance(self):
+        """r2 = a + c = p / (1 - e) (m), ellipses only."""
+        self._require_ellipse("apoapsis distance")
+        return twobody.apoapsis_distance(self.p, self.e) << units.M
+
+    @cached_property
+    def focal_distance(self):
+        """c = a e (m): centre of the ellipse to the star, ellipses only."""
+        self._require_ellipse("focal distance")
+        return twobody.focal_distance(self.p, self.e) << units.M
+
+    @cached_property
+    def semi_minor_axis(self):
+        """b = a sqrt(1 - e**2) (m), ellipses only."""
+        self._require_ellipse("semi-minor axis")
+        return twobody.semi_minor_axis(self.p, self.e) << units.M
+
+    # ---- speeds ---------------------------------------------------------------------------------
+    @cached_property
+    def periapsis_speed(self):
+        """v1 = sqrt(mu / p) (1 + e) (m/s)."""
+        return twobody.periapsis_speed(self.p, self.e, self.mu) << units.M_PER_S
+
+    @cached_property
+    def apoapsis_speed(self):
+        """v2 = sqrt(mu / p) (1 - e) (m/s), ellipses only."""
+        self._require_ellipse("apoapsis speed")
+        return twobody.apoapsis_speed(self.p, self.e, self.mu) << units.M_PER_S
+
+    @cached_property
+    def covertex_speed(self):
+        """v_b = sqrt(mu / a) (m/s) at the ends of the minor axis, ellipses only."""
+        self._require_ellipse("co-vertex speed")
+        return twobody.covertex_speed(self.p, self.e, self.mu) << units.M_PER_S
+
+    def speed_at(self, r):
+        """Vis-viva speed sqrt(mu (2/r - 1/a)) (m/s) at distance r (length) from the star."""
+        r_si = units.to_si(r, units.M, "distance r")
+        _require_positive(r_si, "distance r", "m")
+        with np.errstate(invalid="ignore"):
+            v = twobody.speed_at_radius(r_si, self.p, self.e, self.mu)
+        if not np.all(np.isfinite(v)):
+            raise OrbitDomainError("distance r lies beyond the apoapsis of this orbit: the body never gets there")
+        return v << units.M_PER_S
+
+    # ---- dynamics (XXI.ii-iv) -------------------------------------------------------------------
+    @cached_property
+    def specific_energy(self):
+        """E / m = -mu / (2 a) (J/kg)."""
+        return twobody.specific_energy(self.p, self.e, self.mu) << units.J_PER_KG
+
+    @cached_property
+    def specific_angular_momentum(self):
+        """h = sqrt(mu p) (m2/s)."""
+        return twobody.specific_angular_momentum(self.p, self.mu) << units.M2_PER_S
+
+    @cached_property
+    def areal_velocity(self):
+        """dA/dt = h / 2 (m2/s), Kepler's second law."""
+        return twobody.areal_velocity(self.p, self.mu) << units.M2_PER_S
+
+    @cached_property
+    def energy(self):
+        """E = -G M m / (2 a) (J)."""
+        return self.specific_energy * (self._require_mass("energy E") << units.KG)
+
+    @cached_property
+    def angular_momentum(self):
+        """L = m sqrt(mu p) (kg m2/s)."""
+        return self.specific_angular_momentum * (self._require_mass("angular momentum L") << units.KG)
+
+    @cached_property
+    def potential_energy(self):
+        """U = -G M m / r (J) at the current position."""
+        m = self._require_mass("potential energy U")
+        return twobody.potential_energy(self.radius.to_value(units.M), self.mu, m) << units.J
+
+    @cached_property
+    def kinetic_energy(self):
+        """K = m v**2 / 2 = G M m (1/r - 1/(2a)) (J) at the current position."""
+        m = self._require_mass("kinetic energy K")
+        return 0.5 * m * self.speed.to_value(units.M_PER_S) ** 2 << units.J
+
+    # ---- time (XXI.iii, XXI.vii) ----------------------------------------------------------------
+    @cached_property
+    def period(self):
+        """T = 2 pi sqrt(a**3 / mu) (s), ellipses only."""
+        self._require_ellipse("period T")
+        return twobody.period(self.p, self.e, self.mu) << units.S
+
+    @cached_property
+    def mean_motion(self):
+        """n = sqrt(mu / |a|**3) (rad/s); 2 sqrt(mu / p**3) on the parabola (rate of Barker's W)."""
+        return anomalies.mean_motion(self.p, self.e, self.mu) << units.RAD_PER_S
+
+    @cached_property
+    def covertex_times(self):
+        """(T1, T2) (s): co-vertex to co-vertex through periapsis, T (1/2 - e/pi), and through apoapsis."""
+        self._require_ellipse("co-vertex times T1, T2")
+        t1, t2 = twobody.covertex_times(self.p, self.e, self.mu)
+        return t1 << units.S, t2 << units.S
+
+    @cached_property
+    def mean_anomaly(self):
+        """M (rad): E - e sin E (ellipse), e sinh H - H (hyperbola), Barker's W (parabola)."""
+        return anomalies.mean_from_true(self.nu, self.e) << units.RAD
+
+    @cached_property
+    def time_since_periapsis(self):
+        """t - T_periapsis = M / n (s), negative before the periapsis passage."""
+        return anomalies.time_since_periapsis(self.nu, self.p, self.e, self.mu) << units.S
+
+    # ---- state and vectors (XXI.viii) -----------------------------------------------------------
+    @cached_property
+    def _state(self):
+        return elements.elements_to_state(self.p, self.e, self.inc, self.raan, self.argp, self.nu, self.mu)
+
+    @cached_property
+    def r(self):
+        """Position vector (m), shape (..., 3)."""
+        return self._state[0] << units.M
+
+    @cached_property
+    def v(self):
+        """Velocity vector (m/s), shape (..., 3)."""
+        return self._state[1] << units.M_PER_S
+
+    @cached_property
+    def radius(self):
+        """|r| = p / (1 + e cos nu) (m)."""
+        return self.p / (1.0 + self.e * np.cos(self.nu)) << units.M
+
+    @cached_property
+    def speed(self):
+        """|v| (m/s) at the current position."""
+        return np.sqrt(np.sum(self._state[1] ** 2, axis=-1)) << units.M_PER_S
+
+    @cached_property
+    def eccentricity_vector(self):
+        """e_vec = (v x h) / mu - r_hat (dimensionless), pointing to periapsis."""
+        return elements.eccentricity_vector(*self._state, self.mu) << u.one
+
+    @cached_property
+    def angular_momentum_vector(self):
+        """h = r x v (m2/s)."""
+        return elements.angular_momentum_vector(*self._state) << units.M2_PER_S
+
+    @cached_property
+    def laplace_runge_lenz(self):
+        """A = p x L - m k r_hat = m**2 mu e_vec (kg2 m3/s2)."""
+        m = self._require_mass("Laplace-Runge-Lenz vector")
+        return elements.laplace_runge_lenz_vector(*self._state, self.mu, m) << (units.KG**2 * units.M3_PER_S2)
+
+    def propagate(self, dt):
+        """State vectors (r, v) a time dt (time Quantity, broadcasting) later, on the same Kepler orbit."""
+        dt_si = units.to_si(dt, units.S, "time step dt")
+        r, v = propagate.propagate(*self._state, self.mu, dt_si)
+        return r << units.M, v << units.M_PER_S
+
+    def at(self, dt):
+        """The Orbit reached a time dt later (same elements, new true anomaly)."""
+        r, v = self.propagate(dt)
+        return Orbit.from_vectors(self.mu << units.M3_PER_S2, r, v, mass=None if self.mass is None else self.mass << units.KG)
+
+    # ---- tables ---------------------------------------------------------------------------------
+    def quantities(self, only=None):
+        """{snake_case name: Quantity} of the section XXI quantities this orbit has (or `only` those)."""
+        names = QUANTITY_NAMES if only is None else list(only)
+        unknown = [n for n in names if n not in QUANTITY_NAMES]
+        if unknown:
+            raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(QUANTITY_NAMES)}")
+        result = {}
+        for name in names:
+            try:
+                value = getattr(self, name)
+            except OrbitDomainError:
+                if only is not None:
+                    raise
+                continue
+            if name == "covertex_times":
+                result["covertex_time_periapsis_side"], result["covertex_time_apoapsis_side"] = value
+            else:
+                result[name] = value
+        return result
+
+
+def _mass(mass, shape):
+    if mass is None:
+        return None
+    value = units.to_si(mass, units.KG, "orbiting body mass m")
+    _require_positive(value, "orbiting body mass m", "kg")
+    return np.broadcast_to(value, shape).astype(float)
+
+
+QUANTITY_NAMES = [
+    "semi_major_axis", "eccentricity", "semilatus_rectum", "inclination", "ascending_node",
+    "argument_of_periapsis", "true_anomaly", "periapsis_distance", "apoapsis_distance", "focal_distance",
+    "semi_minor_axis", "periapsis_speed", "apoapsis_speed", "covertex_speed", "radius", "speed",
+    "specific_energy", "specific_angular_momentum", "areal_velocity", "energy", "angular_momentum",
+    "potential_energy", "kinetic_energy", "period", "mean_motion", "covertex_times", "mean_anomaly",
+    "time_since_periapsis",
+]

@@ -1,0 +1,126 @@
+"""The unit-aware Orbit: constructors, units policy, errors, broadcasting, and agreement with the core."""
+
+import math
+import sys
+import subprocess
+
+import astropy.units as u
+import numpy as np
+import pytest
+
+from orbits import BODIES, Orbit, OrbitDomainError
+from orbits.constants import G
+
+
+def test_circular_leo_period_matches_keplers_third_law():
+    orbit = Orbit.circular("Earth", 6778 * u.km)
+    expected = 2 * math.pi * math.sqrt(6.778e6**3 / BODIES["Earth"].gm)
+    assert orbit.period.unit == u.s
+    assert math.isclose(orbit.period.value, expected, rel_tol=1e-15)
+
+
+def test_every_size_element_gives_the_same_orbit():
+    by_a = Orbit.from_elements("Earth", a=10000 * u.km, e=0.3)
+    by_p = Orbit.from_elements("Earth", p=9100 * u.km, e=0.3)
+    by_q = Orbit.from_elements("Earth", q=7000 * u.km, e=0.3)
+    for other in (by_p, by_q):
+        assert math.isclose(other.semi_major_axis.to_value(u.km), 10000, rel_tol=1e-15)
+
+
+def test_unit_invariance_km_versus_au():  # EDGE 6.2: results agree to a few ulp after conversion
+    a_km = Orbit.from_elements("Sun", a=149_597_870.7 * u.km, e=0.2, nu=40 * u.deg)
+    a_au = Orbit.from_elements("Sun", a=1 * u.AU, e=0.2, nu=0.6981317007977318 * u.rad)
+    for name in ("period", "periapsis_speed", "radius", "time_since_periapsis"):
+        x, y = getattr(a_km, name), getattr(a_au, name)
+        assert abs((x - y) / y).to_value(u.one) <= 4 * 2**-53
+
+
+def test_mass_of_primary_or_gm_or_body():
+    by_name = Orbit.circular("Earth", 7000 * u.km)
+    by_gm = Orbit.circular(BODIES["Earth"].gm * u.m**3 / u.s**2, 7000 * u.km)
+    by_mass = Orbit.circular(BODIES["Earth"].gm / G * u.kg, 7000 * u.km)
+    assert by_name.period == by_gm.period
+    assert math.isclose(by_mass.period.value, by_name.period.value, rel_tol=4e-16)
+
+
+def test_from_vectors_round_trip_and_propagate():
+    r = [7000.0, 1200.0, -300.0] * u.km
+    v = [-0.5, 7.4, 1.1] * u.km / u.s
+    orbit = Orbit.from_vectors("Earth", r, v)
+    np.testing.assert_allclose(orbit.r.to_value(u.km), r.value, rtol=1e-14)
+    np.testing.assert_allclose(orbit.v.to_value(u.km / u.s), v.value, rtol=1e-14)
+    r_t, v_t = orbit.propagate([0, 1, 2] * orbit.period)
+    np.testing.assert_allclose(r_t.to_value(u.km), np.broadcast_to(r.value, (3, 3)), rtol=1e-12)
+    later = orbit.at(30 * u.min)
+    assert math.isclose(later.semi_major_axis.value, orbit.semi_major_axis.value, rel_tol=1e-13)
+
+
+def test_arrays_of_orbits_broadcast():
+    orbits = Orbit.from_elements("Earth", a=[7000, 8000, 9000] * u.km, e=np.array([[0.0], [0.5]]))
+    assert orbits.shape == (2, 3)
+    assert orbits.period.shape == (2, 3)
+    assert orbits.r.shape == (2, 3, 3)
+    single = Orbit.from_elements("Earth", a=8000 * u.km, e=0.5)
+    assert orbits.period[1, 1] == single.period
+
+
+def test_energy_needs_the_mass_and_then_matches_the_notes():
+    orbit = Orbit.from_elements("Sun", a=1 * u.AU, e=0.0167, mass=5.97e24 * u.kg)
+    mu, m, a = BODIES["Sun"].gm, 5.97e24, u.AU.to(u.m)
+    assert math.isclose(orbit.energy.to_value(u.J), -mu * m / (2 * a), rel_tol=1e-15)  # E = -GMm/(2a)
+    total = orbit.kinetic_energy + orbit.potential_energy
+    assert math.isclose(total.to_value(u.J), orbit.energy.to_value(u.J), rel_tol=1e-13)
+    with pytest.raises(OrbitDomainError, match="mass="):
+        _ = Orbit.circular("Earth", 7000 * u.km).energy
+
+
+def test_quantities_table_and_only():
+    orbit = Orbit.from_elements("Earth", a=7000 * u.km, e=0.1)
+    everything = orbit.quantities()
+    assert "period" in everything and "energy" not in everything  # no mass given: left out
+    assert list(orbit.quantities(["period", "eccentricity"])) == ["period", "eccentricity"]
+    with pytest.raises(KeyError, match="unknown quantities"):
+        orbit.quantities(["perod"])
+
+
+def test_hyperbola_has_no_period():
+    flyby = Orbit.from_elements("Earth", a=-20000 * u.km, e=1.5)
+    assert flyby.semi_major_axis.value < 0
+    with pytest.raises(OrbitDomainError, match="ellipses only"):
+        _ = flyby.period
+    assert "period" not in flyby.quantities()
+
+
+@pytest.mark.parametrize(
+    "kwargs, error, fragment",
+    [
+        (dict(a=7000, e=0.1), TypeError, "has no unit"),  # EDGE 60
+        (dict(a=7000 * u.s, e=0.1), u.UnitConversionError, "cannot be converted"),  # EDGE 59
+        (dict(a=-7000 * u.km, e=0.1), OrbitDomainError, "a > 0 for a bound orbit"),  # EDGE 26
+        (dict(a=7000 * u.km, e=1.5), OrbitDomainError, "a < 0 for a hyperbola"),  # EDGE 27
+        (dict(a=0 * u.km, e=0.1), OrbitDomainError, "bound orbit"),  # EDGE 28
+        (dict(a=7000 * u.km, e=1.0), OrbitDomainError, "give q or p"),  # EDGE 29
+        (dict(a=np.nan * u.km, e=0.1), OrbitDomainError, "not finite"),  # EDGE 30
+        (dict(a=7000 * u.km, e=-0.1), OrbitDomainError, r"outside \[0, inf\)"),
+        (dict(a=7000 * u.km, e=0.1, inc=0.5), TypeError, "has no unit"),
+        (dict(a=7000 * u.km, e=True), TypeError, "boolean"),
+        (dict(a=7000 * u.km, p=6000 * u.km, e=0.1), TypeError, "exactly one size element"),
+        (dict(a=[7000, 8000] * u.km, e=[0.1, 0.2, 0.3]), OrbitDomainError, r"e \(3,\), a \(2,\)"),
+        (dict(q=7000 * u.km, e=2.0, nu=150 * u.deg), OrbitDomainError, "asymptote"),
+    ],
+)
+def test_bad_input_is_a_clear_error(kwargs, error, fragment):
+    with pytest.raises(error, match=fragment):
+        Orbit.from_elements("Earth", **kwargs)
+
+
+@pytest.mark.parametrize("primary", [-5 * u.kg, 0 * u.m**3 / u.s**2, "Pluto"])
+def test_bad_primary(primary):
+    with pytest.raises((OrbitDomainError, KeyError)):
+        Orbit.circular(primary, 7000 * u.km)
+
+
+def test_import_orbits_does_not_load_heavy_backends():
+    code = "import sys, orbits; print(sorted(m for m in ('rebound', 'heyoka', 'matplotlib') if m in sys.modules))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "[]"

@@ -1,0 +1,25 @@
+"""Shared test setup: floating-point exceptions raise, heyoka compiles into a temporary cache."""
+
+import os
+
+import numpy as np
+import pytest
+from hypothesis import settings
+
+settings.register_profile("ci", max_examples=200, derandomize=True, deadline=None)
+settings.register_profile("thorough", max_examples=5000, derandomize=False, deadline=None)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
+
+
+@pytest.fixture(autouse=True)
+def _floating_point_errors_raise():
+    """Overflow, division by zero and invalid operations are bugs unless the code handles them (underflow to
+    subnormals or zero is legitimate)."""
+    with np.errstate(over="raise", divide="raise", invalid="raise", under="ignore"):
+        yield
+
+
+@pytest.fixture(autouse=True, scope="session")
+def _heyoka_cache(tmp_path_factory):
+    os.environ["HEYOKA_CACHE_DIR"] = str(tmp_path_factory.mktemp("heyoka-cache"))
+    yield
