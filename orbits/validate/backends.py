@@ -1,0 +1,63 @@
+"""Registry of the validation backends: what each offers, whether it is installed, and a uniform entry point.
+
+Nothing here imports rebound or heyoka; an adapter module is imported only when ``integrate`` runs it.
+"""
+
+from __future__ import annotations
+
+import importlib
+import importlib.util
+from dataclasses import dataclass
+
+from orbits.errors import OrbitDomainError
+from orbits.validate.problem import NBodyProblem, NBodyResult
+
+
+@dataclass(frozen=True)
+class BackendInfo:
+    """Static description of one backend.
+
+    ``entry_point`` is "module:function" of the adapter; ``package`` is the third-party module it needs.
+    ``supports_extended_precision`` states what the installed library build can do (heyoka 7.13.2 ships
+    long double and real128 integrators); the adapters themselves always integrate in float64.
+    """
+
+    name: str
+    package: str
+    entry_point: str
+    integrators: tuple[str, ...]
+    supports_test_particles: bool
+    supports_extended_precision: bool
+
+
+BACKENDS: dict[str, BackendInfo] = {
+    "rebound": BackendInfo(name="rebound", package="rebound", entry_point="orbits.validate._rebound:integrate",
+                           integrators=("ias15", "whfast"), supports_test_particles=True,
+                           supports_extended_precision=False),
+    "heyoka": BackendInfo(name="heyoka", package="heyoka", entry_point="orbits.validate._heyoka:integrate",
+                          integrators=("taylor_adaptive",), supports_test_particles=True,
+                          supports_extended_precision=True),
+}
+
+
+def _info(name: str) -> BackendInfo:
+    """Return the registry entry for ``name``; raise OrbitDomainError naming the known backends."""
+    try:
+        return BACKENDS[name]
+    except KeyError:
+        raise OrbitDomainError(f"backend = {name!r} is unknown; choose one of {sorted(BACKENDS)}") from None
+
+
+def available(name: str) -> bool:
+    """Return whether the library behind backend ``name`` is installed (found without importing it)."""
+    return importlib.util.find_spec(_info(name).package) is not None
+
+
+def integrate(name: str, problem: NBodyProblem, **settings) -> NBodyResult:
+    """Run ``problem`` on backend ``name`` with the adapter's keyword ``settings``; return its NBodyResult."""
+    info = _info(name)
+    if not available(name):
+        raise ModuleNotFoundError(f"backend {name!r} needs the {info.package!r} package, which is not installed "
+                                  f"(pip install {info.package})")
+    module_name, function_name = info.entry_point.split(":")
+    return getattr(importlib.import_module(module_name), function_name)(problem, **settings)

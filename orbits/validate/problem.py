@@ -1,0 +1,116 @@
+"""Backend-neutral N-body problem and result records used by the validation adapters (numpy only).
+
+Code units throughout: G = 1, so ``gm`` holds the masses. Nothing here imports rebound or heyoka.
+"""
+
+from __future__ import annotations
+
+import operator
+from dataclasses import dataclass
+
+import numpy as np
+
+from orbits.errors import OrbitDomainError
+
+
+def _frozen_float_array(name: str, value, shape: tuple[int, ...] | None = None) -> np.ndarray:
+    """Return a read-only float64 copy of ``value``; raise if it has the wrong shape or a non-finite entry."""
+    try:
+        array = np.array(value, dtype=np.float64)
+    except (TypeError, ValueError) as exc:
+        raise OrbitDomainError(f"{name} cannot be read as a float64 array: {exc}") from None
+    if shape is not None and array.shape != shape:
+        raise OrbitDomainError(f"{name} has shape {array.shape}; expected {shape}")
+    bad = np.argwhere(~np.isfinite(array))
+    if bad.size:
+        index = tuple(int(i) for i in bad[0])
+        raise OrbitDomainError(f"{name}{list(index)} = {array[index]} is not finite; every entry must be finite")
+    array.setflags(write=False)
+    return array
+
+
+def _check_masses(gm: np.ndarray, n_active: int) -> None:
+    """Raise unless active bodies have gm > 0 and test particles have gm == 0."""
+    for i, value in enumerate(gm):
+        if i < n_active and not value > 0.0:
+            raise OrbitDomainError(f"gm[{i}] = {value} but body {i} is active (index < n_active = {n_active}); "
+                                   "active bodies need gm > 0")
+        if i >= n_active and value != 0.0:
+            raise OrbitDomainError(f"gm[{i}] = {value} but body {i} is a test particle (index >= n_active = "
+                                   f"{n_active}); test particles need gm = 0")
+
+
+def _check_times(times: np.ndarray) -> None:
+    """Raise unless ``times`` is a non-empty, non-negative, strictly increasing 1-D array."""
+    if times.ndim != 1 or times.size == 0:
+        raise OrbitDomainError(f"times has shape {times.shape}; expected a non-empty 1-D array of output times")
+    if times[0] < 0.0:
+        raise OrbitDomainError(f"times[0] = {times[0]} is negative; output times must be >= 0 (the initial state "
+                               "is at t = 0)")
+    steps = np.diff(times)
+    if np.any(steps <= 0.0):
+        i = int(np.argmax(steps <= 0.0)) + 1
+        raise OrbitDomainError(f"times is not strictly increasing at index {i}: times[{i}] = {times[i]} <= "
+                               f"times[{i - 1}] = {times[i - 1]}")
+
+
+@dataclass(frozen=True, eq=False)
+class NBodyProblem:
+    """Initial Cartesian state at t = 0 of N point masses (G = 1) and the times at which the state is wanted.
+
+    Bodies [0, n_active) are massive; bodies [n_active, N) are massless test particles (gm = 0) that feel the
+    massive bodies but do not act on anything. Arrays are copied to read-only float64 on construction;
+    equality is identity (eq=False), since elementwise array comparison has no single truth value.
+    """
+
+    gm: np.ndarray
+    positions: np.ndarray
+    velocities: np.ndarray
+    n_active: int
+    times: np.ndarray
+
+    def __post_init__(self) -> None:
+        """Validate and freeze every field; raise OrbitDomainError naming the offending value."""
+        gm = _frozen_float_array("gm", self.gm)
+        if gm.ndim != 1 or gm.size < 2:
+            raise OrbitDomainError(f"gm has shape {gm.shape}; expected (N,) with N >= 2 bodies")
+        n = gm.size
+        try:
+            n_active = operator.index(self.n_active)
+        except TypeError:
+            raise OrbitDomainError(f"n_active = {self.n_active!r} is not an integer") from None
+        if isinstance(self.n_active, bool) or not 1 <= n_active <= n:
+            raise OrbitDomainError(f"n_active = {self.n_active!r} must be an integer in [1, N = {n}]")
+        _check_masses(gm, n_active)
+        times = _frozen_float_array("times", self.times)
+        _check_times(times)
+        object.__setattr__(self, "gm", gm)
+        object.__setattr__(self, "positions", _frozen_float_array("positions", self.positions, (n, 3)))
+        object.__setattr__(self, "velocities", _frozen_float_array("velocities", self.velocities, (n, 3)))
+        object.__setattr__(self, "n_active", n_active)
+        object.__setattr__(self, "times", times)
+
+    @property
+    def n_bodies(self) -> int:
+        """Total number of bodies N, massive and test particles."""
+        return self.gm.size
+
+
+@dataclass(frozen=True, eq=False)
+class NBodyResult:
+    """States produced by one backend for an NBodyProblem, with the settings and timings of the run.
+
+    ``times`` are the times the states are actually at (for WHFast, steps x dt, which can differ from the
+    requested times by up to dt/2); compare against references evaluated at these times.
+    """
+
+    backend: str
+    integrator: str
+    positions: np.ndarray
+    velocities: np.ndarray
+    times: np.ndarray
+    wall_time: float
+    setup_time: float
+    settings: dict
+    version: str
+    time_mode: str
