@@ -1,0 +1,49 @@
+"""`orbits info`: versions, cache locations and where the constants come from."""
+
+import json
+import os
+import platform
+from importlib import metadata
+from pathlib import Path
+
+from rich.console import Console
+from rich.table import Table
+
+from orbits.constants import BODIES
+
+_PACKAGES = ["orbits", "numpy", "astropy", "rebound", "heyoka", "typer", "rich", "mpmath"]
+
+
+def _version(name):
+    try:
+        return metadata.version(name)
+    except metadata.PackageNotFoundError:
+        return "not installed"
+
+
+def collect():
+    """Facts about this installation, without importing the heavy backends."""
+    heyoka_cache = os.environ.get("HEYOKA_CACHE_DIR") or str(Path.home() / ".cache" / "heyoka")
+    return {
+        "python": platform.python_version(),
+        "platform": platform.platform(),
+        "versions": {name: _version(name) for name in _PACKAGES},
+        "caches": {"heyoka compiled integrators (HEYOKA_CACHE_DIR)": heyoka_cache},
+        "constants": {"G": "CODATA 2018 (astropy.constants)", **{b.name: b.source for b in BODIES.values()}},
+    }
+
+
+def show(fmt):
+    """Print the facts as a table or JSON."""
+    facts = collect()
+    if fmt == "json":
+        print(json.dumps(facts, indent=2))
+        return
+    grid = Table(title="orbits info", show_header=False)
+    grid.add_column("item", style="cyan")
+    grid.add_column("value")
+    grid.add_row("python", f"{facts['python']} on {facts['platform']}")
+    for section in ("versions", "caches", "constants"):
+        for key, value in facts[section].items():
+            grid.add_row(key, value)
+    Console().print(grid)

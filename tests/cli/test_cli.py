@@ -1,0 +1,97 @@
+"""The calculator: outputs, JSON schema, exit codes and one-line errors."""
+
+import json
+import subprocess
+import sys
+
+import pytest
+from typer.testing import CliRunner
+
+from orbits_cli.main import app
+
+runner = CliRunner()
+
+
+def run(*args):
+    return runner.invoke(app, list(args))
+
+
+def test_orbit_of_a_named_body_in_json():
+    result = run("orbit", "Earth", "--format", "json")
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["period"]["unit"] == "s"
+    assert abs(data["period"]["value"] / 86400 - 365.2583) < 1e-3
+    assert abs(data["eccentricity"]["value"] - 0.01671123) < 1e-15
+
+
+def test_orbit_from_elements_only_some_quantities():
+    result = run("orbit", "--primary", "Earth", "--a", "42164.17 km", "--e", "0", "--only", "period,speed",
+                 "--format", "json")
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert list(data) == ["period", "speed"]
+    assert abs(data["period"]["value"] - 86164.09) < 0.2
+
+
+def test_orbit_from_a_state_vector_table():
+    result = run("orbit", "--primary", "Earth", "--r", "7000,0,0 km", "--v", "0,7.5,1 km/s")
+    assert result.exit_code == 0, result.output
+    assert "semi_major_axis" in result.stdout and "periapsis_speed" in result.stdout
+
+
+def test_kepler_conversions_both_ways():
+    forward = json.loads(run("kepler", "--e", "0.5", "--M", "1.0", "--format", "json").stdout)
+    nu = forward["true_anomaly"]["value"]
+    back = json.loads(run("kepler", "--e", "0.5", "--nu", f"{nu} rad", "--format", "json").stdout)
+    assert abs(back["mean_anomaly"]["value"] - 1.0) < 1e-15
+    hyper = json.loads(run("kepler", "--e", "2", "--M", "3", "--format", "json").stdout)
+    assert "hyperbolic_anomaly" in hyper
+    parab = json.loads(run("kepler", "--e", "1", "--M", "2", "--format", "json").stdout)
+    assert "parabolic_anomaly" in parab
+
+
+@pytest.mark.parametrize(
+    "args, fragment",
+    [
+        (["orbit", "--primary", "Earth", "--a", "7000", "--e", "0.1"], "has no unit"),
+        (["orbit", "--primary", "Earth", "--a", "-7000 km", "--e", "0.1"], "a > 0 for a bound orbit"),
+        (["orbit", "--primary", "Earth", "--a", "7000 s"], "not a length"),
+        (["orbit", "--primary", "Pluto", "--a", "7000 km"], "neither a known body"),
+        (["orbit", "--primary", "Earth"], "give a size"),
+        (["orbit", "--primary", "Earth", "--a", "7000 km", "--only", "perod"], "unknown quantities"),
+        (["kepler", "--e", "0.5"], "exactly one of --M"),
+        (["kepler", "--e", "1", "--nu", "180 deg"], "infinite distance"),
+    ],
+)
+def test_errors_exit_2_with_one_line_on_stderr(args, fragment):
+    result = run(*args)
+    assert result.exit_code == 2
+    assert fragment in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert result.stdout == ""
+
+
+def test_info_lists_versions_without_importing_backends():
+    data = json.loads(run("info", "--format", "json").stdout)
+    assert data["versions"]["numpy"] and "heyoka compiled integrators (HEYOKA_CACHE_DIR)" in data["caches"]
+
+
+def test_help_does_not_load_heavy_modules():
+    code = ("import sys; from orbits_cli.main import app; from typer.testing import CliRunner; "
+            "CliRunner().invoke(app, ['--help']); "
+            "print(sorted(m for m in ('rebound', 'heyoka', 'matplotlib', 'astropy') if m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "[]"
+
+
+def test_bench_kepler_small_run_writes_json_atomically(tmp_path):
+    target = tmp_path / "bench.json"
+    result = run("bench", "kepler", "--easy", "2000", "--hard", "500", "--hyperbolic", "500", "--reference", "20",
+                 "--repeats", "1", "--output", str(target))
+    assert result.exit_code == 0, result.output
+    rows = json.loads(target.read_text())
+    orbits_rows = [r for r in rows if r["method"] == "orbits"]
+    assert {r["dataset"] for r in orbits_rows} == {"easy", "hard", "hyperbolic"}
+    assert all(r["max_ulp"] <= 4 for r in orbits_rows)
+    assert [p.name for p in tmp_path.iterdir()] == ["bench.json"]  # no temporary file left behind
