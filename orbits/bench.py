@@ -193,8 +193,13 @@ def _heyoka_method():
     cf = heyoka.cfunc([heyoka.kepE(e, M)], [e, M])
     setup = time.perf_counter() - start
 
-    return _Method("heyoka kepE (cfunc)", lambda inputs, hyperbolic: cf(inputs)[0],
-                   lambda e, M: np.stack([e, M]), setup, "kepE is elliptic only (NaN for e > 1)")
+    return _Method(
+        "heyoka kepE (cfunc)",
+        lambda inputs, hyperbolic: cf(inputs)[0],
+        lambda e, M: np.stack([e, M]),
+        setup,
+        "kepE is elliptic only (NaN for e > 1)",
+    )
 
 
 def _rebound_method():
@@ -203,16 +208,22 @@ def _rebound_method():
     def solve(pairs, hyperbolic):
         return [rebound.M_to_E(e, M) for e, M in pairs]
 
-    return _Method("rebound.M_to_E", solve, lambda e, M: list(zip(e.tolist(), M.tolist())),
-                   note="per-call Python API, throughput from a subset", subset=PER_CALL_SUBSET)
+    return _Method(
+        "rebound.M_to_E",
+        solve,
+        lambda e, M: list(zip(e.tolist(), M.tolist())),
+        note="per-call Python API, throughput from a subset",
+        subset=PER_CALL_SUBSET,
+    )
 
 
 def _numpy_newton_method():
     def solve(pair, hyperbolic):
         return _newton_hyperbolic(*pair) if hyperbolic else _newton_elliptic(*pair)
 
-    return _Method("numpy Newton", solve,
-                   note=f"plain baseline: abs step tol {_NEWTON_TOL:g}, <= {_NEWTON_MAX_ITER} iterations")
+    return _Method(
+        "numpy Newton", solve, note=f"plain baseline: abs step tol {_NEWTON_TOL:g}, <= {_NEWTON_MAX_ITER} iterations"
+    )
 
 
 def _newton_elliptic(e, M):
@@ -299,8 +310,19 @@ def _measure(method, data, refs, repeats):
         return _skipped(method.name, data, "equation not supported")
     result = np.asarray(result, dtype=float)
     max_rel, max_ulp = _worst_errors(result[: len(refs)], refs, not data.hyperbolic)
-    return BenchRow(method.name, data.name, n, best, n / best, max_rel, max_ulp,
-                    int(np.count_nonzero(~np.isfinite(result))), "ok", method.note, method.setup_seconds)
+    return BenchRow(
+        method.name,
+        data.name,
+        n,
+        best,
+        n / best,
+        max_rel,
+        max_ulp,
+        int(np.count_nonzero(~np.isfinite(result))),
+        "ok",
+        method.note,
+        method.setup_seconds,
+    )
 
 
 def _load_methods():
@@ -350,14 +372,12 @@ def format_rows(rows):
     fastest = {}
     for r in filter(_solves, rows):
         fastest[r.dataset] = max(fastest.get(r.dataset, 0.0), r.throughput_per_s)
-    header = (f"{'method':<22}{'dataset':<12}{'M/s':>9}{'vs best':>9}"
-              f"{'max rel err':>13}{'max ulp':>11}{'NaN':>8}  note")
+    header = f"{'method':<22}{'dataset':<12}{'M/s':>9}{'vs best':>9}{'max rel err':>13}{'max ulp':>11}{'NaN':>8}  note"
     lines = [header, "-" * len(header)]
     for r in rows:
         if r.status == "ok":
             ratio = f"{r.throughput_per_s / fastest[r.dataset]:>9.3f}" if _solves(r) else f"{'-':>9}"
-            stats = (f"{r.throughput_per_s / 1e6:>9.3f}{ratio}"
-                     f"{r.max_rel_error:>13.2e}{r.max_ulp:>11.3g}{r.n_nan:>8d}")
+            stats = f"{r.throughput_per_s / 1e6:>9.3f}{ratio}{r.max_rel_error:>13.2e}{r.max_ulp:>11.3g}{r.n_nan:>8d}"
         else:
             stats = f"{'-':>9}{'-':>9}{'-':>13}{'-':>11}{'-':>8}"
         note = r.note if r.status == "ok" else f"{r.status}: {r.note}"

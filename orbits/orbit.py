@@ -18,7 +18,7 @@ import astropy.units as u
 import numpy as np
 
 from orbits import units
-from orbits.constants import G, Body, body
+from orbits.constants import Body, G, body
 from orbits.core import anomalies, elements, propagate, twobody
 from orbits.errors import OrbitDomainError
 
@@ -99,8 +99,20 @@ class Orbit:
 
     # ---- constructors -------------------------------------------------------------------------
     @classmethod
-    def from_elements(cls, primary, a=None, e=0.0, *, p=None, q=None, inc=0 * u.deg, raan=0 * u.deg,
-                      argp=0 * u.deg, nu=0 * u.deg, mass=None):
+    def from_elements(
+        cls,
+        primary,
+        a=None,
+        e=0.0,
+        *,
+        p=None,
+        q=None,
+        inc=0 * u.deg,
+        raan=0 * u.deg,
+        argp=0 * u.deg,
+        nu=0 * u.deg,
+        mass=None,
+    ):
         """Orbit from one size element (a, p or q), e, i, Omega, omega and the true anomaly nu."""
         e = units.to_number(e, "eccentricity e")
         _check_shapes(e=e, a=a, p=p, q=q, inc=inc, raan=raan, argp=argp, nu=nu)
@@ -108,9 +120,15 @@ class Orbit:
             bad = e[~(np.isfinite(e) & (e >= 0))].flat[0]
             raise OrbitDomainError(f"eccentricity e = {float(bad)!r} is outside [0, inf)")
         size = _semi_latus_rectum(a, e + 0.0, p, q)
-        angles = [units.to_si(x, units.RAD, name) for x, name in
-                  ((inc, "inclination i"), (raan, "longitude of the ascending node Omega"),
-                   (argp, "argument of periapsis omega"), (nu, "true anomaly nu"))]
+        angles = [
+            units.to_si(x, units.RAD, name)
+            for x, name in (
+                (inc, "inclination i"),
+                (raan, "longitude of the ascending node Omega"),
+                (argp, "argument of periapsis omega"),
+                (nu, "true anomaly nu"),
+            )
+        ]
         mu = gravitational_parameter(primary)
         r, _ = elements.elements_to_state(size, e + 0.0, *angles, mu)  # validates ranges and asymptotes
         shape = r.shape[:-1]
@@ -142,9 +160,8 @@ class Orbit:
 
     def _require_ellipse(self, quantity):
         if np.any(self.e >= 1.0):
-            raise OrbitDomainError(
-                f"{quantity} is defined for ellipses only (e < 1); this orbit has e = {float(self.e[self.e >= 1].flat[0])!r}"
-            )
+            bad = float(self.e[self.e >= 1].flat[0])
+            raise OrbitDomainError(f"{quantity} is defined for ellipses only (e < 1); this orbit has e = {bad!r}")
 
     def _require_mass(self, quantity):
         if self.mass is None:
@@ -356,7 +373,9 @@ class Orbit:
     def at(self, dt):
         """The Orbit reached a time dt later (same elements, new true anomaly)."""
         r, v = self.propagate(dt)
-        return Orbit.from_vectors(self.mu << units.M3_PER_S2, r, v, mass=None if self.mass is None else self.mass << units.KG)
+        return Orbit.from_vectors(
+            self.mu << units.M3_PER_S2, r, v, mass=None if self.mass is None else self.mass << units.KG
+        )
 
     # ---- tables ---------------------------------------------------------------------------------
     def quantities(self, only=None):
@@ -389,10 +408,32 @@ def _mass(mass, shape):
 
 
 QUANTITY_NAMES = [
-    "semi_major_axis", "eccentricity", "semilatus_rectum", "inclination", "ascending_node",
-    "argument_of_periapsis", "true_anomaly", "periapsis_distance", "apoapsis_distance", "focal_distance",
-    "semi_minor_axis", "periapsis_speed", "apoapsis_speed", "covertex_speed", "radius", "speed",
-    "specific_energy", "specific_angular_momentum", "areal_velocity", "energy", "angular_momentum",
-    "potential_energy", "kinetic_energy", "period", "mean_motion", "covertex_times", "mean_anomaly",
+    "semi_major_axis",
+    "eccentricity",
+    "semilatus_rectum",
+    "inclination",
+    "ascending_node",
+    "argument_of_periapsis",
+    "true_anomaly",
+    "periapsis_distance",
+    "apoapsis_distance",
+    "focal_distance",
+    "semi_minor_axis",
+    "periapsis_speed",
+    "apoapsis_speed",
+    "covertex_speed",
+    "radius",
+    "speed",
+    "specific_energy",
+    "specific_angular_momentum",
+    "areal_velocity",
+    "energy",
+    "angular_momentum",
+    "potential_energy",
+    "kinetic_energy",
+    "period",
+    "mean_motion",
+    "covertex_times",
+    "mean_anomaly",
     "time_since_periapsis",
 ]

@@ -20,8 +20,14 @@ KG_M2_PER_S = u.kg * u.m**2 / u.s
 RAD_PER_S = u.rad / u.s
 J_PER_KG = u.J / u.kg
 
-_EXAMPLE = {"m": "7000 * u.km", "kg": "5.97e24 * u.kg", "s": "3600 * u.s", "rad": "30 * u.deg",
-            "m / s": "7.5 * u.km / u.s", "m3 / s2": "3.986e14 * u.m**3 / u.s**2"}
+_EXAMPLE = {
+    "m": "7000 * u.km",
+    "kg": "5.97e24 * u.kg",
+    "s": "3600 * u.s",
+    "rad": "30 * u.deg",
+    "m / s": "7.5 * u.km / u.s",
+    "m3 / s2": "3.986e14 * u.m**3 / u.s**2",
+}
 
 
 def _reject_bool(value, name):

@@ -170,8 +170,12 @@ def _lagrange_coefficients(r0, v0, mu, t):
         D0 = rv / mpmath.sqrt(mu * p)
         D = _solve_barker(D0 + D0**3 / 3 + 2 * mpmath.sqrt(mu / p**3) * t)
         chi, r1 = mpmath.sqrt(p) * (D - D0), p * (1 + D**2) / 2
-        return (1 - chi**2 / (2 * r), t - chi**3 / (6 * mpmath.sqrt(mu)),
-                -mpmath.sqrt(mu) * chi / (r * r1), 1 - chi**2 / (2 * r1))
+        return (
+            1 - chi**2 / (2 * r),
+            t - chi**3 / (6 * mpmath.sqrt(mu)),
+            -mpmath.sqrt(mu) * chi / (r * r1),
+            1 - chi**2 / (2 * r1),
+        )
     a = -mu / (2 * energy)
     if energy < 0:
         n = mpmath.sqrt(mu / a**3)
@@ -179,14 +183,22 @@ def _lagrange_coefficients(r0, v0, mu, t):
         dE = _solve_elliptic(E0 - e * mpmath.sin(E0) + n * t, e) - E0
         dE -= 2 * mp.pi * mpmath.nint((dE - n * t) / (2 * mp.pi))  # keep the revolutions of n t
         r1 = a * (1 - e * mpmath.cos(E0 + dE))
-        return (1 - a / r * (1 - mpmath.cos(dE)), t - (dE - mpmath.sin(dE)) / n,
-                -mpmath.sqrt(mu * a) / (r * r1) * mpmath.sin(dE), 1 - a / r1 * (1 - mpmath.cos(dE)))
-    n = mpmath.sqrt(mu / -a**3)
+        return (
+            1 - a / r * (1 - mpmath.cos(dE)),
+            t - (dE - mpmath.sin(dE)) / n,
+            -mpmath.sqrt(mu * a) / (r * r1) * mpmath.sin(dE),
+            1 - a / r1 * (1 - mpmath.cos(dE)),
+        )
+    n = mpmath.sqrt(mu / -(a**3))
     H0 = mpmath.asinh(rv / mpmath.sqrt(-mu * a) / e)  # r0.v0 = sqrt(-mu a) e sinh H0
     dH = _solve_hyperbolic(e * mpmath.sinh(H0) - H0 + n * t, e) - H0
     r1 = a * (1 - e * mpmath.cosh(H0 + dH))
-    return (1 - a / r * (1 - mpmath.cosh(dH)), t - (mpmath.sinh(dH) - dH) / n,
-            -mpmath.sqrt(-mu * a) / (r * r1) * mpmath.sinh(dH), 1 - a / r1 * (1 - mpmath.cosh(dH)))
+    return (
+        1 - a / r * (1 - mpmath.cosh(dH)),
+        t - (mpmath.sinh(dH) - dH) / n,
+        -mpmath.sqrt(-mu * a) / (r * r1) * mpmath.sinh(dH),
+        1 - a / r1 * (1 - mpmath.cosh(dH)),
+    )
 
 
 def _propagation_digits(r0, v0, mu, t):

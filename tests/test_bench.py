@@ -6,11 +6,11 @@ import math
 import sys
 
 import mpmath
+import mpref
 import numpy as np
 import pytest
 from mpmath import mp
 
-import mpref
 from orbits import bench
 
 METHODS = ["orbits", "heyoka kepE (cfunc)", "rebound.M_to_E", "numpy Newton", "exoplanet-core", "pykep"]
@@ -37,8 +37,15 @@ def test_one_row_per_method_and_dataset(rows):
             assert 0 <= r.n_nan <= r.n
 
 
-@pytest.mark.parametrize("method, module", [("exoplanet-core", "exoplanet_core"), ("pykep", "pykep"),
-                                            ("heyoka kepE (cfunc)", "heyoka"), ("rebound.M_to_E", "rebound")])
+@pytest.mark.parametrize(
+    "method, module",
+    [
+        ("exoplanet-core", "exoplanet_core"),
+        ("pykep", "pykep"),
+        ("heyoka kepE (cfunc)", "heyoka"),
+        ("rebound.M_to_E", "rebound"),
+    ],
+)
 def test_absent_peers_are_skipped_with_a_note(rows, method, module):
     installed = importlib.util.find_spec(module) is not None
     for dataset in DATASETS:
@@ -76,8 +83,16 @@ def test_numpy_newton_baseline_shows_error_in_hard_corner(rows):
     assert hard.max_ulp > 1000 and hard.max_ulp > 100 * easy.max_ulp
 
 
-ELLIPTIC_CASES = [(1e-12, 1 - 1e-9), (math.pi - 1e-12, 1 - 1e-9), (3e-7, 1 - 2**-53), (7.5, 0.3),
-                  (-2.0, 0.99), (1e6, 0.5), (1.0, 0.0), (0.0, 0.7)]
+ELLIPTIC_CASES = [
+    (1e-12, 1 - 1e-9),
+    (math.pi - 1e-12, 1 - 1e-9),
+    (3e-7, 1 - 2**-53),
+    (7.5, 0.3),
+    (-2.0, 0.99),
+    (1e6, 0.5),
+    (1.0, 0.0),
+    (0.0, 0.7),
+]
 HYPERBOLIC_CASES = [(1e-6, 1 + 1e-9), (1e6, 1 + 1e-9), (2.0, 1.5), (1e6, 1e3), (-3.0, 2.0), (0.0, 2.0)]
 
 
@@ -114,8 +129,19 @@ def test_format_and_json(rows):
     assert all(m in table for m in METHODS) and len(table.splitlines()) == len(rows) + 2
     records = bench.rows_to_json(rows)
     json.dumps(records, allow_nan=False)
-    assert records[0].keys() >= {"method", "dataset", "n", "seconds", "throughput_per_s", "max_rel_error",
-                                 "max_ulp", "n_nan", "status", "note", "setup_seconds"}
+    assert records[0].keys() >= {
+        "method",
+        "dataset",
+        "n",
+        "seconds",
+        "throughput_per_s",
+        "max_rel_error",
+        "max_ulp",
+        "n_nan",
+        "status",
+        "note",
+        "setup_seconds",
+    }
 
 
 def test_a_method_that_raises_is_reported_not_fatal(monkeypatch):

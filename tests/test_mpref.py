@@ -3,19 +3,22 @@
 import math
 
 import mpmath
+import mpref
 import pytest
 from mpmath import mp, mpf
-
-import mpref
 
 TINY = mpf(10) ** -45
 ONE_MINUS = 1 - 2**-53  # largest float below 1
 ONE_PLUS = 1 + 2**-52  # smallest float above 1
 
-ELLIPTIC = [(M, e) for e in (0.0, 0.3, 0.99, 1 - 1e-9, ONE_MINUS)
-            for M in (5e-324, 1e-300, 1e-12, 0.5, 3.0, math.pi - 1e-12, math.pi, -2.0, 7.5, 1e300)]
-HYPERBOLIC = [(M, e) for e in (ONE_PLUS, 1 + 1e-9, 1.5, 1e3, 1e12)
-              for M in (5e-324, 1e-300, 1e-6, 1.0, -4.0, 1e6, 1e300)]
+ELLIPTIC = [
+    (M, e)
+    for e in (0.0, 0.3, 0.99, 1 - 1e-9, ONE_MINUS)
+    for M in (5e-324, 1e-300, 1e-12, 0.5, 3.0, math.pi - 1e-12, math.pi, -2.0, 7.5, 1e300)
+]
+HYPERBOLIC = [
+    (M, e) for e in (ONE_PLUS, 1 + 1e-9, 1.5, 1e3, 1e12) for M in (5e-324, 1e-300, 1e-6, 1.0, -4.0, 1e6, 1e300)
+]
 
 
 def reduced(M):

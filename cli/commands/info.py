@@ -6,12 +6,14 @@ import platform
 from importlib import metadata
 from pathlib import Path
 
-from rich.console import Console
-from rich.table import Table
-
-from orbits.constants import BODIES
+from orbits_cli.options import Format, FormatOption
 
 _PACKAGES = ["orbits", "numpy", "astropy", "rebound", "heyoka", "typer", "rich", "mpmath"]
+
+
+def command(fmt: FormatOption = Format.table):
+    """Versions of orbits and its dependencies, cache locations, and the constants' sources."""
+    show(fmt.value)
 
 
 def _version(name):
@@ -23,6 +25,8 @@ def _version(name):
 
 def collect():
     """Facts about this installation, without importing the heavy backends."""
+    from orbits.constants import BODIES
+
     heyoka_cache = os.environ.get("HEYOKA_CACHE_DIR") or str(Path.home() / ".cache" / "heyoka")
     return {
         "python": platform.python_version(),
@@ -35,6 +39,9 @@ def collect():
 
 def show(fmt):
     """Print the facts as a table or JSON."""
+    from rich.console import Console
+    from rich.table import Table
+
     facts = collect()
     if fmt == "json":
         print(json.dumps(facts, indent=2))

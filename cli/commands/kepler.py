@@ -1,15 +1,33 @@
 """`orbits kepler`: anomaly conversions on any conic."""
 
-import astropy.units as u
-import numpy as np
-import typer
+from typing import Annotated
 
-from orbits.core import anomalies, kepler
-from orbits_cli import params
+import typer
+from orbits_cli.options import Format, FormatOption
+
+
+def command(
+    e: Annotated[float, typer.Option("--e", help="eccentricity (any conic)")],
+    mean: Annotated[
+        str | None, typer.Option("--M", help="mean anomaly (Barker's W when e = 1), e.g. '1.2 rad'")
+    ] = None,
+    true: Annotated[str | None, typer.Option("--nu", help="true anomaly, e.g. '120 deg'")] = None,
+    fmt: FormatOption = Format.table,
+):
+    """Anomaly conversions: from the mean anomaly (--M) or the true anomaly (--nu) to all the others."""
+    from orbits_cli import render
+
+    render.emit(f"Kepler's equation, e = {e}", anomalies_from(e, mean, true), fmt.value)
 
 
 def anomalies_from(e, mean, true):
     """{name: Quantity}: mean, eccentric / hyperbolic / parabolic and true anomalies for one e."""
+    import astropy.units as u
+    import numpy as np
+    from orbits_cli import params
+
+    from orbits.core import anomalies, kepler
+
     if (mean is None) == (true is None):
         raise typer.BadParameter("give exactly one of --M (mean anomaly) and --nu (true anomaly)")
     if true is not None:

@@ -1,15 +1,47 @@
-"""`orbits orbit`: build an Orbit from a named body, elements or a state vector."""
+"""`orbits orbit`: every section XXI quantity of an orbit from a named body, elements or a state vector."""
 
-import astropy.units as u
+from typing import Annotated
+
 import typer
+from orbits_cli.options import Format, FormatOption, OnlyOption
 
-from orbits import Orbit, body
-from orbits.core.anomalies import true_from_mean
-from orbits_cli import params
+
+def command(
+    body_name: Annotated[
+        str | None, typer.Argument(metavar="[BODY]", help="a named body (Earth, Moon, Jupiter): its mean orbit")
+    ] = None,
+    primary: Annotated[
+        str, typer.Option(help="central body: name, mass ('5.97e24 kg') or GM ('3.986e14 m3/s2')")
+    ] = "Sun",
+    a: Annotated[str | None, typer.Option("--a", help="semi-major axis, e.g. '1 AU' (negative for hyperbolas)")] = None,
+    p: Annotated[str | None, typer.Option("--p", help="semi-latus rectum")] = None,
+    q: Annotated[str | None, typer.Option("--q", help="periapsis distance (use for e = 1)")] = None,
+    e: Annotated[float, typer.Option("--e", help="eccentricity")] = 0.0,
+    inc: Annotated[str, typer.Option("--inc", help="inclination ('28.5 deg'; bare numbers are degrees)")] = "0",
+    raan: Annotated[str, typer.Option("--raan", help="longitude of the ascending node")] = "0",
+    argp: Annotated[str, typer.Option("--argp", help="argument of periapsis")] = "0",
+    nu: Annotated[str, typer.Option("--nu", help="true anomaly")] = "0",
+    r: Annotated[
+        str | None, typer.Option("--r", help="position vector 'X,Y,Z UNIT' (with --v instead of elements)")
+    ] = None,
+    v: Annotated[str | None, typer.Option("--v", help="velocity vector 'X,Y,Z UNIT'")] = None,
+    mass: Annotated[str | None, typer.Option(help="orbiting body's mass, for U, K, E, L")] = None,
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+):
+    """Every section XXI quantity of an orbit, from elements, a state vector, or a named body."""
+    from orbits_cli import params, render
+
+    result, title = build(body_name, primary, a, p, q, e, inc, raan, argp, nu, r, v, mass)
+    render.emit(title, result.quantities(params.names(only)), fmt.value)
 
 
 def build(body_name, primary, a, p, q, e, inc, raan, argp, nu, r, v, mass):
     """(Orbit, title) from the command's options; BadParameter for inconsistent combinations."""
+    from orbits_cli import params
+
+    from orbits import Orbit, body
+
     mass_q = None if mass is None else params.quantity(mass, "mass", "--mass")
     if body_name is not None:
         return _named(body_name), f"{body(body_name).name}'s mean orbit"
@@ -19,27 +51,47 @@ def build(body_name, primary, a, p, q, e, inc, raan, argp, nu, r, v, mass):
     if r is not None:
         if any(x is not None for x in (a, p, q)):
             raise typer.BadParameter("give either a state vector (--r, --v) or elements (--a/--p/--q), not both")
-        orbit = Orbit.from_vectors(center, params.vector(r, "length", "--r"), params.vector(v, "speed", "--v"),
-                                   mass=mass_q)
+        orbit = Orbit.from_vectors(
+            center, params.vector(r, "length", "--r"), params.vector(v, "speed", "--v"), mass=mass_q
+        )
         return orbit, "Orbit from a state vector"
     if all(x is None for x in (a, p, q)):
         raise typer.BadParameter("give a size (--a, --p or --q), a state vector (--r and --v), or a BODY name")
-    sizes = {k: (None if x is None else params.quantity(x, "length", f"--{k}")) for k, x in (("a", a), ("p", p), ("q", q))}
+    sizes = {
+        k: (None if x is None else params.quantity(x, "length", f"--{k}")) for k, x in (("a", a), ("p", p), ("q", q))
+    }
     orbit = Orbit.from_elements(
-        center, e=e, inc=params.angle(inc, "--inc"), raan=params.angle(raan, "--raan"),
-        argp=params.angle(argp, "--argp"), nu=params.angle(nu, "--nu"), mass=mass_q, **sizes,
+        center,
+        e=e,
+        inc=params.angle(inc, "--inc"),
+        raan=params.angle(raan, "--raan"),
+        argp=params.angle(argp, "--argp"),
+        nu=params.angle(nu, "--nu"),
+        mass=mass_q,
+        **sizes,
     )
     return orbit, "Orbit from elements"
 
 
 def _named(name):
     """The named body's J2000 mean orbit about its primary, with its mass."""
+    import astropy.units as u
+
+    from orbits import Orbit, body
+    from orbits.core.anomalies import true_from_mean
+
     target = body(name)
     if target.orbit is None:
         raise typer.BadParameter(f"{target.name} has no orbit in the catalogue; give elements instead")
     el = target.orbit
     nu = float(true_from_mean(el.mean_anomaly, el.e))
     return Orbit.from_elements(
-        el.primary, a=el.a * u.m, e=el.e, inc=el.inc * u.rad, raan=el.raan * u.rad, argp=el.argp * u.rad,
-        nu=nu * u.rad, mass=target.mass * u.kg,
+        el.primary,
+        a=el.a * u.m,
+        e=el.e,
+        inc=el.inc * u.rad,
+        raan=el.raan * u.rad,
+        argp=el.argp * u.rad,
+        nu=nu * u.rad,
+        mass=target.mass * u.kg,
     )

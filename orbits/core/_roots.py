@@ -34,11 +34,11 @@ def halley_in_bracket(x, lo, hi, residual, what, inputs):
         done |= hi[idx] - lo[idx] <= 2.0**-52 * np.abs(new)
         active[idx] = ~done
     if np.any(active):
-        where = np.argwhere(active)[0]
+        i = tuple(np.argwhere(active)[0])
+        at = ", ".join(f"{k} = {float(np.asarray(v)[i])!r}" for k, v in inputs.items())
         raise ConvergenceError(
-            f"{what} did not converge in {MAX_ITERATIONS} iterations at "
-            + ", ".join(f"{k} = {float(np.asarray(v)[tuple(where)])!r}" for k, v in inputs.items())
-            + f"; last iterate {float(x[tuple(where)])!r}, bracket [{float(lo[tuple(where)])!r}, {float(hi[tuple(where)])!r}]"
+            f"{what} did not converge in {MAX_ITERATIONS} iterations at {at}; last iterate {float(x[i])!r}, "
+            f"bracket [{float(lo[i])!r}, {float(hi[i])!r}]"
         )
     f, df, _ = residual(x, np.nonzero(np.ones(x.shape, dtype=bool)))
     with np.errstate(all="ignore"):

@@ -61,7 +61,11 @@ def eccentricity_vector(r, v, mu):
 
 def laplace_runge_lenz_vector(r, v, mu, m):
     """A = p x L - m k r_hat with p = m v, L = m r x v, k = G M m: A = m**2 mu e (kg**2 m**3 / s**2)."""
-    return np.asarray(m, dtype=float)[..., None] ** 2 * np.asarray(mu, dtype=float)[..., None] * eccentricity_vector(r, v, mu)
+    return (
+        np.asarray(m, dtype=float)[..., None] ** 2
+        * np.asarray(mu, dtype=float)[..., None]
+        * eccentricity_vector(r, v, mu)
+    )
 
 
 def _node_frame(h):
@@ -170,7 +174,5 @@ def elements_to_state(p, e, inc, raan, argp, nu, mu):
     radius = p / (1.0 + e * np.cos(nu))
     r = radius[..., None] * (np.cos(u)[..., None] * n_hat + np.sin(u)[..., None] * m_hat)
     speed = np.sqrt(mu / p)[..., None]
-    v = speed * (
-        -(np.sin(u) + e * np.sin(argp))[..., None] * n_hat + (np.cos(u) + e * np.cos(argp))[..., None] * m_hat
-    )
+    v = speed * (-(np.sin(u) + e * np.sin(argp))[..., None] * n_hat + (np.cos(u) + e * np.cos(argp))[..., None] * m_hat)
     return r, v

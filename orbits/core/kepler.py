@@ -36,9 +36,7 @@ MAX_MEAN_ANOMALY = 2.0**50 * TWO_PI_1
 
 _SERIES_LIMIT = 2.0  # |x| below which x - sin x and sinh x - x come from their series
 _LOG_FORM_LIMIT = 20.0  # H above which the hyperbolic equation is solved in logarithmic form
-_OTHER_CONICS = (
-    "; use eccentric_anomaly for e < 1, parabolic_anomaly (Barker) for e = 1, hyperbolic_anomaly for e > 1"
-)
+_OTHER_CONICS = "; use eccentric_anomaly for e < 1, parabolic_anomaly (Barker) for e = 1, hyperbolic_anomaly for e > 1"
 _TINY_MEAN_ANOMALY = 1e-280  # below this, E = M / (1 - e) and H = M / (e - 1) are exact roots
 
 

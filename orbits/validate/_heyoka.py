@@ -53,20 +53,36 @@ def integrate(problem: NBodyProblem, tol: float = 1e-16, high_accuracy: bool = T
     setup_time = time.perf_counter() - start
     grid, skip = _grid(problem.times)
     ta.state[:] = np.hstack([problem.positions, problem.velocities]).ravel()
-    ta.pars[:] = problem.gm[:problem.n_active]
+    ta.pars[:] = problem.gm[: problem.n_active]
     start = time.perf_counter()
     outcome, *_, states = ta.propagate_grid(grid)
     wall_time = time.perf_counter() - start
     if outcome != heyoka.taylor_outcome.time_limit:
-        raise RuntimeError(f"heyoka propagate_grid stopped at t = {ta.time} with outcome {outcome}; "
-                           f"it must reach t = {grid[-1]} (outcome time_limit)")
+        raise RuntimeError(
+            f"heyoka propagate_grid stopped at t = {ta.time} with outcome {outcome}; "
+            f"it must reach t = {grid[-1]} (outcome time_limit)"
+        )
     states = states[skip:].reshape(problem.times.size, problem.n_bodies, 6)
-    settings = {"tol": float(tol), "high_accuracy": bool(high_accuracy), "order": ta.order,
-                "compact_mode": compact_mode, "fp_type": "float64", "cache_hit": cache_hit}
-    return NBodyResult(backend="heyoka", integrator="taylor_adaptive", positions=states[..., :3].copy(),
-                       velocities=states[..., 3:].copy(), times=problem.times.copy(), wall_time=wall_time,
-                       setup_time=setup_time, settings=settings, version=heyoka.__version__,
-                       time_mode="propagate_grid from t = 0 lands exactly on each requested time")
+    settings = {
+        "tol": float(tol),
+        "high_accuracy": bool(high_accuracy),
+        "order": ta.order,
+        "compact_mode": compact_mode,
+        "fp_type": "float64",
+        "cache_hit": cache_hit,
+    }
+    return NBodyResult(
+        backend="heyoka",
+        integrator="taylor_adaptive",
+        positions=states[..., :3].copy(),
+        velocities=states[..., 3:].copy(),
+        times=problem.times.copy(),
+        wall_time=wall_time,
+        setup_time=setup_time,
+        settings=settings,
+        version=heyoka.__version__,
+        time_mode="propagate_grid from t = 0 lands exactly on each requested time",
+    )
 
 
 def clear_cache() -> None:
@@ -85,8 +101,14 @@ def _compile(heyoka, n_bodies: int, n_active: int, tol: float, high_accuracy: bo
     """Build the G = 1 N-body Taylor integrator whose active masses are runtime parameters par[0..n_active)."""
     masses = [heyoka.par[i] for i in range(n_active)]
     system = heyoka.model.nbody(n_bodies, masses=masses, Gconst=1.0)
-    return heyoka.taylor_adaptive(system, np.zeros(6 * n_bodies), pars=np.zeros(n_active), tol=tol,
-                                  high_accuracy=high_accuracy, compact_mode=compact_mode)
+    return heyoka.taylor_adaptive(
+        system,
+        np.zeros(6 * n_bodies),
+        pars=np.zeros(n_active),
+        tol=tol,
+        high_accuracy=high_accuracy,
+        compact_mode=compact_mode,
+    )
 
 
 def _grid(times: np.ndarray) -> tuple[np.ndarray, int]:

@@ -23,8 +23,9 @@ from orbits.validate.problem import NBodyProblem, NBodyResult
 INTEGRATORS = ("ias15", "whfast")
 
 
-def integrate(problem: NBodyProblem, integrator: str = "ias15", epsilon: float = 1e-9,
-              dt: float | None = None) -> NBodyResult:
+def integrate(
+    problem: NBodyProblem, integrator: str = "ias15", epsilon: float = 1e-9, dt: float | None = None
+) -> NBodyResult:
     """Integrate ``problem`` with rebound and return the states at ``problem.times`` (WHFast: at steps x dt).
 
     ``epsilon`` is the IAS15 accuracy parameter (ignored by WHFast); ``dt`` is the WHFast step, required for
@@ -33,8 +34,9 @@ def integrate(problem: NBodyProblem, integrator: str = "ias15", epsilon: float =
     import rebound
 
     if integrator not in INTEGRATORS:
-        raise OrbitDomainError(f"integrator = {integrator!r} is not offered by the rebound backend; "
-                               f"choose one of {INTEGRATORS}")
+        raise OrbitDomainError(
+            f"integrator = {integrator!r} is not offered by the rebound backend; choose one of {INTEGRATORS}"
+        )
     start = time.perf_counter()
     sim = _simulation(rebound, problem)
     if integrator == "ias15":
@@ -51,11 +53,22 @@ def integrate(problem: NBodyProblem, integrator: str = "ias15", epsilon: float =
         times, positions, velocities, wall_time = _run_whfast(sim, problem.times, dt)
         positions += com[0] + times[:, None, None] * com[1]
         velocities += com[1]
-        time_mode = ("steps x dt: sim.steps(n) to the step count n nearest each requested time; times are "
-                     "n * dt, not the drifting sim.t")
-    return NBodyResult(backend="rebound", integrator=integrator, positions=positions, velocities=velocities,
-                       times=times, wall_time=wall_time, setup_time=setup_time, settings=settings,
-                       version=rebound.__version__, time_mode=time_mode)
+        time_mode = (
+            "steps x dt: sim.steps(n) to the step count n nearest each requested time; times are "
+            "n * dt, not the drifting sim.t"
+        )
+    return NBodyResult(
+        backend="rebound",
+        integrator=integrator,
+        positions=positions,
+        velocities=velocities,
+        times=times,
+        wall_time=wall_time,
+        setup_time=setup_time,
+        settings=settings,
+        version=rebound.__version__,
+        time_mode=time_mode,
+    )
 
 
 def _simulation(rebound, problem: NBodyProblem):
@@ -63,8 +76,7 @@ def _simulation(rebound, problem: NBodyProblem):
     sim = rebound.Simulation()
     sim.G = 1.0
     for m, r, v in zip(problem.gm, problem.positions, problem.velocities):
-        sim.add(m=float(m), x=float(r[0]), y=float(r[1]), z=float(r[2]),
-                vx=float(v[0]), vy=float(v[1]), vz=float(v[2]))
+        sim.add(m=float(m), x=float(r[0]), y=float(r[1]), z=float(r[2]), vx=float(v[0]), vy=float(v[1]), vz=float(v[2]))
     if problem.n_active < problem.n_bodies:
         sim.N_active = problem.n_active
         sim.testparticle_type = 0
@@ -86,8 +98,9 @@ def _configure_ias15(sim, epsilon: float) -> dict:
 def _configure_whfast(sim, dt: float | None) -> dict:
     """Select WHFast (Jacobi, standard kernel, no correctors, safe mode) with step ``dt``; return the settings."""
     if dt is None:
-        raise OrbitDomainError("integrator 'whfast' needs a step: pass dt (e.g. a few percent of the shortest "
-                               "orbital period)")
+        raise OrbitDomainError(
+            "integrator 'whfast' needs a step: pass dt (e.g. a few percent of the shortest orbital period)"
+        )
     if not (np.isfinite(dt) and dt > 0.0):
         raise OrbitDomainError(f"dt = {dt} must be finite and > 0")
     sim.integrator = "whfast"
@@ -97,8 +110,15 @@ def _configure_whfast(sim, dt: float | None) -> dict:
     sim.integrator.corrector2 = 0
     sim.integrator.safe_mode = 1
     sim.dt = float(dt)
-    return {"dt": float(dt), "coordinates": "JACOBI", "kernel": "DEFAULT", "corrector": 0, "corrector2": 0,
-            "safe_mode": 1, "move_to_com": True}
+    return {
+        "dt": float(dt),
+        "coordinates": "JACOBI",
+        "kernel": "DEFAULT",
+        "corrector": 0,
+        "corrector2": 0,
+        "safe_mode": 1,
+        "move_to_com": True,
+    }
 
 
 def _move_to_com(sim) -> np.ndarray:
@@ -135,8 +155,10 @@ def _step_counts(times: np.ndarray, dt: float) -> np.ndarray:
     clash = np.flatnonzero(np.diff(counts) == 0)
     if clash.size:
         i = int(clash[0])
-        raise OrbitDomainError(f"dt = {dt} is too coarse for the output grid: times[{i}] = {times[i]} and "
-                               f"times[{i + 1}] = {times[i + 1]} both round to step {counts[i]}")
+        raise OrbitDomainError(
+            f"dt = {dt} is too coarse for the output grid: times[{i}] = {times[i]} and "
+            f"times[{i + 1}] = {times[i + 1]} both round to step {counts[i]}"
+        )
     return counts
 
 

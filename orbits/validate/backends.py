@@ -31,12 +31,22 @@ class BackendInfo:
 
 
 BACKENDS: dict[str, BackendInfo] = {
-    "rebound": BackendInfo(name="rebound", package="rebound", entry_point="orbits.validate._rebound:integrate",
-                           integrators=("ias15", "whfast"), supports_test_particles=True,
-                           supports_extended_precision=False),
-    "heyoka": BackendInfo(name="heyoka", package="heyoka", entry_point="orbits.validate._heyoka:integrate",
-                          integrators=("taylor_adaptive",), supports_test_particles=True,
-                          supports_extended_precision=True),
+    "rebound": BackendInfo(
+        name="rebound",
+        package="rebound",
+        entry_point="orbits.validate._rebound:integrate",
+        integrators=("ias15", "whfast"),
+        supports_test_particles=True,
+        supports_extended_precision=False,
+    ),
+    "heyoka": BackendInfo(
+        name="heyoka",
+        package="heyoka",
+        entry_point="orbits.validate._heyoka:integrate",
+        integrators=("taylor_adaptive",),
+        supports_test_particles=True,
+        supports_extended_precision=True,
+    ),
 }
 
 
@@ -57,7 +67,8 @@ def integrate(name: str, problem: NBodyProblem, **settings) -> NBodyResult:
     """Run ``problem`` on backend ``name`` with the adapter's keyword ``settings``; return its NBodyResult."""
     info = _info(name)
     if not available(name):
-        raise ModuleNotFoundError(f"backend {name!r} needs the {info.package!r} package, which is not installed "
-                                  f"(pip install {info.package})")
+        raise ModuleNotFoundError(
+            f"backend {name!r} needs the {info.package!r} package, which is not installed (pip install {info.package})"
+        )
     module_name, function_name = info.entry_point.split(":")
     return getattr(importlib.import_module(module_name), function_name)(problem, **settings)

@@ -33,11 +33,14 @@ def _check_masses(gm: np.ndarray, n_active: int) -> None:
     """Raise unless active bodies have gm > 0 and test particles have gm == 0."""
     for i, value in enumerate(gm):
         if i < n_active and not value > 0.0:
-            raise OrbitDomainError(f"gm[{i}] = {value} but body {i} is active (index < n_active = {n_active}); "
-                                   "active bodies need gm > 0")
+            raise OrbitDomainError(
+                f"gm[{i}] = {value} but body {i} is active (index < n_active = {n_active}); active bodies need gm > 0"
+            )
         if i >= n_active and value != 0.0:
-            raise OrbitDomainError(f"gm[{i}] = {value} but body {i} is a test particle (index >= n_active = "
-                                   f"{n_active}); test particles need gm = 0")
+            raise OrbitDomainError(
+                f"gm[{i}] = {value} but body {i} is a test particle (index >= n_active = "
+                f"{n_active}); test particles need gm = 0"
+            )
 
 
 def _check_times(times: np.ndarray) -> None:
@@ -45,13 +48,15 @@ def _check_times(times: np.ndarray) -> None:
     if times.ndim != 1 or times.size == 0:
         raise OrbitDomainError(f"times has shape {times.shape}; expected a non-empty 1-D array of output times")
     if times[0] < 0.0:
-        raise OrbitDomainError(f"times[0] = {times[0]} is negative; output times must be >= 0 (the initial state "
-                               "is at t = 0)")
+        raise OrbitDomainError(
+            f"times[0] = {times[0]} is negative; output times must be >= 0 (the initial state is at t = 0)"
+        )
     steps = np.diff(times)
     if np.any(steps <= 0.0):
         i = int(np.argmax(steps <= 0.0)) + 1
-        raise OrbitDomainError(f"times is not strictly increasing at index {i}: times[{i}] = {times[i]} <= "
-                               f"times[{i - 1}] = {times[i - 1]}")
+        raise OrbitDomainError(
+            f"times is not strictly increasing at index {i}: times[{i}] = {times[i]} <= times[{i - 1}] = {times[i - 1]}"
+        )
 
 
 @dataclass(frozen=True, eq=False)

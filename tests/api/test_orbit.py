@@ -1,8 +1,8 @@
 """The unit-aware Orbit: constructors, units policy, errors, broadcasting, and agreement with the core."""
 
 import math
-import sys
 import subprocess
+import sys
 
 import astropy.units as u
 import numpy as np
@@ -23,7 +23,7 @@ def test_every_size_element_gives_the_same_orbit():
     by_a = Orbit.from_elements("Earth", a=10000 * u.km, e=0.3)
     by_p = Orbit.from_elements("Earth", p=9100 * u.km, e=0.3)
     by_q = Orbit.from_elements("Earth", q=7000 * u.km, e=0.3)
-    for other in (by_p, by_q):
+    for other in (by_a, by_p, by_q):
         assert math.isclose(other.semi_major_axis.to_value(u.km), 10000, rel_tol=1e-15)
 
 

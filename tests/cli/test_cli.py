@@ -5,9 +5,8 @@ import subprocess
 import sys
 
 import pytest
-from typer.testing import CliRunner
-
 from orbits_cli.main import app
+from typer.testing import CliRunner
 
 runner = CliRunner()
 
@@ -26,8 +25,9 @@ def test_orbit_of_a_named_body_in_json():
 
 
 def test_orbit_from_elements_only_some_quantities():
-    result = run("orbit", "--primary", "Earth", "--a", "42164.17 km", "--e", "0", "--only", "period,speed",
-                 "--format", "json")
+    result = run(
+        "orbit", "--primary", "Earth", "--a", "42164.17 km", "--e", "0", "--only", "period,speed", "--format", "json"
+    )
     assert result.exit_code == 0, result.output
     data = json.loads(result.stdout)
     assert list(data) == ["period", "speed"]
@@ -78,17 +78,33 @@ def test_info_lists_versions_without_importing_backends():
 
 
 def test_help_does_not_load_heavy_modules():
-    code = ("import sys; from orbits_cli.main import app; from typer.testing import CliRunner; "
-            "CliRunner().invoke(app, ['--help']); "
-            "print(sorted(m for m in ('rebound', 'heyoka', 'matplotlib', 'astropy') if m in sys.modules))")
+    code = (
+        "import sys; from orbits_cli.main import app; from typer.testing import CliRunner; "
+        "CliRunner().invoke(app, ['--help']); "
+        "print(sorted(m for m in ('rebound', 'heyoka', 'matplotlib', 'astropy') if m in sys.modules))"
+    )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
 
 
 def test_bench_kepler_small_run_writes_json_atomically(tmp_path):
     target = tmp_path / "bench.json"
-    result = run("bench", "kepler", "--easy", "2000", "--hard", "500", "--hyperbolic", "500", "--reference", "20",
-                 "--repeats", "1", "--output", str(target))
+    result = run(
+        "bench",
+        "kepler",
+        "--easy",
+        "2000",
+        "--hard",
+        "500",
+        "--hyperbolic",
+        "500",
+        "--reference",
+        "20",
+        "--repeats",
+        "1",
+        "--output",
+        str(target),
+    )
     assert result.exit_code == 0, result.output
     rows = json.loads(target.read_text())
     orbits_rows = [r for r in rows if r["method"] == "orbits"]

@@ -3,12 +3,12 @@
 import math
 
 import mpmath
+import mpref
 import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-import mpref
 from orbits.core import anomalies
 from orbits.errors import OrbitDomainError
 

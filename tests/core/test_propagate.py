@@ -2,10 +2,10 @@
 
 import math
 
+import mpref
 import numpy as np
 import pytest
 
-import mpref
 from orbits.core import elements
 from orbits.core.propagate import propagate, stumpff
 from orbits.errors import DegenerateOrbitError, OrbitDomainError
@@ -74,7 +74,10 @@ def test_conserves_energy_angular_momentum_and_eccentricity_vector():
     assert np.max(np.abs(energy / e0 - 1)) <= 1e-13
     h = np.cross(r, v)
     assert np.max(np.abs(h - np.cross(r0, v0))) <= 1e-13 * np.linalg.norm(np.cross(r0, v0))
-    assert np.max(np.abs(elements.eccentricity_vector(r, v, MU_EARTH) - elements.eccentricity_vector(r0, v0, MU_EARTH))) <= 1e-13
+    assert (
+        np.max(np.abs(elements.eccentricity_vector(r, v, MU_EARTH) - elements.eccentricity_vector(r0, v0, MU_EARTH)))
+        <= 1e-13
+    )
 
 
 def test_forward_then_back_returns_home():

@@ -99,5 +99,7 @@ def test_earth_year_from_keplers_third_law():
 def test_circular_orbit_quantities():
     r = 7e6
     assert math.isclose(twobody.circular_angular_velocity(r, MU) * r, twobody.circular_speed(r, MU), rel_tol=1e-15)
-    assert math.isclose(twobody.period(r, 0.0, MU) * twobody.circular_angular_velocity(r, MU), 2 * math.pi, rel_tol=1e-15)
+    assert math.isclose(
+        twobody.period(r, 0.0, MU) * twobody.circular_angular_velocity(r, MU), 2 * math.pi, rel_tol=1e-15
+    )
     assert math.isclose(twobody.potential_energy(r, MU, 2.0), -2 * MU / r, rel_tol=0)

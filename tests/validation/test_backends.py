@@ -50,7 +50,7 @@ def kepler_reference(r0, v0, mu, times, digits: int = 30) -> np.ndarray:
             mean = n * mpmath.mpf(float(t))
             turns = mpmath.floor(mean / (2 * mpmath.pi))
             m = mean - 2 * mpmath.pi * turns
-            de = mpmath.findroot(lambda x: x - ecos * mpmath.sin(x) + esin * (1 - mpmath.cos(x)) - m, m)
+            de = mpmath.findroot(lambda x, m=m: x - ecos * mpmath.sin(x) + esin * (1 - mpmath.cos(x)) - m, m)
             f = 1 - a / rn * (1 - mpmath.cos(de))
             g = mpmath.mpf(float(t)) - (de + 2 * mpmath.pi * turns - mpmath.sin(de)) / n
             out.append([float(f * p + g * q) for p, q in zip(r0, v0)])
@@ -59,15 +59,21 @@ def kepler_reference(r0, v0, mu, times, digits: int = 30) -> np.ndarray:
 
 def circular_problem(times, central_gm: float = 1.0) -> NBodyProblem:
     """Central mass at rest at the origin and a test particle on the unit circle in the xy plane."""
-    return NBodyProblem(gm=[central_gm, 0.0], positions=[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]],
-                        velocities=[[0.0, 0.0, 0.0], [0.0, math.sqrt(central_gm), 0.0]], n_active=1, times=times)
+    return NBodyProblem(
+        gm=[central_gm, 0.0],
+        positions=[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]],
+        velocities=[[0.0, 0.0, 0.0], [0.0, math.sqrt(central_gm), 0.0]],
+        n_active=1,
+        times=times,
+    )
 
 
 def rotation(inclination: float, node: float) -> np.ndarray:
     """Rotation taking the xy plane to a plane of the given inclination and ascending node."""
     ci, si, cn, sn = math.cos(inclination), math.sin(inclination), math.cos(node), math.sin(node)
     return np.array([[cn, -sn, 0.0], [sn, cn, 0.0], [0.0, 0.0, 1.0]]) @ np.array(
-        [[1.0, 0.0, 0.0], [0.0, ci, -si], [0.0, si, ci]])
+        [[1.0, 0.0, 0.0], [0.0, ci, -si], [0.0, si, ci]]
+    )
 
 
 def eccentric_binary(times) -> NBodyProblem:
@@ -85,10 +91,13 @@ def eccentric_binary(times) -> NBodyProblem:
 
 def three_body(times) -> NBodyProblem:
     """Star and two non-crossing eccentric, mutually inclined planets (a ~ 1.1 and ~ 2.4)."""
-    return NBodyProblem(gm=[1.0, 1e-3, 3e-4],
-                        positions=[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, -2.5, 0.1]],
-                        velocities=[[0.0, 0.0, 0.0], [0.0, 1.05, 0.02], [0.97 * math.sqrt(0.4), 0.0, 0.0]],
-                        n_active=3, times=times)
+    return NBodyProblem(
+        gm=[1.0, 1e-3, 3e-4],
+        positions=[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, -2.5, 0.1]],
+        velocities=[[0.0, 0.0, 0.0], [0.0, 1.05, 0.02], [0.97 * math.sqrt(0.4), 0.0, 0.0]],
+        n_active=3,
+        times=times,
+    )
 
 
 def energy(gm, positions, velocities) -> np.ndarray:
@@ -132,8 +141,12 @@ def test_eccentric_binary_matches_mpmath_kepler(config):
     problem = eccentric_binary(times)
     result = run(config, problem)
     gm = problem.gm
-    rel = kepler_reference(problem.positions[1] - problem.positions[0],
-                           problem.velocities[1] - problem.velocities[0], gm.sum(), result.times)
+    rel = kepler_reference(
+        problem.positions[1] - problem.positions[0],
+        problem.velocities[1] - problem.velocities[0],
+        gm.sum(),
+        result.times,
+    )
     com = (gm @ problem.positions + np.outer(result.times, gm @ problem.velocities)) / gm.sum()
     expected = np.stack([com - gm[1] / gm.sum() * rel, com + gm[0] / gm.sum() * rel], axis=1)
     scale = np.linalg.norm(rel, axis=-1)[:, None]
@@ -161,12 +174,15 @@ def test_test_particle_does_not_perturb_massive_bodies(config):
     """(d) Adding a massless particle leaves the massive trajectories unchanged; a 1e-9 mass visibly does not."""
     times = np.linspace(0.0, 10 * TWO_PI, 21)
     base = three_body(times)
-    pair = NBodyProblem(gm=base.gm[:2], positions=base.positions[:2], velocities=base.velocities[:2], n_active=2,
-                        times=times)
-    with_particle = NBodyProblem(gm=[1.0, 1e-3, 0.0], positions=base.positions, velocities=base.velocities,
-                                 n_active=2, times=times)
-    with_small_mass = NBodyProblem(gm=[1.0, 1e-3, 1e-9], positions=base.positions, velocities=base.velocities,
-                                   n_active=3, times=times)
+    pair = NBodyProblem(
+        gm=base.gm[:2], positions=base.positions[:2], velocities=base.velocities[:2], n_active=2, times=times
+    )
+    with_particle = NBodyProblem(
+        gm=[1.0, 1e-3, 0.0], positions=base.positions, velocities=base.velocities, n_active=2, times=times
+    )
+    with_small_mass = NBodyProblem(
+        gm=[1.0, 1e-3, 1e-9], positions=base.positions, velocities=base.velocities, n_active=3, times=times
+    )
     alone = run(config, pair).positions
     beside_particle = run(config, with_particle).positions[:, :2]
     beside_mass = run(config, with_small_mass).positions[:, :2]
@@ -241,8 +257,9 @@ def test_results_record_backend_metadata():
 
 def test_heyoka_raises_on_failed_propagation():
     """A collision (coincident bodies) makes heyoka stop with err_nf_state, reported as RuntimeError."""
-    problem = NBodyProblem(gm=[1.0, 1.0], positions=np.zeros((2, 3)), velocities=np.zeros((2, 3)), n_active=2,
-                           times=[1.0])
+    problem = NBodyProblem(
+        gm=[1.0, 1.0], positions=np.zeros((2, 3)), velocities=np.zeros((2, 3)), n_active=2, times=[1.0]
+    )
     with pytest.raises(RuntimeError, match="err_nf_state"):
         _heyoka.integrate(problem)
 
@@ -252,38 +269,49 @@ def test_registry_flags_and_lazy_availability():
     heyoka = pytest.importorskip("heyoka")
     assert backends.BACKENDS["rebound"].integrators == _rebound.INTEGRATORS
     assert backends.BACKENDS["heyoka"].supports_extended_precision == (
-        hasattr(heyoka, "taylor_adaptive_ldbl") or hasattr(heyoka, "taylor_adaptive_f128"))
+        hasattr(heyoka, "taylor_adaptive_ldbl") or hasattr(heyoka, "taylor_adaptive_f128")
+    )
     assert all(info.supports_test_particles for info in backends.BACKENDS.values())
-    probe = ("import sys; from orbits.validate import backends; "
-             "assert backends.available('rebound') and backends.available('heyoka'); "
-             "assert 'rebound' not in sys.modules and 'heyoka' not in sys.modules")
+    probe = (
+        "import sys; from orbits.validate import backends; "
+        "assert backends.available('rebound') and backends.available('heyoka'); "
+        "assert 'rebound' not in sys.modules and 'heyoka' not in sys.modules"
+    )
     subprocess.run([sys.executable, "-c", probe], check=True)
 
 
 def _problem(**changes) -> NBodyProblem:
     """A valid two-body problem with some fields replaced."""
-    fields = {"gm": [1.0, 0.0], "positions": [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]],
-              "velocities": [[0.0, 0.0, 0.0], [0.0, 1.0, 0.0]], "n_active": 1, "times": [0.0, 1.0, 2.0]}
+    fields = {
+        "gm": [1.0, 0.0],
+        "positions": [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]],
+        "velocities": [[0.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+        "n_active": 1,
+        "times": [0.0, 1.0, 2.0],
+    }
     return NBodyProblem(**{**fields, **changes})
 
 
-@pytest.mark.parametrize(("changes", "fragment"), [
-    ({"gm": [1.0]}, "N >= 2"),
-    ({"gm": [[1.0, 0.0]]}, "expected (N,)"),
-    ({"positions": [[0.0, 0.0], [1.0, 0.0]]}, "positions has shape (2, 2); expected (2, 3)"),
-    ({"velocities": [[0.0, 0.0, 0.0], [math.nan, 1.0, 0.0]]}, "velocities[1, 0] = nan is not finite"),
-    ({"gm": [-1.0, 0.0]}, "gm[0] = -1.0 but body 0 is active"),
-    ({"gm": [1.0, 0.0], "n_active": 2}, "active bodies need gm > 0"),
-    ({"gm": [1.0, 1e-3]}, "test particles need gm = 0"),
-    ({"n_active": 0}, "n_active = 0 must be an integer in [1, N = 2]"),
-    ({"n_active": 1.5}, "n_active = 1.5 is not an integer"),
-    ({"n_active": True}, "n_active = True must be an integer"),
-    ({"times": []}, "non-empty"),
-    ({"times": [-1.0, 1.0]}, "times[0] = -1.0 is negative"),
-    ({"times": [0.0, 1.0, 1.0]}, "not strictly increasing at index 2"),
-    ({"times": [0.0, math.inf]}, "times[1] = inf is not finite"),
-    ({"times": "soon"}, "times cannot be read as a float64 array"),
-])
+@pytest.mark.parametrize(
+    ("changes", "fragment"),
+    [
+        ({"gm": [1.0]}, "N >= 2"),
+        ({"gm": [[1.0, 0.0]]}, "expected (N,)"),
+        ({"positions": [[0.0, 0.0], [1.0, 0.0]]}, "positions has shape (2, 2); expected (2, 3)"),
+        ({"velocities": [[0.0, 0.0, 0.0], [math.nan, 1.0, 0.0]]}, "velocities[1, 0] = nan is not finite"),
+        ({"gm": [-1.0, 0.0]}, "gm[0] = -1.0 but body 0 is active"),
+        ({"gm": [1.0, 0.0], "n_active": 2}, "active bodies need gm > 0"),
+        ({"gm": [1.0, 1e-3]}, "test particles need gm = 0"),
+        ({"n_active": 0}, "n_active = 0 must be an integer in [1, N = 2]"),
+        ({"n_active": 1.5}, "n_active = 1.5 is not an integer"),
+        ({"n_active": True}, "n_active = True must be an integer"),
+        ({"times": []}, "non-empty"),
+        ({"times": [-1.0, 1.0]}, "times[0] = -1.0 is negative"),
+        ({"times": [0.0, 1.0, 1.0]}, "not strictly increasing at index 2"),
+        ({"times": [0.0, math.inf]}, "times[1] = inf is not finite"),
+        ({"times": "soon"}, "times cannot be read as a float64 array"),
+    ],
+)
 def test_problem_validation_messages(changes, fragment):
     """(f) Invalid problems raise OrbitDomainError (a ValueError) naming the offending value."""
     with pytest.raises(OrbitDomainError) as info:
@@ -302,17 +330,20 @@ def test_problem_is_frozen_float64_copy():
         problem.times[0] = 3.0
 
 
-@pytest.mark.parametrize(("call", "fragment"), [
-    (lambda p: _rebound.integrate(p, integrator="whfast"), "needs a step: pass dt"),
-    (lambda p: _rebound.integrate(p, dt=0.1), "dt = 0.1 is a WHFast setting"),
-    (lambda p: _rebound.integrate(p, integrator="mercurius"), "'mercurius' is not offered"),
-    (lambda p: _rebound.integrate(p, integrator="whfast", dt=-1.0), "dt = -1.0 must be finite and > 0"),
-    (lambda p: _rebound.integrate(p, integrator="whfast", dt=5.0), "both round to step 0"),
-    (lambda p: _rebound.integrate(p, epsilon=0.0), "epsilon = 0.0 must be finite and > 0"),
-    (lambda p: _heyoka.integrate(p, tol=0.0), "tol = 0.0 must be finite and > 0"),
-    (lambda p: backends.integrate("mercury6", p), "backend = 'mercury6' is unknown"),
-    (lambda p: backends.available("mercury6"), "choose one of ['heyoka', 'rebound']"),
-])
+@pytest.mark.parametrize(
+    ("call", "fragment"),
+    [
+        (lambda p: _rebound.integrate(p, integrator="whfast"), "needs a step: pass dt"),
+        (lambda p: _rebound.integrate(p, dt=0.1), "dt = 0.1 is a WHFast setting"),
+        (lambda p: _rebound.integrate(p, integrator="mercurius"), "'mercurius' is not offered"),
+        (lambda p: _rebound.integrate(p, integrator="whfast", dt=-1.0), "dt = -1.0 must be finite and > 0"),
+        (lambda p: _rebound.integrate(p, integrator="whfast", dt=5.0), "both round to step 0"),
+        (lambda p: _rebound.integrate(p, epsilon=0.0), "epsilon = 0.0 must be finite and > 0"),
+        (lambda p: _heyoka.integrate(p, tol=0.0), "tol = 0.0 must be finite and > 0"),
+        (lambda p: backends.integrate("mercury6", p), "backend = 'mercury6' is unknown"),
+        (lambda p: backends.available("mercury6"), "choose one of ['heyoka', 'rebound']"),
+    ],
+)
 def test_adapter_setting_errors(call, fragment):
     """(f) Bad adapter settings raise OrbitDomainError with a message naming the setting."""
     with pytest.raises(OrbitDomainError) as info:

@@ -1,0 +1,38 @@
+"""Options and error handling shared by every command (imports typer only, for a fast --help)."""
+
+import functools
+import sys
+from enum import StrEnum
+from typing import Annotated
+
+import typer
+
+
+class Format(StrEnum):
+    table = "table"
+    json = "json"
+
+
+FormatOption = Annotated[Format, typer.Option("--format", help="table or json ({name: {value, unit}})")]
+OnlyOption = Annotated[
+    str | None, typer.Option("--only", help="comma-separated quantity names, e.g. period,semi_major_axis")
+]
+
+
+def reports_errors(command):
+    """Turn the library's input errors into one line on stderr and exit status 2."""
+
+    @functools.wraps(command)
+    def wrapper(*args, **kwargs):
+        import astropy.units as u
+
+        from orbits.errors import OrbitsError
+
+        try:
+            return command(*args, **kwargs)
+        except (OrbitsError, ValueError, TypeError, KeyError, u.UnitsError, typer.BadParameter) as err:
+            message = err.format_message() if isinstance(err, typer.BadParameter) else str(err).strip("'\"")
+            print(f"orbits: error: {message}", file=sys.stderr)
+            raise typer.Exit(2) from None
+
+    return wrapper
