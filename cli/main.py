@@ -5,7 +5,7 @@ astropy and the backends are imported inside the commands, so `orbits --help` st
 """
 
 import typer
-from orbits_cli.commands import bench, info, kepler, orbit
+from orbits_cli.commands import bench, info, kepler, orbit, validate
 from orbits_cli.options import reports_errors
 
 app = typer.Typer(
@@ -16,6 +16,7 @@ app = typer.Typer(
 bench_app = typer.Typer(help="Benchmarks: throughput and accuracy against the peers installed.", no_args_is_help=True)
 app.add_typer(bench_app, name="bench")
 
+app.command("validate")(reports_errors(validate.command))
 app.command("orbit")(reports_errors(orbit.command))
 app.command("kepler")(reports_errors(kepler.command))
 app.command("info")(reports_errors(info.command))

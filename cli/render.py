@@ -4,6 +4,7 @@ import json
 
 import numpy as np
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 
@@ -40,3 +41,50 @@ def emit(title, quantities, fmt):
         print(to_json(quantities))
     else:
         table(title, quantities)
+
+
+def _number(x):
+    return "-" if x is None else f"{x:.3g}"
+
+
+def _wide_console():
+    """A console as wide as the terminal, or 140 columns when the output is piped to a file."""
+    console = Console()
+    return console if console.is_terminal else Console(width=140)
+
+
+def validation_report(data):
+    """Print a validation report (the dict of ValidationReport.to_dict) as one table per scene."""
+    console = _wide_console()
+    for scene in data["scenes"]:
+        backends = list(scene["wall_time_s"])[1:]
+        grid = Table(title=f"{scene['name']}: {scene['description']}", title_justify="left")
+        grid.add_column("check", style="cyan", no_wrap=True, min_width=30)
+        grid.add_column("analytic", justify="right", no_wrap=True)
+        for name in backends:
+            grid.add_column(f"{name} error", justify="right", no_wrap=True)
+        grid.add_column("ulps", justify="right", no_wrap=True)
+        grid.add_column("tolerance", justify="right", no_wrap=True)
+        grid.add_column("pass", no_wrap=True)
+        for check in scene["checks"]:
+            ulps = [check["ulps"][b] for b in backends if check["ulps"][b] is not None]
+            grid.add_row(
+                escape(check["quantity"] + (f" ({check['unit']})" if check["unit"] else "")),
+                _number(check["analytic"]),
+                *(_number(check["errors"][b]) for b in backends),
+                " / ".join(f"{x:.3g}" for x in ulps) or "-",
+                f"{check['tolerance']:.0e} {check['kind'].split()[0][:3]}",
+                "[green]yes[/green]" if check["passed"] else "[red]NO[/red]",
+            )
+        console.print(grid)
+        setup = scene["setup_time_s"]
+        times = ", ".join(
+            f"{k} {v * 1e3:.1f} ms" + (f" (+ setup {setup[k] * 1e3:.1f} ms)" if k in setup else "")
+            for k, v in scene["wall_time_s"].items()
+        )
+        console.print(f"  wall time: {times}")
+        for name in backends:
+            settings = ", ".join(f"{k}={v}" for k, v in scene["settings"][name].items())
+            console.print(escape(f"  {name} {scene['versions'][name]}: {settings}; {scene['time_modes'][name]}"))
+    verdict = "[green]all checks passed[/green]" if data["passed"] else "[red]some checks FAILED[/red]"
+    console.print(f"\n{verdict} ({len(data['scenes'])} scenes)")

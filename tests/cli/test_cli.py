@@ -111,3 +111,31 @@ def test_bench_kepler_small_run_writes_json_atomically(tmp_path):
     assert {r["dataset"] for r in orbits_rows} == {"easy", "hard", "hyperbolic"}
     assert all(r["max_ulp"] <= 4 for r in orbits_rows)
     assert [p.name for p in tmp_path.iterdir()] == ["bench.json"]  # no temporary file left behind
+
+
+def test_validate_default_runs_every_builtin_scene_and_writes_json(tmp_path):
+    target = tmp_path / "report.json"
+    result = run("validate", "--output", str(target))
+    assert result.exit_code == 0, result.output
+    assert "all checks passed" in result.stdout
+    data = json.loads(target.read_text())
+    assert data["passed"] is True and len(data["scenes"]) >= 5
+    first = data["scenes"][0]
+    assert {"rebound", "heyoka"} <= set(first["versions"]) and "analytic" in first["wall_time_s"]
+
+
+def test_validate_exits_1_when_a_check_fails(tmp_path):
+    scene_file = tmp_path / "strict.toml"
+    scene_file.write_text(
+        'name = "strict"\nasks = ["positions"]\n[time]\nperiods = 2\noutputs = 4\n[tolerance]\npositions = 1e-30\n'
+        '[[bodies]]\nname = "Earth"\nbody = "Earth"\n[[bodies]]\nname = "sat"\ntest_particle = true\n'
+        'orbit = { primary = "Earth", a = "8000 km", e = 0.1 }\n'
+    )
+    result = run("validate", str(scene_file), "--backend", "rebound", "--format", "json")
+    assert result.exit_code == 1
+    assert json.loads(result.stdout)["passed"] is False
+
+
+def test_validate_bad_scene_exits_2_before_running(tmp_path):
+    result = run("validate", str(tmp_path / "nope.toml"))
+    assert result.exit_code == 2 and "no such scene file" in result.stderr

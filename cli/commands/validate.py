@@ -1,0 +1,62 @@
+"""`orbits validate`: the main job. Predict each scene analytically, integrate it with rebound and heyoka,
+and report the differences, the run times and the settings; exit status 1 if any check fails."""
+
+from typing import Annotated
+
+import typer
+
+from orbits_cli.options import Format, FormatOption
+
+
+def command(
+    scenes: Annotated[
+        list[str] | None, typer.Argument(metavar="[SCENE]...", help="built-in scene names or .toml/.json files")
+    ] = None,
+    backend: Annotated[str, typer.Option(help="comma-separated backends")] = "rebound,heyoka",
+    output: Annotated[str | None, typer.Option(help="also write the JSON report to this file (atomically)")] = None,
+    fmt: FormatOption = Format.table,
+):
+    """Cross-check the analytic answers of the built-in scenes (or the given ones) against N-body codes."""
+    import json
+    import sys
+
+    from orbits import scene as scene_module
+    from orbits.io import write_atomic
+    from orbits.validate import backends
+    from orbits.validate.run import validate
+
+    names = scenes or scene_module.builtin_names()
+    loaded = [scene_module.load(name) for name in names]  # every scene is checked before anything runs
+    chosen = [b.strip() for b in backend.split(",") if b.strip()]
+    for name in chosen:
+        if not backends.available(name):
+            raise typer.BadParameter(f"--backend: {name} is not installed (pip install {name})")
+    report = _run(validate, loaded, chosen, show_progress=fmt == Format.table and sys.stdout.isatty())
+    data = report.to_dict()
+    if output:
+        write_atomic(output, json.dumps(data, indent=2) + "\n")
+    if fmt == Format.json:
+        print(json.dumps(data, indent=2))
+    else:
+        from orbits_cli.render import validation_report
+
+        validation_report(data)
+    if not report.passed:
+        raise typer.Exit(1)
+
+
+def _run(validate, scenes, backend_names, show_progress):
+    if not show_progress:
+        return validate(scenes, backend_names)
+    from rich.progress import Progress
+
+    with Progress(transient=True) as progress:
+        task = progress.add_task("validating", total=len(scenes))
+
+        def advance(name):
+            progress.update(task, description=f"validating {name}")
+            progress.advance(task, 0)
+
+        report = validate(scenes, backend_names, progress=advance)
+        progress.update(task, completed=len(scenes))
+    return report
