@@ -19,6 +19,24 @@ OnlyOption = Annotated[
 ]
 
 
+PlotOption = Annotated[
+    str | None, typer.Option("--plot", help="also draw a picture to this .png, .svg or .pdf file (atomically)")
+]
+
+
+def save_plot(draw, path):
+    """Draw with `draw()` -> (fig, ax) on a non-interactive backend and save to `path` atomically."""
+    try:
+        import matplotlib
+    except ImportError:
+        raise typer.BadParameter("--plot needs matplotlib: pip install 'orbits[plot]'") from None
+    matplotlib.use("Agg")
+    from orbits.plot import save
+
+    fig, _ = draw()
+    save(fig, path)
+
+
 def reports_errors(command):
     """Turn the library's input errors into one line on stderr and exit status 2."""
 

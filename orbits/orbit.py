@@ -377,6 +377,19 @@ class Orbit:
             self.mu << units.M3_PER_S2, r, v, mass=None if self.mass is None else self.mass << units.KG
         )
 
+    # ---- display --------------------------------------------------------------------------------
+    def __repr__(self):
+        if self.shape == ():
+            a = float(self.p) / ((1 - float(self.e)) * (1 + float(self.e))) if self.e != 1 else np.inf
+            return (f"Orbit(mu={float(self.mu):.6g} m3 / s2, a={a:.6g} m, e={float(self.e):.6g}, "
+                    f"i={np.degrees(float(self.inc)):.4f} deg, nu={np.degrees(float(self.nu)):.4f} deg)")
+        return f"Orbit(shape={self.shape}, e in [{self.e.min():.6g}, {self.e.max():.6g}])"
+
+    def _repr_html_(self):
+        from orbits.display import quantities_html
+
+        return quantities_html(repr(self), self.quantities())
+
     # ---- tables ---------------------------------------------------------------------------------
     def quantities(self, only=None):
         """{snake_case name: Quantity} of the section XXI quantities this orbit has (or `only` those)."""

@@ -3,7 +3,7 @@
 from typing import Annotated
 
 import typer
-from orbits_cli.options import Format, FormatOption, OnlyOption
+from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
 
 
 def command(
@@ -28,12 +28,18 @@ def command(
     mass: Annotated[str | None, typer.Option(help="orbiting body's mass, for U, K, E, L")] = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
+    plot: PlotOption = None,
 ):
     """Every section XXI quantity of an orbit, from elements, a state vector, or a named body."""
     from orbits_cli import params, render
 
     result, title = build(body_name, primary, a, p, q, e, inc, raan, argp, nu, r, v, mass)
-    render.emit(title, result.quantities(params.names(only)), fmt.value)
+    quantities = result.quantities(params.names(only))
+    if plot:
+        from orbits.plot import orbit_plane
+
+        save_plot(lambda: orbit_plane(result), plot)
+    render.emit(title, quantities, fmt.value)
 
 
 def build(body_name, primary, a, p, q, e, inc, raan, argp, nu, r, v, mass):

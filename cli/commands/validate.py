@@ -4,8 +4,7 @@ and report the differences, the run times and the settings; exit status 1 if any
 from typing import Annotated
 
 import typer
-
-from orbits_cli.options import Format, FormatOption
+from orbits_cli.options import Format, FormatOption, PlotOption, save_plot
 
 
 def command(
@@ -15,6 +14,7 @@ def command(
     backend: Annotated[str, typer.Option(help="comma-separated backends")] = "rebound,heyoka",
     output: Annotated[str | None, typer.Option(help="also write the JSON report to this file (atomically)")] = None,
     fmt: FormatOption = Format.table,
+    plot: PlotOption = None,
 ):
     """Cross-check the analytic answers of the built-in scenes (or the given ones) against N-body codes."""
     import json
@@ -35,6 +35,10 @@ def command(
     data = report.to_dict()
     if output:
         write_atomic(output, json.dumps(data, indent=2) + "\n")
+    if plot:
+        from orbits.plot import validation_residuals
+
+        save_plot(lambda: validation_residuals(report), plot)
     if fmt == Format.json:
         print(json.dumps(data, indent=2))
     else:

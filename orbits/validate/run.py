@@ -95,6 +95,8 @@ class SceneReport:
     versions: dict
     time_modes: dict
     code_units: CodeUnits
+    residual_times: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    residuals: dict = field(default_factory=dict)  # backend -> |dr| / r_max at each residual time
 
     @property
     def passed(self):
@@ -110,6 +112,15 @@ class ValidationReport:
     @property
     def passed(self):
         return all(scene.passed for scene in self.scenes)
+
+    def __repr__(self):
+        verdict = "passed" if self.passed else "FAILED"
+        return f"ValidationReport({len(self.scenes)} scenes: {', '.join(s.name for s in self.scenes)}; {verdict})"
+
+    def _repr_html_(self):
+        from orbits.display import validation_html
+
+        return validation_html(self)
 
     def to_dict(self):
         """JSON-ready dictionary of the whole report."""
@@ -130,6 +141,8 @@ def _scene_dict(report):
         "versions": report.versions, "time_modes": report.time_modes,
         "code_units": {"length_m": report.code_units.length, "gm_m3_s2": report.code_units.gm,
                        "time_s": report.code_units.time},
+        "residual_times_s": report.residual_times.tolist(),
+        "residuals": {name: series.tolist() for name, series in report.residuals.items()},
     }
 
 
@@ -171,6 +184,7 @@ def validate_scene(scene, backend_names=("rebound", "heyoka"), settings=None):
         result = backends.integrate(name, units.problem(scene, grid), **settings[name])
         runs[name] = (result, *units.states(result))
     checks = _compare(scene, prediction, grid, extra, runs, analytic_inv)
+    residuals = _residuals(scene, prediction, grid, runs)
     return SceneReport(
         name=scene.name, description=scene.description, checks=checks,
         wall_times={"analytic": prediction_time, **{n: r[0].wall_time for n, r in runs.items()}},
@@ -179,7 +193,19 @@ def validate_scene(scene, backend_names=("rebound", "heyoka"), settings=None):
         versions={n: r[0].version for n, r in runs.items()},
         time_modes={n: r[0].time_mode for n, r in runs.items()},
         code_units=units,
+        residual_times=scene.times if residuals else np.zeros(0),
+        residuals=residuals,
     )
+
+
+def _residuals(scene, prediction, grid, runs):
+    """{backend: (K,) max over bodies of |dr| / r_max at each output time} when positions were asked."""
+    if prediction.positions is None:
+        return {}
+    at_scene = np.array([_nearest(grid, t) for t in scene.times])
+    scale = predict.length_scale(scene, prediction.positions)
+    return {n: np.max(np.linalg.norm(r[2][at_scene] - prediction.positions, axis=-1), axis=-1) / scale
+            for n, r in runs.items()}
 
 
 def _compare(scene, prediction, grid, extra, runs, analytic_inv):
@@ -187,9 +213,7 @@ def _compare(scene, prediction, grid, extra, runs, analytic_inv):
     at_scene = np.array([_nearest(grid, t) for t in scene.times])
     checks = []
     if prediction.positions is not None:
-        scale = predict.length_scale(scene, prediction.positions)
-        errors = {n: float(np.max(np.linalg.norm(r[2][at_scene] - prediction.positions, axis=-1)) / scale)
-                  for n, r in runs.items()}
+        errors = {n: float(np.max(series)) for n, series in _residuals(scene, prediction, grid, runs).items()}
         label = "positions |dr|/r_max"
         checks.append(Check(label, "", None, errors, errors, tol["positions"], "relative error"))
     for i, period in prediction.periods.items():

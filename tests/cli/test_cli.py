@@ -139,3 +139,15 @@ def test_validate_exits_1_when_a_check_fails(tmp_path):
 def test_validate_bad_scene_exits_2_before_running(tmp_path):
     result = run("validate", str(tmp_path / "nope.toml"))
     assert result.exit_code == 2 and "no such scene file" in result.stderr
+
+
+def test_plot_option_writes_the_picture(tmp_path):
+    picture = tmp_path / "earth.png"
+    result = run("orbit", "Earth", "--only", "period", "--plot", str(picture))
+    assert result.exit_code == 0, result.output
+    assert picture.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    residuals = tmp_path / "residuals.svg"
+    assert run("validate", "flyby", "--plot", str(residuals)).exit_code == 0
+    assert residuals.read_text().lstrip().startswith("<?xml")
+    bad = run("orbit", "Earth", "--plot", str(tmp_path / "x.gif"))
+    assert bad.exit_code == 2 and ".png, .svg or .pdf" in bad.stderr

@@ -1,0 +1,112 @@
+"""Pictures: orbits in their plane and validation residuals. matplotlib is imported only when drawing.
+
+Every function draws on a given Axes (or a new Figure) and returns (fig, ax), so the result can be
+restyled; axis labels carry units. `save(fig, path)` writes PNG, SVG or PDF atomically.
+"""
+
+import io
+
+import astropy.units as u
+import numpy as np
+
+from orbits.io import write_atomic
+
+
+def _axes(ax):
+    import matplotlib.pyplot as plt
+
+    if ax is None:
+        fig, ax = plt.subplots(figsize=(6.4, 5.6), layout="constrained")
+        return fig, ax
+    return ax.figure, ax
+
+
+def _length_unit(size_m):
+    """AU for orbits larger than 0.1 AU, km otherwise."""
+    return u.AU if size_m > 0.1 * u.AU.to(u.m) else u.km
+
+
+def _conic_points(p, e, r_max, samples=721):
+    """(x, y) in the perifocal frame (m) of the drawn part of the conic: the whole ellipse, or the arc of
+    an open orbit within r_max of the star."""
+    if e < 1:
+        nu = np.linspace(-np.pi, np.pi, samples)
+    else:
+        # 1 + e cos nu = p / r_max gives the true anomaly where the arc leaves the picture
+        limit = np.arccos(np.clip((p / r_max - 1) / e, -1, 1))
+        nu = np.linspace(-limit, limit, samples)
+    r = p / (1 + e * np.cos(nu))
+    return r * np.cos(nu), r * np.sin(nu)
+
+
+def orbit_plane(orbit, times=None, ax=None, unit=None, label=None):
+    """Draw a single Orbit in its own plane (perifocal frame: periapsis along +x, star at the origin).
+
+    Marks the star (focus), periapsis, apoapsis, the centre and empty focus of an ellipse, the body's
+    current position, and its positions at `times` (time Quantity array) later, when given.
+    """
+    if orbit.shape != ():
+        raise ValueError(f"orbit_plane draws one orbit; this Orbit holds {orbit.shape} orbits: index it first")
+    fig, ax = _axes(ax)
+    p, e = float(orbit.p), float(orbit.e)
+    q = p / (1 + e)
+    nus = _true_anomalies(orbit, times)
+    radii = p / (1 + e * np.cos(nus))
+    r_max = max(10 * q, 1.3 * radii.max())
+    unit = unit or _length_unit(p / (1 - e) if e < 1 else r_max)
+    scale = u.m.to(unit)
+    x, y = _conic_points(p, e, r_max)
+    ax.plot(x * scale, y * scale, color="C0", lw=1.5, label=label or f"orbit, e = {e:.6g}")
+    ax.plot(0, 0, marker="*", ms=14, color="orange", ls="none", label="star (focus)")
+    ax.plot(q * scale, 0, marker="o", color="C3", ls="none", label="periapsis")
+    if e < 1:
+        c = e * p / (1 - e * e)
+        ax.plot(-p / (1 - e) * scale, 0, marker="o", color="C2", ls="none", label="apoapsis")
+        ax.plot(-c * scale, 0, marker="+", ms=10, color="gray", ls="none", label="centre")
+        ax.plot(-2 * c * scale, 0, marker="x", color="gray", ls="none", label="empty focus")
+    _mark_positions(ax, nus, radii, scale)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(f"x toward periapsis [{unit.to_string()}]")
+    ax.set_ylabel(f"y [{unit.to_string()}]")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="best", fontsize="small")
+    return fig, ax
+
+
+def _true_anomalies(orbit, times):
+    """The body's true anomaly now, then at each of `times` later (rad)."""
+    later = [] if times is None else [float(orbit.at(t).nu) for t in np.atleast_1d(times)]
+    return np.array([float(orbit.nu), *later])
+
+
+def _mark_positions(ax, nus, radii, scale):
+    """The body now, and at the later times, as dots on the conic."""
+    x, y = radii * np.cos(nus) * scale, radii * np.sin(nus) * scale
+    ax.plot(x[0], y[0], marker="o", color="k", ls="none", label="body now")
+    if len(nus) > 1:
+        ax.plot(x[1:], y[1:], marker=".", color="k", ls="none", alpha=0.6, label="body at given times")
+
+
+def validation_residuals(report, ax=None):
+    """Position error |dr| / r_max against time, per scene and backend, on log axes (a ValidationReport)."""
+    fig, ax = _axes(ax)
+    for k, scene in enumerate(report.scenes):
+        for j, (backend, series) in enumerate(scene.residuals.items()):
+            times = scene.residual_times / scene.residual_times[-1]
+            shown = np.where(series > 0, series, np.nan)  # an exact match has no place on a log axis
+            ax.semilogy(times, shown, color=f"C{k}", ls=("-", "--", ":")[j % 3], label=f"{scene.name}: {backend}")
+    ax.set_xlabel("time / scene span [dimensionless]")
+    ax.set_ylabel("position error |dr| / r_max [dimensionless]")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(loc="best", fontsize="small", ncol=2)
+    return fig, ax
+
+
+def save(fig, path):
+    """Write the figure to `path` atomically; the format follows the suffix (.png, .svg or .pdf)."""
+    suffix = str(path).rsplit(".", 1)[-1].lower()
+    if suffix not in ("png", "svg", "pdf"):
+        raise ValueError(f"plot file {path!r} must end in .png, .svg or .pdf")
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format=suffix, dpi=150)
+    write_atomic(path, buffer.getvalue())

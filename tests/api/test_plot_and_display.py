@@ -1,0 +1,72 @@
+"""Pictures are tested for what they draw; notebook display for what it shows."""
+
+import astropy.units as u
+import matplotlib
+import numpy as np
+import pytest
+
+from orbits import Orbit, scene
+from orbits.plot import orbit_plane, save, validation_residuals
+from orbits.validate.run import validate
+
+matplotlib.use("Agg")
+
+
+def labels(ax):
+    return {line.get_label() for line in ax.get_lines()}
+
+
+def test_ellipse_in_its_plane_marks_foci_apsides_and_positions():
+    orbit = Orbit.from_elements("Sun", a=1 * u.AU, e=0.6, nu=40 * u.deg)
+    fig, ax = orbit_plane(orbit, times=[30, 60] * u.day)
+    assert {"star (focus)", "periapsis", "apoapsis", "centre", "empty focus", "body now",
+            "body at given times"} <= labels(ax)
+    assert "[AU]" in ax.get_xlabel() and "[AU]" in ax.get_ylabel()
+    curve = ax.get_lines()[0].get_xydata()
+    assert curve[:, 0].max() == pytest.approx(0.4, rel=1e-9)  # periapsis q = a (1 - e) on +x
+    assert curve[:, 0].min() == pytest.approx(-1.6, rel=1e-9)  # apoapsis at -a (1 + e)
+    apo = [line for line in ax.get_lines() if line.get_label() == "apoapsis"][0].get_xydata()[0]
+    assert tuple(apo) == pytest.approx((-1.6, 0.0))
+    later = [line for line in ax.get_lines() if line.get_label() == "body at given times"][0].get_xydata()
+    radii = np.hypot(later[:, 0], later[:, 1])
+    expected = [orbit.at(t).radius.to_value(u.AU) for t in [30, 60] * u.day]
+    np.testing.assert_allclose(radii, expected, rtol=1e-12)
+
+
+def test_hyperbola_is_drawn_around_the_encounter_in_km():
+    flyby = Orbit.from_elements("Earth", q=7000 * u.km, e=1.8, nu=-60 * u.deg)
+    _, ax = orbit_plane(flyby)
+    assert "[km]" in ax.get_xlabel() and "apoapsis" not in labels(ax)
+    curve = ax.get_lines()[0].get_xydata()
+    assert np.max(np.hypot(curve[:, 0], curve[:, 1])) == pytest.approx(70000, rel=1e-6)  # 10 q
+
+
+def test_orbit_plane_refuses_arrays_of_orbits():
+    with pytest.raises(ValueError, match="index it first"):
+        orbit_plane(Orbit.from_elements("Earth", a=[7000, 8000] * u.km, e=0.1))
+
+
+def test_validation_residuals_one_line_per_scene_and_backend(tmp_path):
+    report = validate([scene.load("circular"), scene.load("flyby")])
+    fig, ax = validation_residuals(report)
+    assert labels(ax) == {"circular: rebound", "circular: heyoka", "flyby: rebound", "flyby: heyoka"}
+    assert ax.get_yscale() == "log" and "dimensionless" in ax.get_ylabel()
+    top = max(np.nanmax(line.get_ydata()) for line in ax.get_lines())
+    assert 0 < top < 1e-10
+    for suffix in ("png", "svg", "pdf"):
+        save(fig, tmp_path / f"r.{suffix}")
+        assert (tmp_path / f"r.{suffix}").stat().st_size > 1000
+    with pytest.raises(ValueError, match=".png, .svg or .pdf"):
+        save(fig, tmp_path / "r.gif")
+
+
+def test_html_and_text_display():
+    orbit = Orbit.from_elements("Earth", a=7000 * u.km, e=0.1)
+    assert repr(orbit).startswith("Orbit(mu=3.986e+14 m3 / s2, a=7e+06 m, e=0.1")
+    page = orbit._repr_html_()
+    assert "<table>" in page and "period" in page and "<td style='text-align:left'>s</td>" in page
+    many = Orbit.from_elements("Earth", a=[7000, 8000] * u.km, e=0.1)
+    assert repr(many) == "Orbit(shape=(2,), e in [0.1, 0.1])"
+    report = validate([scene.load("flyby")], ("rebound",))
+    assert "flyby" in report._repr_html_() and "all checks passed" in report._repr_html_()
+    assert repr(report) == "ValidationReport(1 scenes: flyby; passed)"
