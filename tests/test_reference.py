@@ -3,9 +3,10 @@
 import math
 
 import mpmath
-import mpref
 import pytest
 from mpmath import mp, mpf
+
+import orbits.reference as mpref
 
 TINY = mpf(10) ** -45
 ONE_MINUS = 1 - 2**-53  # largest float below 1
