@@ -102,6 +102,39 @@ def validation_residuals(report, ax=None):
     return fig, ax
 
 
+def work_precision(rows, columns=3):
+    """Error against wall time (log-log), one panel per problem and one line per method (orbits.precision rows).
+
+    The closed-form answer is a star; runs whose error is zero sit on the bottom edge at 1e-17.
+    """
+    import matplotlib.pyplot as plt
+
+    problems = list(dict.fromkeys(r.problem for r in rows))
+    columns = min(columns, len(problems))
+    n_rows = -(-len(problems) // columns)
+    fig, axes = plt.subplots(n_rows, columns, figsize=(4.2 * columns + 2.2, 3.4 * n_rows), layout="constrained",
+                             squeeze=False)
+    methods = list(dict.fromkeys(r.method for r in rows))
+    for ax, problem in zip(axes.flat, problems):
+        for k, method in enumerate(methods):
+            runs = [r for r in rows if r.problem == problem and r.method == method and np.isfinite(r.error)]
+            if not runs:
+                continue
+            seconds = [max(r.seconds, 1e-6) for r in runs]
+            errors = [max(r.error, 1e-17) for r in runs]
+            style = dict(marker="*", ms=12, ls="none") if method == "orbits analytic" else dict(marker="o", ms=3)
+            ax.loglog(seconds, errors, color=f"C{k}", label=method, **style)
+        ax.set_title(problem, fontsize="medium")
+        ax.set_xlabel("wall time [s]")
+        ax.set_ylabel("position error / orbit size")
+        ax.grid(alpha=0.3, which="major")
+    for ax in list(axes.flat)[len(problems):]:
+        ax.set_visible(False)
+    handles, labels = axes.flat[0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="outside right upper", fontsize="small")
+    return fig, axes
+
+
 def save(fig, path):
     """Write the figure to `path` atomically; the format follows the suffix (.png, .svg or .pdf)."""
     suffix = str(path).rsplit(".", 1)[-1].lower()

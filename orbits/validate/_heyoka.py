@@ -31,20 +31,29 @@ COMPACT_MODE_MIN_BODIES = 4
 _CACHE: dict[tuple, object] = {}
 
 
-def integrate(problem: NBodyProblem, tol: float = 1e-16, high_accuracy: bool = True) -> NBodyResult:
+FP_TYPES = {"float64": np.float64, "long double": np.longdouble}
+
+
+def integrate(
+    problem: NBodyProblem, tol: float = 1e-16, high_accuracy: bool = True, fp_type: str = "float64"
+) -> NBodyResult:
     """Integrate ``problem`` with heyoka's adaptive Taylor method and return the states at ``problem.times``.
 
     ``tol`` is heyoka's relative/absolute error tolerance (it also sets the Taylor order); ``high_accuracy``
-    enables heyoka's compensated summation and extra-precise polynomial evaluation. Raises RuntimeError with
-    heyoka's outcome if the propagation does not reach the last time.
+    enables heyoka's compensated summation and extra-precise polynomial evaluation; ``fp_type`` "long double"
+    integrates in x87 extended precision (64-bit mantissa on x86-64), with the initial state and output
+    converted from and to float64. Raises RuntimeError with heyoka's outcome if the propagation does not
+    reach the last time.
     """
     import heyoka
 
     if not (np.isfinite(tol) and tol > 0.0):
         raise OrbitDomainError(f"tol = {tol} must be finite and > 0")
+    if fp_type not in FP_TYPES:
+        raise OrbitDomainError(f"fp_type = {fp_type!r} is not offered; choose one of {sorted(FP_TYPES)}")
     _follow_cache_dir(heyoka)
     compact_mode = problem.n_bodies >= COMPACT_MODE_MIN_BODIES
-    key = (problem.n_bodies, problem.n_active, float(tol), bool(high_accuracy), compact_mode)
+    key = (problem.n_bodies, problem.n_active, float(tol), bool(high_accuracy), compact_mode, fp_type)
     start = time.perf_counter()
     cache_hit = key in _CACHE
     if not cache_hit:
@@ -52,8 +61,10 @@ def integrate(problem: NBodyProblem, tol: float = 1e-16, high_accuracy: bool = T
     ta = copy.copy(_CACHE[key])
     setup_time = time.perf_counter() - start
     grid, skip = _grid(problem.times)
-    ta.state[:] = np.hstack([problem.positions, problem.velocities]).ravel()
-    ta.pars[:] = problem.gm[: problem.n_active]
+    dtype = FP_TYPES[fp_type]
+    grid = grid.astype(dtype)
+    ta.state[:] = np.hstack([problem.positions, problem.velocities]).ravel().astype(dtype)
+    ta.pars[:] = problem.gm[: problem.n_active].astype(dtype)
     start = time.perf_counter()
     outcome, *_, states = ta.propagate_grid(grid)
     wall_time = time.perf_counter() - start
@@ -62,13 +73,13 @@ def integrate(problem: NBodyProblem, tol: float = 1e-16, high_accuracy: bool = T
             f"heyoka propagate_grid stopped at t = {ta.time} with outcome {outcome}; "
             f"it must reach t = {grid[-1]} (outcome time_limit)"
         )
-    states = states[skip:].reshape(problem.times.size, problem.n_bodies, 6)
+    states = states[skip:].reshape(problem.times.size, problem.n_bodies, 6).astype(np.float64)
     settings = {
         "tol": float(tol),
         "high_accuracy": bool(high_accuracy),
         "order": ta.order,
         "compact_mode": compact_mode,
-        "fp_type": "float64",
+        "fp_type": fp_type,
         "cache_hit": cache_hit,
     }
     return NBodyResult(
@@ -97,17 +108,19 @@ def _follow_cache_dir(heyoka) -> None:
         heyoka.llvm_state.set_diskcache_path(path)
 
 
-def _compile(heyoka, n_bodies: int, n_active: int, tol: float, high_accuracy: bool, compact_mode: bool):
+def _compile(heyoka, n_bodies, n_active, tol, high_accuracy, compact_mode, fp_type):
     """Build the G = 1 N-body Taylor integrator whose active masses are runtime parameters par[0..n_active)."""
+    dtype = FP_TYPES[fp_type]
     masses = [heyoka.par[i] for i in range(n_active)]
     system = heyoka.model.nbody(n_bodies, masses=masses, Gconst=1.0)
     return heyoka.taylor_adaptive(
         system,
-        np.zeros(6 * n_bodies),
-        pars=np.zeros(n_active),
-        tol=tol,
+        np.zeros(6 * n_bodies, dtype=dtype),
+        pars=np.zeros(n_active, dtype=dtype),
+        tol=dtype(tol),
         high_accuracy=high_accuracy,
         compact_mode=compact_mode,
+        fp_type=dtype,
     )
 
 

@@ -20,7 +20,7 @@ import numpy as np
 from orbits.errors import OrbitDomainError
 from orbits.validate.problem import NBodyProblem, NBodyResult
 
-INTEGRATORS = ("ias15", "whfast")
+INTEGRATORS = ("ias15", "whfast", "bs")
 
 
 def integrate(
@@ -28,8 +28,9 @@ def integrate(
 ) -> NBodyResult:
     """Integrate ``problem`` with rebound and return the states at ``problem.times`` (WHFast: at steps x dt).
 
-    ``epsilon`` is the IAS15 accuracy parameter (ignored by WHFast); ``dt`` is the WHFast step, required for
-    WHFast and rejected for IAS15, which chooses its own steps.
+    ``epsilon`` is the accuracy parameter of IAS15, and the relative and absolute tolerance of the
+    Gragg-Bulirsch-Stoer integrator "bs" (ignored by WHFast); ``dt`` is the WHFast step, required for WHFast
+    and rejected by the adaptive integrators, which choose their own steps.
     """
     import rebound
 
@@ -39,10 +40,10 @@ def integrate(
         )
     start = time.perf_counter()
     sim = _simulation(rebound, problem)
-    if integrator == "ias15":
+    if integrator in ("ias15", "bs"):
         if dt is not None:
-            raise OrbitDomainError(f"dt = {dt} is a WHFast setting; IAS15 chooses its own steps (pass dt=None)")
-        settings = _configure_ias15(sim, epsilon)
+            raise OrbitDomainError(f"dt = {dt} is a WHFast setting; {integrator} chooses its own steps (pass dt=None)")
+        settings = _configure_ias15(sim, epsilon) if integrator == "ias15" else _configure_bs(sim, epsilon)
         setup_time = time.perf_counter() - start
         times, positions, velocities, wall_time = _run_ias15(sim, problem.times)
         time_mode = "exact finish time: integrate(t, exact_finish_time=1) lands sim.t on each requested time"
@@ -93,6 +94,17 @@ def _configure_ias15(sim, epsilon: float) -> dict:
     sim.integrator.adaptive_mode = "PRS23"
     sim.dt = 1e-3
     return {"epsilon": float(epsilon), "min_dt": 0.0, "adaptive_mode": "PRS23", "initial_dt": 1e-3}
+
+
+def _configure_bs(sim, epsilon: float) -> dict:
+    """Select the Gragg-Bulirsch-Stoer integrator with eps_rel = eps_abs = epsilon; return the settings."""
+    if not (np.isfinite(epsilon) and epsilon > 0.0):
+        raise OrbitDomainError(f"epsilon = {epsilon} must be finite and > 0")
+    sim.integrator = "bs"
+    sim.integrator.eps_rel = float(epsilon)
+    sim.integrator.eps_abs = float(epsilon)
+    sim.dt = 1e-3
+    return {"eps_rel": float(epsilon), "eps_abs": float(epsilon), "initial_dt": 1e-3}
 
 
 def _configure_whfast(sim, dt: float | None) -> dict:

@@ -35,7 +35,7 @@ BACKENDS: dict[str, BackendInfo] = {
         name="rebound",
         package="rebound",
         entry_point="orbits.validate._rebound:integrate",
-        integrators=("ias15", "whfast"),
+        integrators=("ias15", "whfast", "bs"),
         supports_test_particles=True,
         supports_extended_precision=False,
     ),
