@@ -1,0 +1,337 @@
+"""Every applicable row of shared/EDGE_CASES.md as one parametrised case: the exact value, or the exception
+type and a fragment of its message. Row numbers follow that file."""
+
+import math
+
+import astropy.units as u
+import numpy as np
+import pytest
+
+from orbits import Orbit, reference
+from orbits.core import anomalies, elements, kepler
+from orbits.core.propagate import propagate
+from orbits.errors import DegenerateOrbitError, OrbitDomainError
+
+NAN, INF = float("nan"), float("inf")
+
+
+def ulps_from(reference_value):
+    """A check: the result lies within 4 ulp of an mpmath reference value."""
+    return lambda x: float(reference.ulp_error(float(x), reference_value)) <= 4
+
+
+def raises(error, fragment):
+    return ("raises", error, fragment)
+
+
+def state(p, e, nu, inc=0.3):
+    return elements.elements_to_state(p, e, inc, 0.2, 0.4, nu, 1.0)
+
+
+ROWS = [
+    # Kepler equation and anomalies
+    (1, "elliptic solver at e = 1", lambda: kepler.eccentric_anomaly(0.5, 1.0), raises(OrbitDomainError, "Barker")),
+    (
+        1,
+        "dispatching solver routes e = 1 to Barker",
+        lambda: anomalies.true_from_mean(0.5, 1.0),
+        lambda nu: math.isclose(float(nu), 2 * math.atan(float(kepler.parabolic_anomaly(0.5))), rel_tol=1e-15),
+    ),
+    (2, "Barker W = 0", lambda: kepler.parabolic_anomaly(0.0), lambda d: d == 0.0),
+    (2, "Barker W = 2", lambda: kepler.parabolic_anomaly(2.0), ulps_from(reference.barker_D(2.0))),
+    (
+        3,
+        "e = 1 - 2**-53, M = 1e-10",
+        lambda: kepler.eccentric_anomaly(1e-10, 1 - 2**-53),
+        ulps_from(reference.kepler_E(1e-10, 1 - 2**-53)),
+    ),
+    (
+        4,
+        "e = 1 + 2**-52, M = 1e-3",
+        lambda: kepler.hyperbolic_anomaly(1e-3, 1 + 2**-52),
+        ulps_from(reference.kepler_H(1e-3, 1 + 2**-52)),
+    ),
+    (5, "e = -0.1", lambda: kepler.eccentric_anomaly(0.5, -0.1), raises(OrbitDomainError, "outside [0.0, 1.0)")),
+    (5, "e = -5", lambda: kepler.eccentric_anomaly(0.5, -5.0), raises(OrbitDomainError, "e = -5.0")),
+    (6, "e = -0.0 is 0", lambda: kepler.eccentric_anomaly(0.7, -0.0), lambda x: x == 0.7),
+    (7, "e = NaN", lambda: kepler.eccentric_anomaly(0.5, NAN), raises(OrbitDomainError, "not finite")),
+    (7, "e = inf", lambda: kepler.hyperbolic_anomaly(0.5, INF), raises(OrbitDomainError, "not finite")),
+    (8, "elliptic M = 0", lambda: kepler.eccentric_anomaly(0.0, 0.9), lambda x: x == 0.0),
+    (8, "true anomaly at M = 0", lambda: anomalies.true_from_mean(0.0, 0.9), lambda x: x == 0.0),
+    (9, "hyperbolic M = 0", lambda: kepler.hyperbolic_anomaly(0.0, 1.5), lambda x: x == 0.0),
+    (10, "M = -0.0 gives -0.0", lambda: kepler.eccentric_anomaly(-0.0, 0.5), lambda x: math.copysign(1, x) == -1),
+    (11, "M = 1e-20", lambda: kepler.eccentric_anomaly(1e-20, 0.5), ulps_from(reference.kepler_E(1e-20, 0.5))),
+    (11, "M = 1e-300", lambda: kepler.eccentric_anomaly(1e-300, 0.9), ulps_from(reference.kepler_E(1e-300, 0.9))),
+    (11, "M subnormal", lambda: kepler.eccentric_anomaly(5e-324, 0.5), ulps_from(reference.kepler_E(5e-324, 0.5))),
+    (
+        12,
+        "e = 1 - 1e-12, M = 1e-15",
+        lambda: kepler.eccentric_anomaly(1e-15, 1 - 1e-12),
+        ulps_from(reference.kepler_E(1e-15, 1 - 1e-12)),
+    ),
+    (13, "M = pi gives E = pi", lambda: kepler.eccentric_anomaly(math.pi, 0.999999), lambda x: x == math.pi),
+    (13, "M = pi gives nu = pi", lambda: anomalies.true_from_mean(math.pi, 0.5), lambda x: abs(x - math.pi) <= 4e-16),
+    (
+        14,
+        "M = 2 pi - 1e-14",
+        lambda: kepler.eccentric_anomaly(2 * math.pi - 1e-14, 0.3),
+        ulps_from(reference.kepler_E(2 * math.pi - 1e-14, 0.3)),
+    ),
+    (15, "M = 1e12", lambda: kepler.eccentric_anomaly(1e12, 0.3), ulps_from(reference.kepler_E(1e12, 0.3))),
+    (16, "M = 1e300", lambda: kepler.eccentric_anomaly(1e300, 0.3), raises(OrbitDomainError, "too large")),
+    (
+        16,
+        "M just past the bound",
+        lambda: kepler.eccentric_anomaly(kepler.MAX_MEAN_ANOMALY * 1.01, 0.3),
+        raises(OrbitDomainError, "2**50 revolutions"),
+    ),
+    (17, "M = NaN", lambda: kepler.eccentric_anomaly(NAN, 0.5), raises(OrbitDomainError, "not finite")),
+    (17, "M = -inf", lambda: kepler.hyperbolic_anomaly(-INF, 2.0), raises(OrbitDomainError, "not finite")),
+    (
+        18,
+        "E(-M) = -E(M)",
+        lambda: kepler.eccentric_anomaly(-1.3, 0.7) + kepler.eccentric_anomaly(1.3, 0.7),
+        lambda x: x == 0.0,
+    ),
+    (
+        19,
+        "hyperbolic M = 1e12, e = 1.5",
+        lambda: kepler.hyperbolic_anomaly(1e12, 1.5),
+        ulps_from(reference.kepler_H(1e12, 1.5)),
+    ),
+    (20, "hyperbolic e = 1e12", lambda: kepler.hyperbolic_anomaly(1.0, 1e12), ulps_from(reference.kepler_H(1.0, 1e12))),
+    (
+        21,
+        "hyperbolic M = 1e308",
+        lambda: kepler.hyperbolic_anomaly(1e308, 1.5),
+        ulps_from(reference.kepler_H(1e308, 1.5)),
+    ),
+    (
+        22,
+        "hyperbolic nu beyond the asymptote",
+        lambda: anomalies.mean_from_true(2.5, 2.0),
+        raises(OrbitDomainError, "beyond the asymptote"),
+    ),
+    (
+        22,
+        "hyperbolic nu exactly at the asymptote",
+        lambda: anomalies.mean_from_true(math.acos(-1 / 4.0), 4.0),
+        raises(OrbitDomainError, "asymptote"),
+    ),
+    (23, "parabolic nu = pi", lambda: anomalies.mean_from_true(math.pi, 1.0), raises(OrbitDomainError, "infinite")),
+    (25, "int inputs", lambda: kepler.eccentric_anomaly(1, 0), lambda x: x == 1.0),
+    (
+        25,
+        "float32 inputs are upcast",
+        lambda: kepler.eccentric_anomaly(np.float32(1.5), np.float32(0.25)),
+        lambda x: x.dtype == np.float64,
+    ),
+    (
+        25,
+        "bool eccentricity in the API",
+        lambda: Orbit.from_elements("Earth", a=7000 * u.km, e=True),
+        raises(TypeError, "boolean"),
+    ),
+    # elements and state vectors
+    (
+        26,
+        "a < 0 with e < 1",
+        lambda: Orbit.from_elements("Earth", a=-7000 * u.km, e=0.5),
+        raises(OrbitDomainError, "a > 0 for a bound orbit"),
+    ),
+    (
+        27,
+        "a > 0 with e > 1",
+        lambda: Orbit.from_elements("Earth", a=7000 * u.km, e=1.5),
+        raises(OrbitDomainError, "a < 0 for a hyperbola"),
+    ),
+    (28, "a = 0", lambda: Orbit.from_elements("Earth", a=0 * u.km, e=0.5), raises(OrbitDomainError, "a > 0")),
+    (
+        29,
+        "e = 1 given with a",
+        lambda: Orbit.from_elements("Earth", a=7000 * u.km, e=1.0),
+        raises(OrbitDomainError, "give q or p"),
+    ),
+    (
+        29,
+        "e = 1 given with q",
+        lambda: Orbit.from_elements("Earth", q=7000 * u.km, e=1.0).periapsis_distance,
+        lambda q: math.isclose(q.to_value(u.km), 7000, rel_tol=1e-15),
+    ),
+    (30, "a = NaN", lambda: Orbit.from_elements("Earth", a=NAN * u.km, e=0.5), raises(OrbitDomainError, "not finite")),
+    (30, "a = inf", lambda: Orbit.from_elements("Earth", a=INF * u.km, e=0.5), raises(OrbitDomainError, "not finite")),
+    (
+        31,
+        "i = 0: Omega := 0, round trip exact",
+        lambda: elements.state_to_elements(*state(1.0, 0.3, 1.0, inc=0.0), 1.0),
+        lambda el: el[2] == 0.0 and el[3] == 0.0 and abs(el[4] - 0.6) < 2e-15 and abs(el[5] - 1.0) < 2e-15,
+    ),
+    (
+        32,
+        "i = pi: Omega := 0",
+        lambda: elements.state_to_elements(*state(1.0, 0.3, 1.0, inc=math.pi), 1.0),
+        lambda el: el[2] == math.pi and el[3] == 0.0,
+    ),
+    (
+        33,
+        "e = 0: omega := 0, nu = argument of latitude",
+        lambda: elements.state_to_elements(np.array([0.0, 1.0, 0.0]), np.array([-1.0, 0.0, 0.0]), 1.0),
+        lambda el: el[1] == 0.0 and el[4] == 0.0 and el[5] == math.pi / 2,
+    ),
+    (
+        34,
+        "e = 1e-15 perturbed by 1 ulp moves the state by a few ulp",
+        lambda: np.max(np.abs(np.subtract(state(1.0, 1e-15, 0.7)[0], state(1.0, np.nextafter(1e-15, 1), 0.7)[0]))),
+        lambda d: d <= 4 * 2**-52,
+    ),
+    (
+        35,
+        "i < 0",
+        lambda: elements.elements_to_state(1.0, 0.1, -0.1, 0, 0, 0, 1.0),
+        raises(OrbitDomainError, "[0, pi]"),
+    ),
+    (
+        35,
+        "angles beyond 2 pi are wrapped",
+        lambda: Orbit.from_elements("Earth", a=7000 * u.km, e=0.1, raan=400 * u.deg).ascending_node,
+        lambda q: math.isclose(q.to_value(u.deg), 40.0, rel_tol=1e-12),
+    ),
+    (
+        36,
+        "r = 0",
+        lambda: elements.state_to_elements([0.0, 0, 0], [1.0, 0, 0], 1.0),
+        raises(OrbitDomainError, "coincides with the primary"),
+    ),
+    (
+        37,
+        "v = 0: radial, degenerate",
+        lambda: elements.state_to_elements([1.0, 0, 0], [0.0, 0, 0], 1.0),
+        raises(DegenerateOrbitError, "radial"),
+    ),
+    (
+        37,
+        "v = 0: the eccentricity vector is -r_hat",
+        lambda: elements.eccentricity_vector([2.0, 0, 0], [0.0, 0, 0], 1.0),
+        lambda ev: np.array_equal(ev, [-1.0, 0.0, 0.0]),
+    ),
+    (
+        38,
+        "r parallel to v",
+        lambda: elements.state_to_elements([1.0, 0, 0], [3.0, 0, 0], 1.0),
+        raises(DegenerateOrbitError, "radial"),
+    ),
+    (
+        38,
+        "radial orbits are not propagated",
+        lambda: propagate(np.array([1.0, 0, 0]), np.array([-0.5, 0, 0]), 1.0, 1.0),
+        raises(DegenerateOrbitError, "collision"),
+    ),
+    (
+        39,
+        "exactly parabolic state: e = 1, p finite",
+        lambda: elements.state_to_elements([2.0, 0, 0], [0.0, 1.0, 0], 1.0),
+        lambda el: el[1] == 1.0 and el[0] == 4.0,
+    ),
+    (
+        39,
+        "exactly parabolic state: a = inf, no period",
+        lambda: Orbit.from_vectors(1 * u.m**3 / u.s**2, [2.0, 0, 0] * u.m, [0.0, 1.0, 0] * u.m / u.s).semi_major_axis,
+        lambda a: np.isinf(a.value),
+    ),
+    (
+        41,
+        "signed zeros give identical results",
+        lambda: [
+            np.array_equal(x, y)
+            for x, y in zip(
+                elements.state_to_elements([1.0, 0.2, 0.0], [0.1, 1.0, 0.0], 1.0),
+                elements.state_to_elements([1.0, 0.2, -0.0], [0.1, 1.0, -0.0], 1.0),
+            )
+        ],
+        all,
+    ),
+    (
+        43,
+        "mu = 0",
+        lambda: elements.state_to_elements([1.0, 0, 0], [0, 1.0, 0], 0.0),
+        raises(OrbitDomainError, "positive"),
+    ),
+    (43, "mu < 0", lambda: Orbit.circular(-1 * u.m**3 / u.s**2, 1 * u.m), raises(OrbitDomainError, "positive")),
+    (
+        43,
+        "mu = NaN",
+        lambda: elements.state_to_elements([1.0, 0, 0], [0, 1.0, 0], NAN),
+        raises(OrbitDomainError, "finite"),
+    ),
+    (
+        44,
+        "negative orbiting mass",
+        lambda: Orbit.circular("Earth", 7000 * u.km, mass=-1 * u.kg),
+        raises(OrbitDomainError, "must be positive"),
+    ),
+    # units
+    (
+        59,
+        "length given in seconds",
+        lambda: Orbit.from_elements("Earth", a=7000 * u.s, e=0.1),
+        raises(u.UnitConversionError, "cannot be converted to m"),
+    ),
+    (
+        59,
+        "angle given as a plain number",
+        lambda: Orbit.from_elements("Earth", a=7000 * u.km, e=0.1, inc=0.5),
+        raises(TypeError, "has no unit"),
+    ),
+    (
+        60,
+        "plain float where a length is required",
+        lambda: Orbit.circular("Earth", 7000.0),
+        raises(TypeError, "pass a Quantity such as 7000 * u.km"),
+    ),
+    (
+        60,
+        "mismatched array shapes",
+        lambda: Orbit.from_elements("Earth", a=[7000, 8000] * u.km, e=[0.1, 0.2, 0.3]),
+        raises(OrbitDomainError, "do not broadcast"),
+    ),
+]
+
+
+@pytest.mark.parametrize("row, case, call, expected", ROWS, ids=[f"row{r[0]:02d}-{r[1]}" for r in ROWS])
+def test_edge_case(row, case, call, expected, record):
+    if isinstance(expected, tuple) and expected[0] == "raises":
+        _, error, fragment = expected
+        with pytest.raises(error) as info:
+            call()
+        assert fragment in str(info.value)
+    else:
+        assert expected(call())
+    record("EDGE_CASES.md rows checked", 1, 0.0, "failures")
+
+
+@pytest.mark.parametrize("one_minus_e", [1e-6, 1e-9, 1e-12, 1e-14, -1e-14, -1e-12, -1e-9, -1e-6])
+def test_row40_near_parabolic_round_trip_uses_p(one_minus_e, record):
+    """Row 40 / issue 9: state -> elements -> state to 1e-12 relative down to |1 - e| = 1e-14."""
+    e = 1 - one_minus_e
+    worst = 0.0
+    for nu in np.linspace(-2.5, 2.5, 11):
+        if 1 + e * math.cos(nu) < 1e-3:
+            continue
+        r, v = state(1.7, e, nu)
+        r2, v2 = elements.elements_to_state(*elements.state_to_elements(r, v, 1.0), 1.0)
+        worst = max(worst, np.linalg.norm(r2 - r) / np.linalg.norm(r), np.linalg.norm(v2 - v) / np.linalg.norm(v))
+    record("near-parabolic round trip (p as size element)", 11, worst, "relative")
+    assert worst <= 1e-12
+
+
+@pytest.mark.parametrize("scale", [2.0**-100, 2.0**100])
+def test_row42_extreme_scales(scale, record):
+    """Row 42: 8e-31 m and 1.3e30 m orbits propagate like the unit orbit, to 1e-15 relative. The scales are
+    powers of two, so the scaled inputs are exact and any difference is the propagator's own."""
+    r0, v0 = np.array([1.0, 0.2, 0.1]), np.array([-0.2, 0.9, 0.3])
+    mu = 1.1 * scale**3
+    r, v = propagate(r0 * scale, v0 * scale, mu, 7.3)
+    r_unit, v_unit = propagate(r0, v0, 1.1, 7.3)
+    worst = max(np.max(np.abs(r / scale / r_unit - 1)), np.max(np.abs(v / scale / v_unit - 1)))
+    record("extreme length scales (2**-100 m, 2**100 m)", 1, worst, "relative")
+    assert worst <= 1e-15
