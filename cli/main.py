@@ -5,7 +5,8 @@ astropy and the backends are imported inside the commands, so `orbits --help` st
 """
 
 import typer
-from orbits_cli.commands import bench, info, kepler, orbit, validate
+
+from orbits_cli.commands import bench, binary, escape, flyby, info, kepler, orbit, precision, validate
 from orbits_cli.options import reports_errors
 
 app = typer.Typer(
@@ -19,5 +20,9 @@ app.add_typer(bench_app, name="bench")
 app.command("validate")(reports_errors(validate.command))
 app.command("orbit")(reports_errors(orbit.command))
 app.command("kepler")(reports_errors(kepler.command))
+app.command("binary")(reports_errors(binary.command))
+app.command("flyby")(reports_errors(flyby.command))
+app.add_typer(escape.app, name="escape")
 app.command("info")(reports_errors(info.command))
 bench_app.command("kepler")(reports_errors(bench.kepler))
+bench_app.command("precision")(reports_errors(precision.command))

@@ -88,3 +88,20 @@ def validation_report(data):
             console.print(escape(f"  {name} {scene['versions'][name]}: {settings}; {scene['time_modes'][name]}"))
     verdict = "[green]all checks passed[/green]" if data["passed"] else "[red]some checks FAILED[/red]"
     console.print(f"\n{verdict} ({len(data['scenes'])} scenes)")
+
+
+def precision_tables(data):
+    """Print the work-precision summary: per problem, each method's best error and its fastest run at target."""
+    console = _wide_console()
+    grid = Table(title=f"work-precision: best error, and the fastest run reaching {data['target']:.0e}")
+    for name in ("problem", "method", "best error", "at", "time", f"fastest <= {data['target']:.0e}", "time"):
+        grid.add_column(name, no_wrap=True, justify="left" if name in ("problem", "method") else "right")
+    for row in data["summary"]:
+        fastest = row["fastest_at_target"] or "not reached"
+        grid.add_row(row["problem"], row["method"], f"{row['best_error']:.2e}", row["best_setting"],
+                     f"{row['best_seconds'] * 1e3:.2f} ms", fastest,
+                     "-" if row["fastest_seconds"] is None else f"{row['fastest_seconds'] * 1e3:.2f} ms")
+    console.print(grid)
+    notes = {r["note"] for r in data["rows"] if r["note"]}
+    for note in sorted(notes):
+        console.print(escape(f"  note: {note}"))

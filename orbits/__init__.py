@@ -4,8 +4,11 @@ Public API: Orbit (orbits.orbit), named bodies and constants (orbits.constants),
 (orbits.errors). The float64 numeric core lives in orbits.core and takes no units.
 """
 
+from orbits.binary import Binary, Star
 from orbits.constants import BODIES, Body, G, body
 from orbits.errors import ConvergenceError, DegenerateOrbitError, OrbitDomainError, OrbitsError
+from orbits.escape import CosmicVelocities, SynchronousOrbit, escape_speed, max_elongation
+from orbits.flyby import Flyby
 from orbits.orbit import Orbit
 
 __version__ = "0.1.0"
@@ -16,6 +19,13 @@ __all__ = [
     "Body",
     "body",
     "Orbit",
+    "Binary",
+    "Star",
+    "Flyby",
+    "CosmicVelocities",
+    "SynchronousOrbit",
+    "escape_speed",
+    "max_elongation",
     "ConvergenceError",
     "DegenerateOrbitError",
     "OrbitDomainError",

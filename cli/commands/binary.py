@@ -1,0 +1,64 @@
+"""`orbits binary`: every section XXII quantity of two finite masses about their centre of mass."""
+
+from typing import Annotated
+
+import typer
+
+from orbits_cli.options import Format, FormatOption, OnlyOption
+
+MASS_HELP = "body name (Earth, Moon, Sun, Jupiter), mass ('1.989e30 kg', '1 solMass') or GM ('3.986e14 m3/s2')"
+
+
+def command(
+    m1: Annotated[str, typer.Option("--m1", help=f"star 1 (the notes' M): {MASS_HELP}")],
+    m2: Annotated[str, typer.Option("--m2", help=f"star 2 (the notes' m): {MASS_HELP}")],
+    a: Annotated[str | None, typer.Option("--a", help="relative semi-major axis a1 + a2, e.g. '384399 km'")] = None,
+    p: Annotated[str | None, typer.Option("--p", help="relative semi-latus rectum")] = None,
+    q: Annotated[str | None, typer.Option("--q", help="periapsis separation")] = None,
+    period: Annotated[str | None, typer.Option("--period", help="orbital period, e.g. '27.32 d' (sets a)")] = None,
+    e: Annotated[float, typer.Option("--e", help="eccentricity")] = 0.0,
+    inc: Annotated[str, typer.Option("--inc", help="inclination ('28.5 deg'; bare numbers are degrees)")] = "0",
+    raan: Annotated[str, typer.Option("--raan", help="longitude of the ascending node")] = "0",
+    argp: Annotated[str, typer.Option("--argp", help="argument of periapsis of star 2 relative to star 1")] = "0",
+    nu: Annotated[str, typer.Option("--nu", help="true anomaly")] = "0",
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+):
+    """Masses, relative orbit, each star's orbit about the centre of mass, energy and angular momentum (XXII)."""
+    from orbits_cli import params, render
+
+    result = build(m1, m2, a, p, q, period, e, inc, raan, argp, nu)
+    render.emit(f"Binary of {m1} and {m2}", result.quantities(params.names(only)), fmt.value)
+
+
+def build(m1, m2, a, p, q, period, e, inc, raan, argp, nu):
+    """The Binary described by the options; BadParameter when no size (or more than one) is given."""
+    from orbits import Binary
+    from orbits_cli import params
+
+    sizes = {"a": a, "p": p, "q": q, "period": period}
+    given = [k for k, x in sizes.items() if x is not None]
+    if len(given) != 1:
+        raise typer.BadParameter(f"give exactly one size of --a, --p, --q, --period; got {given or 'none'}")
+    kind = "time" if given[0] == "period" else "length"
+    size = {given[0]: params.quantity(sizes[given[0]], kind, f"--{given[0]}")}
+    return Binary.from_elements(
+        mass_or_body(m1, "--m1"),
+        mass_or_body(m2, "--m2"),
+        e=e,
+        inc=params.angle(inc, "--inc"),
+        raan=params.angle(raan, "--raan"),
+        argp=params.angle(argp, "--argp"),
+        nu=params.angle(nu, "--nu"),
+        **size,
+    )
+
+
+def mass_or_body(text, option):
+    """A body (name), mass or GM parsed from `text`; BadParameter naming `option` otherwise."""
+    from orbits_cli import params
+
+    try:
+        return params.primary(text)
+    except typer.BadParameter as err:
+        raise typer.BadParameter(f"{option}: {err.message.removeprefix('primary: ')}") from None

@@ -1,0 +1,131 @@
+"""`orbits escape`: escape speed, cosmic velocities, synchronous (GEO) orbits and maximum elongation (XXI.ix-xi).
+
+A sub-application with one command per question; main.py mounts it with app.add_typer(escape.app).
+"""
+
+from typing import Annotated
+
+import typer
+
+from orbits_cli.commands.binary import MASS_HELP, mass_or_body
+from orbits_cli.options import Format, FormatOption, OnlyOption, reports_errors
+
+app = typer.Typer(
+    help="Escape speed, cosmic velocities, synchronous orbits and maximum elongation (notes XXI.ix-xi).",
+    no_args_is_help=True,
+)
+
+BodyArgument = Annotated[str, typer.Argument(metavar="BODY", help=MASS_HELP)]
+
+
+def speed(
+    primary: BodyArgument = "Earth",
+    distance: Annotated[
+        str | None, typer.Option(help="distance from the centre (default: a named body's equatorial radius)")
+    ] = None,
+    fmt: FormatOption = Format.table,
+):
+    """Escape speed sqrt(2 G M / r) at a distance from a body's centre (at its surface by default)."""
+    import astropy.units as u
+
+    from orbits import body, escape_speed
+    from orbits_cli import params, render
+
+    center = mass_or_body(primary, "BODY")
+    r = None if distance is None else params.quantity(distance, "length", "--distance")
+    v = escape_speed(center, r)
+    shown = r if r is not None else body(primary).radius * u.m
+    result = {"distance": shown.to(u.km), "escape_speed": v.to(u.km / u.s)}
+    render.emit(f"Escape speed from {primary}", result, fmt.value)
+
+
+def cosmic(
+    planet: Annotated[
+        str | None, typer.Argument(metavar="[BODY]", help="a named body; default: the notes' Earth (g0, 6371 km)")
+    ] = None,
+    g: Annotated[str | None, typer.Option("--g", help="surface gravity, e.g. '9.80665 m/s2'")] = None,
+    radius: Annotated[str | None, typer.Option(help="surface radius, e.g. '6371 km'")] = None,
+    orbital_speed: Annotated[
+        str | None, typer.Option(help="circular speed about the primary (default: Earth's, 29.785 km/s)")
+    ] = None,
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+):
+    """First, second and third cosmic velocities (XXI.ix): sqrt(g R), sqrt(2 g R) and the patched-conic third."""
+    from orbits import CosmicVelocities
+    from orbits_cli import params, render
+
+    if planet is not None:
+        if any(x is not None for x in (g, radius, orbital_speed)):
+            raise typer.BadParameter("give a BODY or the model (--g, --radius, --orbital-speed), not both")
+        result, title = CosmicVelocities.of(planet), f"Cosmic velocities of {planet}"
+    else:
+        result = CosmicVelocities.from_surface_gravity(
+            None if g is None else _acceleration(g),
+            None if radius is None else params.quantity(radius, "length", "--radius"),
+            None if orbital_speed is None else params.quantity(orbital_speed, "speed", "--orbital-speed"),
+        )
+        title = "Cosmic velocities (the notes' model: v1 = sqrt(g R), v2 = sqrt(2 g R))"
+    render.emit(title, result.quantities(params.names(only)), fmt.value)
+
+
+def geo(
+    primary: BodyArgument = "Earth",
+    period: Annotated[str | None, typer.Option(help="sidereal rotation period (default: the body's)")] = None,
+    radius: Annotated[str | None, typer.Option(help="body radius, for the altitude (default: the body's)")] = None,
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+):
+    """Synchronous orbit of a rotating body (XXI.x): geosynchronous / geostationary radius and altitude for Earth."""
+    from orbits import SynchronousOrbit
+    from orbits_cli import params, render
+
+    result = SynchronousOrbit.of(
+        mass_or_body(primary, "BODY"),
+        None if period is None else params.quantity(period, "time", "--period"),
+        None if radius is None else params.quantity(radius, "length", "--radius"),
+    )
+    render.emit(f"Synchronous orbit of {primary}", result.quantities(params.names(only)), fmt.value)
+
+
+def elongation(
+    inner: Annotated[str, typer.Option(help="inner orbit radius ('0.723 AU') or a named body")],
+    outer: Annotated[str, typer.Option(help="outer (observer's) orbit radius ('1 AU') or a named body")],
+    fmt: FormatOption = Format.table,
+):
+    """Maximum elongation arcsin(r / R) of an inner planet seen from an outer one (XXI.xi), circular orbits."""
+    import astropy.units as u
+
+    from orbits import max_elongation
+    from orbits_cli import render
+
+    radii = [_radius_or_body(x, name) for x, name in ((inner, "--inner"), (outer, "--outer"))]
+    angle = max_elongation(*radii)
+    render.emit(f"Maximum elongation of {inner} seen from {outer}", {"max_elongation": angle.to(u.deg)}, fmt.value)
+
+
+def _acceleration(text):
+    """The --g option as an acceleration Quantity; BadParameter for a bare number or another physical type."""
+    from orbits_cli import params
+
+    try:
+        float(text)
+    except ValueError:
+        return params.quantity(text, "acceleration", "--g")
+    raise typer.BadParameter(f"--g: {text!r} has no unit; write e.g. '{text} m/s2'")
+
+
+def _radius_or_body(text, option):
+    """A catalogued body's name, or a length parsed from `text`."""
+    from orbits.constants import BODIES
+    from orbits_cli import params
+
+    if text.lower() in (name.lower() for name in BODIES):
+        return text
+    return params.quantity(text, "length", option)
+
+
+app.command("speed")(reports_errors(speed))
+app.command("cosmic")(reports_errors(cosmic))
+app.command("geo")(reports_errors(geo))
+app.command("elongation")(reports_errors(elongation))

@@ -1,0 +1,49 @@
+"""`orbits bench precision`: work-precision of every integrator against an mpmath reference."""
+
+from typing import Annotated
+
+import typer
+
+from orbits_cli.options import Format, FormatOption, PlotOption, save_plot
+
+
+def command(
+    quick: Annotated[bool, typer.Option(help="100-period problems only and every other knob setting")] = False,
+    problem: Annotated[
+        str | None, typer.Option(help="only the problems whose name contains this text, e.g. 'L4' or 'e=0.9'")
+    ] = None,
+    target: Annotated[float, typer.Option(help="error the summary asks each method to reach")] = 1e-10,
+    output: Annotated[str | None, typer.Option(help="also write every run as JSON to this file (atomically)")] = None,
+    plot: PlotOption = None,
+    fmt: FormatOption = Format.table,
+):
+    """Sweep each integrator's accuracy knob on the same problems; error against run time, with a summary."""
+    import dataclasses
+    import json
+
+    from orbits import precision
+    from orbits.io import write_atomic
+    from orbits_cli.render import precision_tables
+
+    chosen = [p for p in precision.problems(long=not quick) if problem is None or problem in p.name]
+    if not chosen:
+        raise typer.BadParameter(f"--problem: no problem name contains {problem!r}")
+    rows = precision.run(chosen, precision.methods(quick=quick))
+    data = {"target": target, "rows": [_without_nan(dataclasses.asdict(r)) for r in rows],
+            "summary": precision.summary(rows, target)}
+    text = json.dumps(data, indent=2, allow_nan=False)
+    if output:
+        write_atomic(output, text + "\n")
+    if plot:
+        from orbits.plot import work_precision
+
+        save_plot(lambda: work_precision(rows), plot)
+    if fmt == Format.json:
+        print(text)
+    else:
+        precision_tables(data)
+
+
+def _without_nan(row):
+    """JSON has no NaN: runs that were skipped get null error and time."""
+    return {k: None if isinstance(v, float) and v != v else v for k, v in row.items()}

@@ -1,0 +1,458 @@
+"""Binary: two finite masses moving about their centre of mass (section XXII of the notes), with astropy units.
+
+    >>> import astropy.units as u
+    >>> from orbits import Binary
+    >>> earth_moon = Binary.from_elements("Earth", "Moon", a=384399 * u.km, e=0.0549)
+    >>> earth_moon.period.to(u.day).round(3)
+    <Quantity 27.285 d>
+    >>> earth_moon.star1.semi_major_axis.to(u.km).round(1)  # the Earth's orbit about the barycentre
+    <Quantity 4670.7 km>
+
+Labels: star 1 (mass m1) is the notes' M and star 2 (m2) the notes' m, so `mass_fraction` m2 / (m1 + m2) is
+the notes' mu = m / (M + m), `star2.semi_major_axis` is the notes' a and `star1.semi_major_axis` their q.
+The relative orbit r = r2 - r1 (`relative`, an Orbit with mu = G (m1 + m2) and the reduced mass) carries the
+pair's energy, angular momentum and the joining line's areal rate L / (2 mu_red) (ERRATA #58). Each star
+(`star1`, `star2`) is a Star: the relative conic scaled by m_j / (m1 + m2) about the CM, a Kepler orbit with
+the fixed-centre parameter G m_j**3 / (m1 + m2)**2 (XXII.iii), so every Orbit quantity applies to it; its
+co-vertex speed is the corrected sigma_b of ERRATA #68. As m2 / m1 -> 0, star 2 becomes section XXI's planet
+about a fixed star: within 2e-15 at m2 / m1 = 1e-15 (tests/core/test_binary.py, tests/api/test_binary_api.py).
+"""
+
+from dataclasses import dataclass
+from functools import cached_property
+
+import astropy.units as u
+import numpy as np
+
+from orbits import units
+from orbits.constants import Body, G, body
+from orbits.core import binary as binary_core
+from orbits.core import twobody
+from orbits.errors import OrbitDomainError
+from orbits.orbit import Orbit
+
+
+def gravitational_parameter_of(value, name):
+    """G m (m3/s2) of a mass given as a Body, a body name, a mass (kg) or a GM (m3/s2) Quantity.
+
+    Raises OrbitDomainError naming `name`, the value, the allowed range (0, inf) and the unit for m <= 0.
+    """
+    if isinstance(value, str):
+        value = body(value)
+    if isinstance(value, Body):
+        return np.asarray(value.gm, dtype=float)
+    if isinstance(value, u.Quantity) and value.unit.is_equivalent(units.M3_PER_S2):
+        gm = units.to_si(value, units.M3_PER_S2, name)
+        binary_core.require_positive(gm, name, "m3 / s2")
+        return gm
+    mass = units.to_si(value, units.KG, name)
+    binary_core.require_positive(mass, name, "kg")
+    return G * mass
+
+
+def _vector(value, unit, name, shape):
+    """Float64 SI vector of shape shape + (3,) from a Quantity (zeros when value is None)."""
+    if value is None:
+        return np.zeros(shape + (3,))
+    vector = units.to_si(value, unit, name)
+    if vector.shape[-1:] != (3,):
+        raise OrbitDomainError(f"{name} must have a last axis of length 3; got shape {vector.shape}")
+    return np.broadcast_to(vector, shape + (3,)).astype(float)
+
+
+@dataclass(frozen=True, eq=False)
+class Star(Orbit):
+    """One star's orbit about the binary's centre of mass, as a Kepler orbit about a fixed centre at the CM.
+
+    mu = G m_j**3 / (m1 + m2)**2 (m_j: the other star), p = p_rel m_j / (m1 + m2), e and the plane of the
+    relative orbit (XXII.i-iii); `mass` is the star's own mass. Speeds, distances, angular momentum
+    (m_j L / (m1 + m2), the notes' I and J), areal rate (the notes' h / 2 and H / 2), period and T1 / T2 are
+    the star's own. Its energy, potential energy and kinetic energy are its share m_j / (m1 + m2) of the
+    binary's; K is exactly the star's kinetic energy in the CM frame.
+    """
+
+    @cached_property
+    def kepler_constant(self):
+        """a**3 / T**2 = G m_j**3 / ((m1 + m2)**2 4 pi**2) (m3/s2), Kepler's third law for this star (XXII.iii)."""
+        return binary_core.kepler_constant(self.mu) << units.M3_PER_S2
+
+
+@dataclass(frozen=True, eq=False)
+class Binary:
+    """Two finite masses (or arrays of pairs) on a Kepler orbit about their centre of mass.
+
+    Fields are float64 SI: the stars' parameters gm1 = G m1 and gm2 = G m2 (m3/s2), the relative Orbit, and the
+    centre of mass's position com_r (m) and velocity com_v (m/s) at the epoch (zeros: the CM frame). Build it
+    with Binary.from_elements, Binary.circular or Binary.from_vectors.
+    """
+
+    gm1: np.ndarray
+    gm2: np.ndarray
+    relative: Orbit
+    com_r: np.ndarray
+    com_v: np.ndarray
+
+    # ---- constructors -------------------------------------------------------------------------
+    @classmethod
+    def from_elements(
+        cls,
+        m1,
+        m2,
+        a=None,
+        e=0.0,
+        *,
+        p=None,
+        q=None,
+        period=None,
+        inc=0 * u.deg,
+        raan=0 * u.deg,
+        argp=0 * u.deg,
+        nu=0 * u.deg,
+        com_r=None,
+        com_v=None,
+    ):
+        """Binary from the masses (body names, masses or GMs) and the relative orbit r2 - r1.
+
+        Give one size of the relative orbit: a = a1 + a2 (the notes' a + q = (m + M) alpha), p, q (periapsis
+        separation) or the period T (then a = (G (m1 + m2) T**2 / (4 pi**2))**(1/3), e < 1). Angles orient
+        the relative orbit; star 2 shares its periapsis direction, star 1 is opposite.
+        """
+        gm1, gm2 = gravitational_parameter_of(m1, "mass m1"), gravitational_parameter_of(m2, "mass m2")
+        if period is not None:
+            a = _semi_major_axis_from_period(period, e, gm1 + gm2, given=(a, p, q))
+        relative = Orbit.from_elements(
+            (gm1 + gm2) << units.M3_PER_S2,
+            a,
+            e,
+            p=p,
+            q=q,
+            inc=inc,
+            raan=raan,
+            argp=argp,
+            nu=nu,
+            mass=binary_core.reduced_mass(gm1, gm2) / G << units.KG,
+        )
+        return cls._assemble(gm1, gm2, relative, com_r, com_v)
+
+    @classmethod
+    def circular(cls, m1, m2, separation, *, inc=0 * u.deg, raan=0 * u.deg, nu=0 * u.deg, com_r=None, com_v=None):
+        """Circular binary (XXII.v): stars at separation m2 r / (m1 + m2) and m1 r / (m1 + m2) from the CM."""
+        return cls.from_elements(m1, m2, p=separation, e=0.0, inc=inc, raan=raan, nu=nu, com_r=com_r, com_v=com_v)
+
+    @classmethod
+    def from_vectors(cls, m1, m2, r1, v1, r2, v2):
+        """Binary from both stars' positions (length) and velocities (speed), shape (..., 3), in any inertial frame."""
+        gm1, gm2 = gravitational_parameter_of(m1, "mass m1"), gravitational_parameter_of(m2, "mass m2")
+        r1, r2 = units.to_si(r1, units.M, "position r1"), units.to_si(r2, units.M, "position r2")
+        v1, v2 = units.to_si(v1, units.M_PER_S, "velocity v1"), units.to_si(v2, units.M_PER_S, "velocity v2")
+        relative = Orbit.from_vectors(
+            (gm1 + gm2) << units.M3_PER_S2,
+            (r2 - r1) << units.M,
+            (v2 - v1) << units.M_PER_S,
+            mass=binary_core.reduced_mass(gm1, gm2) / G << units.KG,
+        )
+        x1, x2 = binary_core.mass_fractions(gm1, gm2)
+        com_r, com_v = binary_core.center_of_mass(r1, r2, x1, x2), binary_core.center_of_mass(v1, v2, x1, x2)
+        return cls._assemble(gm1, gm2, relative, com_r << units.M, com_v << units.M_PER_S)
+
+    @classmethod
+    def _assemble(cls, gm1, gm2, relative, com_r, com_v):
+        shape = relative.shape
+        return cls(
+            np.broadcast_to(gm1, shape).astype(float),
+            np.broadcast_to(gm2, shape).astype(float),
+            relative,
+            _vector(com_r, units.M, "centre-of-mass position com_r", shape),
+            _vector(com_v, units.M_PER_S, "centre-of-mass velocity com_v", shape),
+        )
+
+    # ---- shape and masses (XXII.i) --------------------------------------------------------------
+    @property
+    def shape(self):
+        """Batch shape of the binaries held."""
+        return self.relative.shape
+
+    @cached_property
+    def _fractions(self):
+        return binary_core.mass_fractions(self.gm1, self.gm2)
+
+    @cached_property
+    def mass1(self):
+        """m1 = G m1 / G (kg), the notes' M."""
+        return self.gm1 / G << units.KG
+
+    @cached_property
+    def mass2(self):
+        """m2 = G m2 / G (kg), the notes' m."""
+        return self.gm2 / G << units.KG
+
+    @cached_property
+    def total_mass(self):
+        """m1 + m2 (kg)."""
+        return (self.gm1 + self.gm2) / G << units.KG
+
+    @cached_property
+    def reduced_mass(self):
+        """m1 m2 / (m1 + m2) (kg): correctly rounded in G m units (double-double), then divided by G (<= 1 ulp)."""
+        return binary_core.reduced_mass(self.gm1, self.gm2) / G << units.KG
+
+    @cached_property
+    def mass_fraction(self):
+        """mu = m2 / (m1 + m2) (dimensionless), the notes' m / (M + m), correctly rounded (double-double)."""
+        return self._fractions[1] << u.one
+
+    @cached_property
+    def gravitational_parameter(self):
+        """G (m1 + m2) (m3/s2), the parameter of the relative orbit."""
+        return self.relative.mu << units.M3_PER_S2
+
+    # ---- the stars ------------------------------------------------------------------------------
+    @cached_property
+    def star1(self):
+        """Star 1's orbit about the CM (the notes' M, semi-major axis q = m2 a / (m1 + m2))."""
+        return self._star(self.gm2, self._fractions[1], self.gm1, opposite=True)
+
+    @cached_property
+    def star2(self):
+        """Star 2's orbit about the CM (the notes' m, semi-major axis a = m1 a_rel / (m1 + m2))."""
+        return self._star(self.gm1, self._fractions[0], self.gm2, opposite=False)
+
+    def _star(self, gm_other, share, gm_own, opposite):
+        rel = self.relative
+        argp, nu = binary_core.star_angles(rel.e, rel.argp, rel.nu, opposite)
+        mu = binary_core.star_parameter(gm_other, gm_other + gm_own)
+        return Star(mu, rel.p * share, rel.e, rel.inc, rel.raan, argp, nu, mass=gm_own / G)
+
+    # ---- the pair (XXII.ii-v, vii) --------------------------------------------------------------
+    @cached_property
+    def eccentricity(self):
+        """e (dimensionless), common to the relative orbit and both stars' orbits (XXII.i; e = gamma / alpha,
+        ERRATA #64)."""
+        return self.relative.eccentricity
+
+    @cached_property
+    def period(self):
+        """T = 2 pi sqrt(a**3 / (G (m1 + m2))) (s), ellipses only: all three forms of Kepler's third law agree."""
+        return self.relative.period
+
+    @cached_property
+    def mean_motion(self):
+        """n = 2 pi / T = sqrt(G (m1 + m2) / a**3) (rad/s)."""
+        return self.relative.mean_motion
+
+    @cached_property
+    def covertex_times(self):
+        """(T1, T2) (s): co-vertex to co-vertex through periapsis T (1/2 - e/pi) and through apoapsis, the same for
+        both stars (XXII.vii), ellipses only."""
+        return self.relative.covertex_times
+
+    @cached_property
+    def time_since_periapsis(self):
+        """t - T_periapsis (s) of the pair (both stars pass their periapses together)."""
+        return self.relative.time_since_periapsis
+
+    @cached_property
+    def kepler_constant(self):
+        """(a1 + a2)**3 / T**2 = G (m1 + m2) / (4 pi**2) (m3/s2), Kepler's third law for the relative orbit."""
+        return binary_core.kepler_constant(self.relative.mu) << units.M3_PER_S2
+
+    @cached_property
+    def energy(self):
+        """E = -G m1 m2 / (2 a) (J), the binding energy (XXII.iv: -G m M / (2 (m + M) alpha))."""
+        return self.relative.energy
+
+    @cached_property
+    def angular_momentum(self):
+        """L = m1 m2 sqrt(G p / (m1 + m2)) (kg m2/s) about the CM (XXII.iv)."""
+        return self.relative.angular_momentum
+
+    @cached_property
+    def joining_line_areal_velocity(self):
+        """Area swept by the line joining the stars per unit time, L / (2 mu_red) = sqrt(G (m1 + m2) p) / 2 (m2/s)
+        (XXII.ii corrected by ERRATA #58)."""
+        return self.relative.areal_velocity
+
+    @cached_property
+    def separation(self):
+        """|r2 - r1| (m) now."""
+        return self.relative.radius
+
+    @cached_property
+    def relative_speed(self):
+        """|v2 - v1| (m/s) now: vis-viva with G (m1 + m2) (the notes' (m + M) sigma)."""
+        return self.relative.speed
+
+    @cached_property
+    def angular_velocity(self):
+        """Rate of turn of the joining line h / r**2 (rad/s) now; sqrt(G (m1 + m2) / r**3) on a circle (XXII.v)."""
+        h = twobody.specific_angular_momentum(self.relative.p, self.relative.mu)
+        return h / self.separation.to_value(units.M) ** 2 << units.RAD_PER_S
+
+    @cached_property
+    def potential_energy(self):
+        """U = -G m1 m2 / r (J) now."""
+        return self.relative.potential_energy
+
+    @cached_property
+    def kinetic_energy(self):
+        """K = m1 v1**2 / 2 + m2 v2**2 / 2 = mu_red |v2 - v1|**2 / 2 (J) now, in the CM frame."""
+        return self.relative.kinetic_energy
+
+    def speeds_at(self, separation):
+        """(v1, v2) (m/s): the stars' speeds in the CM frame when they are `separation` (length) apart.
+
+        v_i = m_j / (m1 + m2) sqrt(G (m1 + m2) (2 / r - 1 / a)) (XXII.iv's M sigma and m sigma, ERRATA #67).
+        """
+        relative = self.relative.speed_at(separation)
+        x1, x2 = self._fractions
+        return x2 * relative, x1 * relative
+
+    def escape_speed(self, distance):
+        """sqrt(2 G (m1 + m2) / r) (m/s) at distance r (length) from the CM, the pair seen as one point mass.
+
+        Exact to 1 ulp for that model. The pair's quadrupole changes v**2 by at most m1 m2 / (m1 + m2)**2 (d / r)**2
+        relative to leading order in d / r, d the separation (tests/api/test_binary_api.py checks this against
+        the two-star potential).
+        """
+        r = units.to_si(distance, units.M, "distance r")
+        binary_core.require_positive(r, "distance r", "m")
+        return twobody.escape_speed(r, self.relative.mu) << units.M_PER_S
+
+    # ---- state vectors --------------------------------------------------------------------------
+    @cached_property
+    def center_of_mass(self):
+        """Position of the CM (m) at the epoch, shape (..., 3)."""
+        return self.com_r << units.M
+
+    @cached_property
+    def center_of_mass_velocity(self):
+        """Velocity of the CM (m/s), shape (..., 3)."""
+        return self.com_v << units.M_PER_S
+
+    def propagate(self, dt, *, barycentric=False):
+        """(r1, v1, r2, v2) of both stars a time dt (time Quantity, broadcasting) after the epoch.
+
+        In the frame of com_r and com_v (the CM moving uniformly), or in the CM frame with barycentric=True.
+        The relative orbit goes through the universal-variable propagator (orbits.core.propagate).
+        """
+        dt_si = units.to_si(dt, units.S, "time step dt")
+        frame = 0.0 if barycentric else 1.0
+        r1, v1, r2, v2 = binary_core.propagate(
+            self.relative.r.to_value(units.M),
+            self.relative.v.to_value(units.M_PER_S),
+            frame * self.com_r,
+            frame * self.com_v,
+            self.gm1,
+            self.gm2,
+            dt_si,
+        )
+        return r1 << units.M, v1 << units.M_PER_S, r2 << units.M, v2 << units.M_PER_S
+
+    @cached_property
+    def states(self):
+        """(r1, v1, r2, v2) of both stars at the epoch, in the frame of com_r and com_v."""
+        return self.propagate(0 * u.s)
+
+    # ---- tables ---------------------------------------------------------------------------------
+    def quantities(self, only=None):
+        """{snake_case name: Quantity} of the section XXII quantities (or `only` those).
+
+        Names are the pair's own (BINARY_NAMES), `relative_<name>` for the relative orbit and `star1_<name>`,
+        `star2_<name>` for each star's orbit about the CM (RELATIVE_NAMES, STAR_NAMES). Without `only`,
+        quantities undefined for this binary (e.g. the period of an unbound pair) are left out.
+        """
+        names = QUANTITY_NAMES if only is None else list(only)
+        unknown = [n for n in names if n not in QUANTITY_NAMES]
+        if unknown:
+            raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(QUANTITY_NAMES)}")
+        result = {}
+        for name in names:
+            try:
+                result[name] = self._lookup(name)
+            except OrbitDomainError:
+                if only is not None:
+                    raise
+        return result
+
+    def _lookup(self, name):
+        for prefix in ("relative", "star1", "star2"):
+            if name.startswith(prefix + "_"):
+                return getattr(getattr(self, prefix), name[len(prefix) + 1 :])
+        if name.startswith("covertex_time_"):
+            return self.covertex_times[0 if name.endswith("periapsis_side") else 1]
+        return getattr(self, name)
+
+
+def _semi_major_axis_from_period(period, e, mu, given):
+    """a (Quantity, m) of the relative orbit from its period; TypeError if a size was given as well."""
+    if any(x is not None for x in given):
+        raise TypeError("give exactly one size of a, p, q, period; got period and another")
+    t = units.to_si(period, units.S, "period T")
+    binary_core.require_positive(t, "period T", "s")
+    binary_core.require_bound(units.to_number(e, "eccentricity e"), "a period")
+    return binary_core.semi_major_axis_from_period(t, mu) << units.M
+
+
+BINARY_NAMES = [
+    "mass1",
+    "mass2",
+    "total_mass",
+    "reduced_mass",
+    "mass_fraction",
+    "gravitational_parameter",
+    "eccentricity",
+    "period",
+    "mean_motion",
+    "covertex_time_periapsis_side",
+    "covertex_time_apoapsis_side",
+    "time_since_periapsis",
+    "kepler_constant",
+    "energy",
+    "angular_momentum",
+    "joining_line_areal_velocity",
+    "separation",
+    "relative_speed",
+    "angular_velocity",
+    "potential_energy",
+    "kinetic_energy",
+]
+
+RELATIVE_NAMES = [
+    "semi_major_axis",
+    "semilatus_rectum",
+    "semi_minor_axis",
+    "focal_distance",
+    "periapsis_distance",
+    "apoapsis_distance",
+    "periapsis_speed",
+    "apoapsis_speed",
+    "covertex_speed",
+    "inclination",
+    "ascending_node",
+    "argument_of_periapsis",
+    "true_anomaly",
+]
+
+STAR_NAMES = [
+    "semi_major_axis",
+    "semilatus_rectum",
+    "semi_minor_axis",
+    "focal_distance",
+    "periapsis_distance",
+    "apoapsis_distance",
+    "periapsis_speed",
+    "apoapsis_speed",
+    "covertex_speed",
+    "kepler_constant",
+    "angular_momentum",
+    "areal_velocity",
+    "radius",
+    "speed",
+]
+
+QUANTITY_NAMES = (
+    BINARY_NAMES
+    + [f"relative_{n}" for n in RELATIVE_NAMES]
+    + [f"star1_{n}" for n in STAR_NAMES]
+    + [f"star2_{n}" for n in STAR_NAMES]
+)

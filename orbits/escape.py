@@ -1,0 +1,283 @@
+"""Escape speed, cosmic velocities, synchronous orbits and maximum elongation (XXI.ix-xi), with astropy units.
+
+    >>> import astropy.units as u
+    >>> from orbits import CosmicVelocities, SynchronousOrbit, escape_speed, max_elongation
+    >>> notes = CosmicVelocities.from_surface_gravity()  # g0 = 9.80665 m/s2 and R = 6371 km, as in the notes
+    >>> speeds = notes.first_cosmic_velocity, notes.second_cosmic_velocity, notes.third_cosmic_velocity
+    >>> [round(float(v.to_value(u.km / u.s)), 3) for v in speeds]
+    [7.904, 11.178, 16.648]
+    >>> SynchronousOrbit.of("Earth").altitude.to(u.km).round(1)
+    <Quantity 35786.1 km>
+    >>> escape_speed("Earth").to(u.km / u.s).round(4)  # at the equatorial radius
+    <Quantity 11.1799 km / s>
+    >>> max_elongation(0.723 * u.AU, 1 * u.AU).to(u.deg).round(1)
+    <Quantity 46.3 deg>
+
+The notes' 7.9, 11.2 and 16.7 km/s are the first three rounded (ERRATA #54: 7.904, 11.178, 16.65 km/s by
+patched conics); their fourth, "at least 525 km/s", is an empirical estimate of the Galactic escape speed and
+has no formula here. The geosynchronous and the geostationary orbit share one radius (the latter is the
+equatorial one); 35786.1 km above Earth's IAU 2015 equatorial radius, the notes' 35786 km (ERRATA #55).
+"""
+
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+
+from orbits import units
+from orbits.binary import Binary, gravitational_parameter_of
+from orbits.constants import BODIES, EARTH_MEAN_RADIUS, STANDARD_GRAVITY, Body, body
+from orbits.core import binary as binary_core
+from orbits.core import escape as escape_core
+from orbits.core import twobody
+from orbits.errors import OrbitDomainError
+
+
+def _named(primary):
+    """The Body for a name or Body, else None (a bare mass or GM has no radius, rotation or orbit)."""
+    if isinstance(primary, str):
+        return body(primary)
+    return primary if isinstance(primary, Body) else None
+
+
+def _length(value, name):
+    result = units.to_si(value, units.M, name)
+    binary_core.require_positive(result, name, "m")
+    return result
+
+
+def _speed(value, name):
+    result = units.to_si(value, units.M_PER_S, name)
+    binary_core.require_positive(result, name, "m / s")
+    return result
+
+
+def escape_speed(primary, distance=None):
+    """v_esc = sqrt(2 mu / r) (m/s) at distance r (length) from a body (name, Body, mass or GM) or a Binary's CM.
+
+    Without `distance`, at a named body's equatorial radius (its surface). A Binary counts as one point mass
+    G (m1 + m2) at its centre of mass (Binary.escape_speed). Exact to 1 ulp (tests/core/test_escape.py).
+    """
+    if isinstance(primary, Binary):
+        if distance is None:
+            raise TypeError("give the distance from the binary's centre of mass, e.g. distance=1 * u.AU")
+        return primary.escape_speed(distance)
+    named = _named(primary)
+    if distance is None:
+        if named is None:
+            raise TypeError("a mass or GM has no surface: give the distance, e.g. distance=7000 * u.km")
+        r = np.asarray(named.radius)
+    else:
+        r = _length(distance, "distance r")
+    mu = np.asarray(named.gm) if named is not None else gravitational_parameter_of(primary, "primary mass M")
+    return twobody.escape_speed(r, mu) << units.M_PER_S
+
+
+@dataclass(frozen=True, eq=False)
+class CosmicVelocities:
+    """First, second and third cosmic velocities of a planet (XXI.ix); float64 SI fields that broadcast.
+
+    g (m/s2) and radius (m) are the surface gravity and radius; v_orbit (m/s) is the planet's circular speed
+    about its own primary (the Sun for a planet), or None when it has none (no third velocity then).
+    """
+
+    g: np.ndarray
+    radius: np.ndarray
+    v_orbit: np.ndarray | None = None
+
+    @classmethod
+    def from_surface_gravity(cls, g=None, radius=None, orbital_speed=None):
+        """The notes' model from g (acceleration) and R (length); defaults: g0 = 9.80665 m/s2, R = 6371 km and
+        Earth's circular heliocentric speed sqrt(G M_sun / a_earth) = 29.785 km/s (Standish mean a)."""
+        g = np.asarray(STANDARD_GRAVITY) if g is None else units.to_si(g, units.M_PER_S / units.S, "surface gravity g")
+        binary_core.require_positive(g, "surface gravity g", "m / s2")
+        radius = np.asarray(EARTH_MEAN_RADIUS) if radius is None else _length(radius, "radius R")
+        speed = _orbital_speed(BODIES["Earth"]) if orbital_speed is None else _speed(orbital_speed, "orbital speed")
+        return cls(g, radius, speed)
+
+    @classmethod
+    def of(cls, planet):
+        """From a named body's GM and equatorial radius (g = G M / R**2) and its mean orbit about its primary."""
+        named = _named(planet)
+        if named is None:
+            raise TypeError(
+                f"{planet!r} is not a catalogued body; for any other planet use "
+                "CosmicVelocities.from_surface_gravity(g, radius, orbital_speed)"
+            )
+        g = escape_core.surface_gravity(named.gm, named.radius)
+        speed = None if named.orbit is None else _orbital_speed(named)
+        return cls(np.asarray(g), np.asarray(named.radius), speed)
+
+    @cached_property
+    def surface_gravity(self):
+        """g (m/s2)."""
+        return self.g << units.M_PER_S / units.S
+
+    @cached_property
+    def surface_radius(self):
+        """R (m)."""
+        return self.radius << units.M
+
+    @cached_property
+    def first_cosmic_velocity(self):
+        """v1 = sqrt(g R) (m/s): the circular speed at the surface; 7.904 km/s for the notes' Earth."""
+        return escape_core.first_cosmic_velocity(self.g, self.radius) << units.M_PER_S
+
+    @cached_property
+    def second_cosmic_velocity(self):
+        """v2 = sqrt(2 g R) (m/s): the escape speed from the surface; 11.178 km/s for the notes' Earth."""
+        return escape_core.second_cosmic_velocity(self.g, self.radius) << units.M_PER_S
+
+    @cached_property
+    def orbital_speed(self):
+        """v_orbit (m/s): the planet's circular speed about its primary (29.785 km/s for Earth about the Sun)."""
+        return self._require_orbit("orbital speed") << units.M_PER_S
+
+    @cached_property
+    def hyperbolic_excess_speed(self):
+        """(sqrt 2 - 1) v_orbit (m/s): the speed left after escaping the planet that reaches the primary's escape
+        speed sqrt(2) v_orbit along the planet's motion; 12.337 km/s for Earth."""
+        return escape_core.escape_excess_speed(self._require_orbit("hyperbolic excess speed")) << units.M_PER_S
+
+    @cached_property
+    def third_cosmic_velocity(self):
+        """v3 = sqrt(((sqrt 2 - 1) v_orbit)**2 + v2**2) (m/s), patched conics; 16.648 km/s for the notes' Earth."""
+        v2 = escape_core.second_cosmic_velocity(self.g, self.radius)
+        return escape_core.third_cosmic_velocity(self._require_orbit("third cosmic velocity"), v2) << units.M_PER_S
+
+    def _require_orbit(self, quantity):
+        if self.v_orbit is None:
+            raise OrbitDomainError(f"{quantity} needs the planet's orbital speed about its primary; this body has none")
+        return self.v_orbit
+
+    def quantities(self, only=None):
+        """{snake_case name: Quantity} (or `only` those); without `only`, the third velocity is left out when the
+        body has no orbit."""
+        return _table(self, COSMIC_NAMES, only)
+
+
+def _orbital_speed(named):
+    """Circular speed sqrt(G M_primary / a) (m/s) of a catalogued body on its mean orbit."""
+    return twobody.circular_speed(named.orbit.a, BODIES[named.orbit.primary].gm)
+
+
+@dataclass(frozen=True, eq=False)
+class SynchronousOrbit:
+    """The circular orbit whose period equals a body's sidereal rotation period (XXI.x); float64 SI fields.
+
+    mu (m3/s2), rotation_period (s) and body_radius (m, or None: no altitude then). Any inclination gives a
+    geosynchronous orbit of this radius; the equatorial one is geostationary.
+    """
+
+    mu: np.ndarray
+    rotation_period: np.ndarray
+    body_radius: np.ndarray | None = None
+
+    @classmethod
+    def of(cls, primary="Earth", period=None, radius=None):
+        """For a named body (its GM, sidereal rotation period and equatorial radius) or a mass or GM; `period`
+        (time) and `radius` (length) override or supply the rotation period and the body's radius."""
+        named = _named(primary)
+        mu = np.asarray(named.gm) if named is not None else gravitational_parameter_of(primary, "primary mass M")
+        if period is None and named is None:
+            raise TypeError("a mass or GM has no rotation: give period=..., e.g. period=23.93 * u.h")
+        t = np.asarray(named.rotation_period) if period is None else units.to_si(period, units.S, "rotation period T")
+        binary_core.require_positive(t, "rotation period T", "s")
+        size = None if named is None else np.asarray(named.radius)
+        size = size if radius is None else _length(radius, "body radius R")
+        return cls(mu, t, size)
+
+    @cached_property
+    def orbit_radius(self):
+        """r = (mu T**2 / (4 pi**2))**(1/3) (m) from the body's centre; 42164.17 km for Earth."""
+        return escape_core.synchronous_radius(self.mu, self.rotation_period) << units.M
+
+    @cached_property
+    def altitude(self):
+        """r - R (m) above the body's radius; 35786.1 km for Earth's equatorial radius 6378.1 km."""
+        if self.body_radius is None:
+            raise OrbitDomainError("altitude needs the body's radius: build it with radius=... km")
+        r, radius = np.broadcast_arrays(self.orbit_radius.to_value(units.M), self.body_radius)
+        inside = r <= radius
+        if np.any(inside):
+            index = tuple(np.argwhere(inside)[0])
+            raise OrbitDomainError(
+                f"synchronous orbit radius r = {float(r[index])!r} m lies inside the body (radius R = "
+                f"{float(radius[index])!r} m): the altitude r - R must be > 0 m, so there is no synchronous orbit"
+            )
+        return r - radius << units.M
+
+    @cached_property
+    def orbital_speed(self):
+        """v = 2 pi r / T = sqrt(mu / r) (m/s); 3.0747 km/s for Earth."""
+        return twobody.circular_speed(self.orbit_radius.to_value(units.M), self.mu) << units.M_PER_S
+
+    @cached_property
+    def angular_velocity(self):
+        """omega = 2 pi / T (rad/s), the body's rotation rate."""
+        return 2.0 * np.pi / self.rotation_period << units.RAD_PER_S
+
+    @cached_property
+    def period(self):
+        """T (s), the sidereal rotation period."""
+        return self.rotation_period << units.S
+
+    def quantities(self, only=None):
+        """{snake_case name: Quantity} (or `only` those); without `only`, altitude is left out when undefined."""
+        return _table(self, SYNCHRONOUS_NAMES, only)
+
+
+def max_elongation(inner, outer):
+    """Greatest angle arcsin(r / R) (rad) between the star and an inner planet seen from an outer one (XXI.xi).
+
+    inner and outer are orbit radii (lengths) of circular coplanar orbits, or catalogued body names (their
+    mean semi-major axes). Reached when the sight line is tangent to the inner orbit; within 2 ulp of mpmath.
+    """
+    r = _orbit_radius(inner, "inner orbit radius r")
+    big_r = _orbit_radius(outer, "outer orbit radius R")
+    r, big_r = np.broadcast_arrays(r, big_r)
+    outside = r >= big_r
+    if np.any(outside):
+        index = tuple(np.argwhere(outside)[0])
+        raise OrbitDomainError(
+            f"inner orbit radius r = {float(r[index])!r} m is outside the allowed range (0, R) m with the outer "
+            f"radius R = {float(big_r[index])!r} m: the inner planet must orbit inside the observer's orbit"
+        )
+    return escape_core.max_elongation(r, big_r) << units.RAD
+
+
+def _orbit_radius(value, name):
+    named = _named(value)
+    if named is None:
+        return _length(value, name)
+    if named.orbit is None:
+        raise OrbitDomainError(f"{name}: {named.name} has no orbit in the catalogue; give a length instead")
+    return np.asarray(named.orbit.a)
+
+
+def _table(obj, all_names, only):
+    names = all_names if only is None else list(only)
+    unknown = [n for n in names if n not in all_names]
+    if unknown:
+        raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(all_names)}")
+    result = {}
+    for name in names:
+        try:
+            result[name] = getattr(obj, name)
+        except OrbitDomainError:
+            if only is not None:
+                raise
+    return result
+
+
+COSMIC_NAMES = [
+    "surface_gravity",
+    "surface_radius",
+    "orbital_speed",
+    "first_cosmic_velocity",
+    "second_cosmic_velocity",
+    "hyperbolic_excess_speed",
+    "third_cosmic_velocity",
+]
+
+SYNCHRONOUS_NAMES = ["period", "angular_velocity", "orbit_radius", "altitude", "orbital_speed"]

@@ -1,0 +1,107 @@
+"""The calculator verbs `orbits binary`, `orbits flyby` and `orbits escape`: outputs, JSON, exit codes, errors."""
+
+import json
+
+import pytest
+from typer.testing import CliRunner
+
+from orbits_cli.main import app
+
+runner = CliRunner()
+
+
+def run_json(*args):
+    result = runner.invoke(app, [*args, "--format", "json"])
+    assert result.exit_code == 0, result.output
+    return json.loads(result.stdout)
+
+
+def test_binary_from_body_names_in_json():
+    data = run_json("binary", "--m1", "Earth", "--m2", "Moon", "--a", "384399 km", "--e", "0.0549")
+    assert data["period"]["unit"] == "s" and abs(data["period"]["value"] / 86400 - 27.2845) < 1e-4
+    assert abs(data["mass_fraction"]["value"] - 0.0121506) < 1e-7
+    assert abs(data["star1_semi_major_axis"]["value"] / 1e3 - 4670.67) < 0.01  # the Earth about the barycentre
+    assert data["joining_line_areal_velocity"]["unit"] == "m2 / s"
+
+
+def test_binary_from_masses_and_a_period_with_only():
+    data = run_json(
+        "binary", "--m1", "1 solMass", "--m2", "1 jupiterMass", "--period", "4.23 d", "--only", "star1_periapsis_speed"
+    )
+    assert list(data) == ["star1_periapsis_speed"]
+    assert abs(data["star1_periapsis_speed"]["value"] - 125.59) < 0.01  # a hot Jupiter's pull on its star
+
+
+def test_binary_table():
+    result = runner.invoke(app, ["binary", "--m1", "Sun", "--m2", "Jupiter", "--a", "5.2 AU", "--e", "0.048"])
+    assert result.exit_code == 0, result.output
+    assert "star2_covertex_speed" in result.stdout and "reduced_mass" in result.stdout
+
+
+def test_flyby_past_a_planet_and_the_inverse():
+    by_periapsis = run_json("flyby", "--primary", "Jupiter", "--v-inf", "5.6 km/s", "--periapsis", "200000 km")
+    b = by_periapsis["impact_parameter"]["value"]
+    assert abs(b / 1e3 - 1286817.63) < 0.01
+    by_b = run_json("flyby", "--primary", "Jupiter", "--v-inf", "5.6 km/s", "--b", f"{b} m")
+    assert abs(by_b["periapsis_distance"]["value"] / 2e8 - 1) < 1e-14
+    assert abs(by_b["deflection_angle"]["value"] - 2.5248384630328804) < 1e-14
+
+
+def test_flyby_of_two_masses_and_with_a_mass():
+    pair = run_json("flyby", "--primary", "Sun", "--secondary", "Jupiter", "--v-inf", "1 km/s", "--b", "1 AU")
+    assert {"star1_periapsis_speed", "star2_periapsis_speed", "energy"} <= set(pair)
+    probe = run_json("flyby", "--primary", "Earth", "--mass", "722 kg", "--v-inf", "3 km/s", "--b", "20000 km")
+    assert probe["energy"]["unit"] == "J" and abs(probe["energy"]["value"] - 722 * 3e3**2 / 2) < 1e-3
+
+
+def test_escape_cosmic_velocities_of_the_notes():
+    data = run_json("escape", "cosmic")
+    speeds = [round(data[n]["value"] / 1e3, 3) for n in ("first_cosmic_velocity", "second_cosmic_velocity")]
+    assert speeds == [7.904, 11.178]
+    assert round(data["third_cosmic_velocity"]["value"] / 1e3, 2) == 16.65
+    jupiter = run_json("escape", "cosmic", "Jupiter", "--only", "second_cosmic_velocity")
+    assert round(jupiter["second_cosmic_velocity"]["value"] / 1e3, 1) == 59.5
+
+
+def test_escape_speed_geo_and_elongation():
+    speed = run_json("escape", "speed", "Earth")
+    assert speed["escape_speed"]["unit"] == "km / s" and round(speed["escape_speed"]["value"], 3) == 11.18
+    far = run_json("escape", "speed", "5.9722e24 kg", "--distance", "42164 km")
+    assert round(far["escape_speed"]["value"], 3) == 4.348
+    geo = run_json("escape", "geo")
+    assert round(geo["altitude"]["value"] / 1e3) == 35786
+    mars = run_json("escape", "geo", "6.4171e23 kg", "--period", "88642.66 s", "--radius", "3396.2 km")
+    assert round(mars["altitude"]["value"] / 1e3) == 17032
+    venus = run_json("escape", "elongation", "--inner", "0.723 AU", "--outer", "Earth")
+    assert venus["max_elongation"]["unit"] == "deg" and round(venus["max_elongation"]["value"], 1) == 46.3
+
+
+@pytest.mark.parametrize(
+    "args, fragment",
+    [
+        (["binary", "--m1", "Earth", "--m2", "-1 kg", "--a", "1 km"], "mass m2 = -1.0 kg is outside the allowed range"),
+        (["binary", "--m1", "Pluto", "--m2", "Moon", "--a", "1 km"], "--m1: 'Pluto' is neither a known body"),
+        (["binary", "--m1", "Earth", "--m2", "Moon"], "give exactly one size"),
+        (["binary", "--m1", "Earth", "--m2", "Moon", "--a", "1 km", "--period", "1 d"], "give exactly one size"),
+        (["binary", "--m1", "Earth", "--m2", "Moon", "--period", "1 d", "--e", "1.5"], "e = 1.5 is outside"),
+        (["binary", "--m1", "Earth", "--m2", "Moon", "--a", "7000 s"], "not a length"),
+        (["flyby", "--primary", "Earth", "--v-inf", "0 km/s", "--b", "1 km"], "v_inf = 0.0 m / s is outside"),
+        (["flyby", "--primary", "Earth", "--v-inf", "1 km/s", "--b", "-1 km"], "impact parameter b = -1000.0 m"),
+        (["flyby", "--primary", "Earth", "--v-inf", "1 km/s"], "exactly one of --b"),
+        (
+            ["flyby", "--primary", "Sun", "--v-inf", "1 km/s", "--b", "1 AU", "--mass", "1 kg", "--secondary", "Earth"],
+            "not both",
+        ),
+        (["escape", "geo", "--period", "-1 h"], "rotation period T = -3600.0 s is outside the allowed range"),
+        (["escape", "speed", "5 kg"], "has no surface"),
+        (["escape", "cosmic", "--g", "9.8"], "has no unit"),
+        (["escape", "cosmic", "Earth", "--g", "9.8 m/s2"], "not both"),
+        (["escape", "elongation", "--inner", "2 AU", "--outer", "1 AU"], "outside the allowed range (0, R)"),
+    ],
+)
+def test_errors_exit_2_with_one_line_on_stderr(args, fragment):
+    result = runner.invoke(app, args)
+    assert result.exit_code == 2, result.output
+    assert fragment in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert result.stdout == ""
