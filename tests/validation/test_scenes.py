@@ -39,7 +39,7 @@ def variant(**changes):
 
 
 def test_builtin_scenes_cover_every_two_body_model():
-    assert {"circular", "eccentric", "near_parabolic", "flyby", "binary"} <= set(BUILTIN)
+    assert {"circular", "eccentric", "near_parabolic", "flyby", "binary", "stellar_encounter"} <= set(BUILTIN)
     eccentricities = {name: [b.orbit.e for b in scene.load(name).bodies if b.orbit] for name in BUILTIN}
     assert eccentricities["near_parabolic"] == [0.999999] and eccentricities["eccentric"] == [0.9]
     assert eccentricities["flyby"][0] > 1 and eccentricities["circular"] == [0.0]
