@@ -6,7 +6,7 @@ astropy and the backends are imported inside the commands, so `orbits --help` st
 
 import typer
 
-from orbits_cli.commands import bench, binary, escape, flyby, info, kepler, orbit, precision, validate
+from orbits_cli.commands import bench, binary, cosmology, escape, flyby, info, kepler, orbit, precision, validate
 from orbits_cli.options import reports_errors
 
 app = typer.Typer(
@@ -20,6 +20,7 @@ app.add_typer(bench_app, name="bench")
 app.command("validate")(reports_errors(validate.command))
 app.command("orbit")(reports_errors(orbit.command))
 app.command("kepler")(reports_errors(kepler.command))
+app.command("cosmology")(reports_errors(cosmology.command))
 app.command("binary")(reports_errors(binary.command))
 app.command("flyby")(reports_errors(flyby.command))
 app.add_typer(escape.app, name="escape")

@@ -6,6 +6,7 @@ Public API: Orbit (orbits.orbit), named bodies and constants (orbits.constants),
 
 from orbits.binary import Binary, Star
 from orbits.constants import BODIES, Body, G, body
+from orbits.cosmology import Cosmology, ExpandingSphere
 from orbits.errors import ConvergenceError, DegenerateOrbitError, OrbitDomainError, OrbitsError
 from orbits.escape import CosmicVelocities, SynchronousOrbit, escape_speed, max_elongation
 from orbits.flyby import Flyby
@@ -26,6 +27,8 @@ __all__ = [
     "SynchronousOrbit",
     "escape_speed",
     "max_elongation",
+    "Cosmology",
+    "ExpandingSphere",
     "ConvergenceError",
     "DegenerateOrbitError",
     "OrbitDomainError",

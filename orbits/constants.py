@@ -23,6 +23,9 @@ SIDEREAL_DAY = 86_164.0905
 #: Standard gravity (m / s2), CGPM 1901 (exact), as in the notes (XIX.vii).
 STANDARD_GRAVITY = 9.80665
 
+#: Speed of light in vacuum (m / s), exact by the SI definition of the metre (astropy.constants.c).
+SPEED_OF_LIGHT = const.c.si.value
+
 #: Earth's mean radius (m) as the notes use it (XXI.ix, R = 6371 km): the IUGG mean radius R1 = 6371.0088 km
 #: of the GRS 80 ellipsoid (Moritz, Geodetic Reference System 1980, J. Geodesy 74, 2000) rounded to 1 km.
 EARTH_MEAN_RADIUS = 6_371_000.0

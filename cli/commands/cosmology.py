@@ -1,0 +1,114 @@
+"""`orbits cosmology`: the expanding universe (XXIV) and the Friedmann models around it, at a redshift or a time."""
+
+from typing import Annotated
+
+import typer
+
+from orbits_cli.options import Format, FormatOption, OnlyOption
+
+NOTES_HUBBLE = "0.5e-10 / yr"  # XXIV.iv's H, which gives the notes' age 1.33e10 yr
+
+_TITLES = {
+    "matter_only": "Einstein-de Sitter",
+    "lambda_only": "de Sitter",
+    "radiation_only": "Radiation only",
+    "curvature_only": "Milne (empty, open)",
+    "flat_matter_lambda": "Flat matter + Lambda",
+    "quadrature": "Friedmann (quadrature)",
+}
+
+
+def command(
+    h0: Annotated[
+        str, typer.Option("--H0", help="Hubble constant with units: '70 km/s/Mpc', '0.5e-10 / yr', '2.3e-18 / s'")
+    ] = NOTES_HUBBLE,
+    om: Annotated[float | None, typer.Option("--Om", help="matter density parameter today")] = None,
+    ol: Annotated[float | None, typer.Option("--Ol", help="cosmological-constant density parameter today")] = None,
+    orad: Annotated[float | None, typer.Option("--Or", help="radiation density parameter today (default 0)")] = None,
+    ok: Annotated[
+        float | None, typer.Option("--Ok", help="curvature parameter (default: from Om + Or + Ok + Ol = 1)")
+    ] = None,
+    z: Annotated[str | None, typer.Option("--z", help="redshift(s), comma-separated, e.g. '0.5,1,inf'")] = None,
+    t: Annotated[str | None, typer.Option("--t", help="time since the big bang, e.g. '1 Gyr'")] = None,
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+):
+    """H(z), age, lookback time, comoving distance and a(t) of a Friedmann universe, today or at --z or --t.
+
+    Einstein-de Sitter with the notes' H = 0.5e-10 / yr by default (XXIV.iv: age 1.33e10 yr). Give --Om alone
+    (or --Ol alone) for a flat universe; give two of --Om, --Ol, --Ok and the third follows from the sum 1.
+    """
+    from orbits_cli import params, render
+
+    cosmology = build(h0, om, ol, orad, ok)
+    table = cosmology.quantities(**epoch(z, t), only=params.names(only))
+    render.emit(title(cosmology), display_units(table), fmt.value)
+
+
+def build(h0, om, ol, orad, ok):
+    """The Cosmology of the options: Einstein-de Sitter when no density is given."""
+    from orbits import Cosmology
+
+    hubble = hubble_constant(h0)
+    if all(x is None for x in (om, ol, orad, ok)):
+        return Cosmology.einstein_de_sitter(hubble)
+    if om is None and ol is None:
+        raise typer.BadParameter("give --Om or --Ol (or both) with --Or or --Ok; no density at all: Einstein-de Sitter")
+    return Cosmology.from_densities(hubble, Om0=om, Ol0=ol, Or0=orad, Ok0=ok)
+
+
+def hubble_constant(text):
+    """H0 Quantity from "VALUE UNIT" with units of 1 / time (km/s/Mpc reads without astropy's slash warning)."""
+    import warnings
+
+    import astropy.units as u
+
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", u.UnitsWarning)
+            value = u.Quantity(text)
+    except (TypeError, ValueError):
+        raise typer.BadParameter(f"--H0: cannot read {text!r} as a quantity; write e.g. '70 km/s/Mpc'") from None
+    if value.unit == u.one:
+        raise typer.BadParameter(f"--H0: {text!r} has no unit; write e.g. '{text} km/s/Mpc' or '{text} / yr'")
+    if not value.unit.is_equivalent(u.s**-1):
+        raise typer.BadParameter(f"--H0: {text!r} is a {value.unit.physical_type}, not a rate (1 / time)")
+    return value
+
+
+def epoch(z, t):
+    """{"z": redshifts} or {"t": time} from the options (neither: today)."""
+    import numpy as np
+
+    from orbits_cli import params
+
+    if z is not None and t is not None:
+        raise typer.BadParameter("give --z (a redshift) or --t (a time since the big bang), not both")
+    if t is not None:
+        return {"t": params.quantity(t, "time", "--t")}
+    if z is None:
+        return {}
+    try:
+        values = np.array([float(x) for x in z.split(",")])
+    except ValueError:
+        raise typer.BadParameter(f"--z: cannot read {z!r}; write numbers such as '0.5' or '0.5,1,inf'") from None
+    return {"z": values[0] if values.size == 1 else values}
+
+
+def title(cosmology):
+    """E.g. "Einstein-de Sitter, H0 = 48.8896 km/s/Mpc, Om = 1" (the nonzero densities only)."""
+    import astropy.units as u
+
+    h0 = cosmology.hubble_constant.to_value(u.km / u.s / u.Mpc)
+    labels = ("Om", "Or", "Ok", "Ol")
+    values = (cosmology.omega_m, cosmology.omega_r, cosmology.omega_k, cosmology.omega_l)
+    densities = "".join(f", {label} = {value:.6g}" for label, value in zip(labels, values) if value != 0)
+    return f"{_TITLES[cosmology.method]}, H0 = {h0:.6g} km/s/Mpc{densities}"
+
+
+def display_units(quantities):
+    """The table in astronomers' units: times in Gyr, lengths in Mpc, rates in km/s/Mpc."""
+    import astropy.units as u
+
+    shown = {"time": u.Gyr, "length": u.Mpc, "frequency": u.km / u.s / u.Mpc}
+    return {name: q.to(shown.get(str(q.unit.physical_type), q.unit)) for name, q in quantities.items()}

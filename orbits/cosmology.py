@@ -1,0 +1,399 @@
+"""The expanding universe of section XXIV and the Friedmann models around it, with astropy units.
+
+    >>> import astropy.units as u
+    >>> from orbits import Cosmology, ExpandingSphere
+    >>> notes = Cosmology.einstein_de_sitter(0.5e-10 / u.yr)  # XXIV.iv: H = 0.5e-10 per year
+    >>> notes.age().to(u.yr)
+    <Quantity 1.33333333e+10 yr>
+    >>> notes.hubble_constant.to(u.km / u.s / u.Mpc).round(2)
+    <Quantity 48.89 km / (Mpc s)>
+    >>> flat = Cosmology.from_densities(67.66 * u.km / u.s / u.Mpc, Om0=0.30966)  # flat: Ol0 = 1 - Om0
+    >>> flat.method, flat.age().to(u.Gyr).round(3)
+    ('flat_matter_lambda', <Quantity 13.81 Gyr>)
+    >>> shell = ExpandingSphere.from_hubble(0.5e-10 / u.yr, 1 * u.Mpc)  # XXIV's Newtonian shell
+    >>> shell.time_at_radius(1 * u.Mpc).to(u.yr)
+    <Quantity 1.33333333e+10 yr>
+
+Cosmology stores H0 (1/s) and today's density parameters as floats; like astropy.cosmology it multiplies the
+dimensionless E(z) and its integrals by one scale, t_H = 1 / H0 or d_H = c / H0, and it chooses its method
+(closed form or quadrature, orbits.core.cosmology.Friedmann) once, at construction. astropy.cosmology itself
+is never imported (it costs ~0.7 s); the tests use it as an independent reference.
+
+ExpandingSphere is the notes' Newtonian model: a shell enclosing G M moves at the zero-energy speed
+sqrt(2 G M / r), so r(t) = (9 G M t**2 / 2)**(1/3), v(t) = (4 G M / (3 t))**(1/3), H = 2 / (3 t); its mean
+density is exactly critical (Omega = 1), which is why it agrees with Cosmology.einstein_de_sitter.
+expanding_sphere_problem sets the same scene up for the N-body backends.
+"""
+
+import math
+import operator
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import astropy.units as u
+import numpy as np
+
+from orbits import units
+from orbits.constants import SPEED_OF_LIGHT, G
+from orbits.core import cosmology as core
+from orbits.errors import OrbitDomainError
+
+PER_S = u.s**-1
+KG_PER_M3 = u.kg / u.m**3
+_HUBBLE_EXAMPLE = "70 * u.km / u.s / u.Mpc or 0.5e-10 / u.yr"
+
+
+def _hubble(value, name="Hubble constant H0"):
+    """H (1/s) from a Quantity in any unit of 1/time (km/s/Mpc, 1/yr, 1/s); finite and > 0."""
+    if not isinstance(value, u.Quantity):
+        raise TypeError(f"{name} = {value!r} has no unit; pass a Quantity such as {_HUBBLE_EXAMPLE}")
+    hubble = units.to_si(value, PER_S, name)
+    if not np.all(np.isfinite(hubble) & (hubble > 0)):
+        bad = np.ravel(value)[~np.ravel(np.isfinite(hubble) & (hubble > 0))][0]
+        raise OrbitDomainError(f"{name} = {bad} is outside the allowed range (0, inf) 1 / s: it must be positive")
+    return hubble
+
+
+def _require_positive(x, name, unit):
+    """Raise OrbitDomainError naming the first entry of x that is not finite and > 0."""
+    bad = ~(np.isfinite(x) & (x > 0))
+    if np.any(bad):
+        raise OrbitDomainError(
+            f"{name} = {float(np.asarray(x)[bad].flat[0])!r} {unit} is outside the allowed range (0, inf) {unit}"
+        )
+
+
+def _densities(Om0, Ol0, Or0, Ok0):
+    """(Omega_m, Omega_r, Omega_k, Omega_Lambda) today from those given; see Cosmology.from_densities."""
+    given = {"Om0": Om0, "Ol0": Ol0, "Or0": Or0, "Ok0": Ok0}
+    om, ol, orad, ok = (None if v is None else float(units.to_number(v, k)) for k, v in given.items())
+    orad = 0.0 if orad is None else orad
+    if om is None and ol is None:
+        raise TypeError("give Om0 or Ol0 (or both); Ok0 alone does not fix the model")
+    if ok is None and (om is None or ol is None):
+        ok = 0.0  # one of Om0, Ol0: a flat universe
+    if om is None:
+        om = 1.0 - ol - orad - ok
+    elif ol is None:
+        ol = 1.0 - om - orad - ok
+    elif ok is None:
+        ok = 1.0 - om - ol - orad
+    return om, orad, ok, ol
+
+
+@dataclass(frozen=True, eq=False)
+class Cosmology:
+    """A Friedmann universe: H0 (1/s) and today's density parameters (dimensionless, summing to 1).
+
+    Build it with Cosmology.einstein_de_sitter, Cosmology.de_sitter or Cosmology.from_densities. Redshifts z
+    are plain numbers (or dimensionless Quantities) in (-1, inf] and broadcast; times are Quantities.
+    """
+
+    h0: float
+    omega_m: float
+    omega_r: float = 0.0
+    omega_k: float = 0.0
+    omega_l: float = 0.0
+    model: core.Friedmann = field(init=False, repr=False)
+
+    def __post_init__(self):
+        _require_positive(self.h0, "Hubble constant H0", "1 / s")
+        model = core.Friedmann(self.omega_m, self.omega_r, self.omega_k, self.omega_l)
+        object.__setattr__(self, "h0", float(self.h0))
+        object.__setattr__(self, "model", model)
+        for name in ("omega_m", "omega_r", "omega_k", "omega_l"):
+            object.__setattr__(self, name, getattr(model, name))
+
+    # ---- constructors -------------------------------------------------------------------------
+    @classmethod
+    def einstein_de_sitter(cls, H0):
+        """Flat, matter only (Omega_m = 1): the relativistic twin of the notes' Newtonian sphere (XXIV)."""
+        return cls(float(_hubble(H0)), 1.0)
+
+    @classmethod
+    def de_sitter(cls, H0):
+        """Flat, cosmological constant only (Omega_Lambda = 1): E = 1 and no big bang."""
+        return cls(float(_hubble(H0)), 0.0, omega_l=1.0)
+
+    @classmethod
+    def from_densities(cls, H0, Om0=None, Ol0=None, Or0=None, Ok0=None):
+        """Any Friedmann universe. Or0 defaults to 0. Of Om0, Ol0 and Ok0 give two and the third follows from
+        Om0 + Or0 + Ok0 + Ol0 = 1; give only Om0 or only Ol0 for a flat universe (Ok0 = 0); or give all three,
+        which must then sum to 1 with Or0 (within 1e-12)."""
+        return cls(float(_hubble(H0)), *_densities(Om0, Ol0, Or0, Ok0))
+
+    # ---- scales -------------------------------------------------------------------------------
+    @cached_property
+    def method(self):
+        """How distances and times are computed, chosen at construction (orbits.core.cosmology.METHODS)."""
+        return self.model.method
+
+    @cached_property
+    def hubble_constant(self):
+        """H0 (1/s)."""
+        return self.h0 << PER_S
+
+    @cached_property
+    def hubble_time(self):
+        """t_H = 1 / H0 (s)."""
+        return self._t_h << units.S
+
+    @cached_property
+    def hubble_distance(self):
+        """d_H = c / H0 (m)."""
+        return self._d_h << units.M
+
+    @cached_property
+    def _t_h(self):
+        return 1.0 / self.h0
+
+    @cached_property
+    def _d_h(self):
+        return SPEED_OF_LIGHT / self.h0
+
+    # ---- quantities at a redshift -------------------------------------------------------------
+    def hubble_parameter(self, z=0.0):
+        """H(z) = H0 E(z) (1/s), E**2 = Omega_r x**4 + Omega_m x**3 + Omega_k x**2 + Omega_Lambda, x = 1 + z."""
+        return self.h0 * self.model.efunc(_redshift(z)) << PER_S
+
+    def age(self, z=0.0):
+        """t(z) (s) since the big bang: (2/3) / H0 (1 + z)**-1.5 for Einstein-de Sitter (XXIV.iv); inf for de Sitter."""
+        return self.model.age(_redshift(z), self._t_h) << units.S
+
+    def lookback_time(self, z):
+        """t0 - t(z) (s): how long ago light left redshift z."""
+        return self.model.lookback_time(_redshift(z), self._t_h) << units.S
+
+    def comoving_distance(self, z):
+        """Line-of-sight comoving distance D_C = (c / H0) int_0^z dz' / E(z') (m); 2 c / H0 at z = inf for EdS."""
+        return self.model.comoving_distance(_redshift(z), self._d_h) << units.M
+
+    def critical_density(self, z=0.0):
+        """rho_c(z) = 3 H(z)**2 / (8 pi G) (kg/m3); inf beyond the float64 range."""
+        with np.errstate(over="ignore"):
+            return core.critical_density(self.hubble_parameter(z).to_value(PER_S), G) << KG_PER_M3
+
+    def density_parameter(self, z=0.0):
+        """Omega_m(z) = rho_m(z) / rho_c(z) (dimensionless): 1 at every z for Einstein-de Sitter."""
+        return self.model.matter_density_parameter(_redshift(z)) << u.one
+
+    def recession_speed(self, distance, z=0.0):
+        """Hubble's law v = H(z) r (m/s) for a proper distance r (length) at redshift z (XXIV.iv)."""
+        r = units.to_si(distance, units.M, "distance r")
+        return r * self.hubble_parameter(z).to_value(PER_S) << units.M_PER_S
+
+    # ---- quantities at a time -----------------------------------------------------------------
+    def scale_factor(self, t):
+        """a(t) (dimensionless) at time t (time) after the big bang; (1.5 H0 t)**(2/3) for Einstein-de Sitter."""
+        return self.model.scale_factor(_cosmic_time(t), self._t_h) << u.one
+
+    def redshift(self, t):
+        """z = 1 / a(t) - 1 (dimensionless) of light emitted at time t (time) after the big bang."""
+        return _redshift_of(self.scale_factor(t))
+
+    # ---- tables -------------------------------------------------------------------------------
+    def quantities(self, z=None, t=None, only=None):
+        """{snake_case name: Quantity} at redshift z or at time t after the big bang (default: today, z = 0),
+        or `only` those names (QUANTITY_NAMES)."""
+        names = QUANTITY_NAMES if only is None else list(only)
+        unknown = [n for n in names if n not in QUANTITY_NAMES]
+        if unknown:
+            raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(QUANTITY_NAMES)}")
+        if z is not None and t is not None:
+            raise TypeError("give the epoch as a redshift z or a time t, not both")
+        if t is None:
+            z = _redshift(0.0 if z is None else z)
+            with np.errstate(divide="ignore"):
+                epoch = {"redshift": z << u.one, "scale_factor": 1.0 / (1.0 + z) << u.one}
+        else:
+            a = self.scale_factor(t)
+            epoch = {"scale_factor": a, "redshift": _redshift_of(a), "age": _cosmic_time(t) << units.S}
+            epoch["lookback_time"] = self.age() - epoch["age"]
+            z = epoch["redshift"].to_value(u.one)
+        return {name: epoch[name] if name in epoch else self._at(name, z) for name in names}
+
+    def _at(self, name, z):
+        """One QUANTITY_NAMES entry at redshift z."""
+        if name in ("hubble_time", "hubble_distance"):
+            return getattr(self, name)
+        return getattr(self, name)(z)
+
+
+QUANTITY_NAMES = [
+    "redshift",
+    "scale_factor",
+    "hubble_parameter",
+    "age",
+    "lookback_time",
+    "comoving_distance",
+    "critical_density",
+    "density_parameter",
+    "hubble_time",
+    "hubble_distance",
+]
+
+
+def _redshift(z):
+    """z as a float64 array; a length or other dimensional Quantity is a UnitConversionError."""
+    return units.to_number(z, "redshift z")
+
+
+def _redshift_of(a):
+    """z = 1 / a - 1 (dimensionless) for a scale factor Quantity a; inf at a = 0."""
+    with np.errstate(divide="ignore"):
+        return 1.0 / a.to_value(u.one) - 1.0 << u.one
+
+
+def _cosmic_time(t):
+    """t (s) since the big bang from a time Quantity; OrbitDomainError, quoting t as given, if negative or NaN."""
+    seconds = units.to_si(t, units.S, "time since the big bang t")
+    bad = np.isnan(seconds) | (seconds < 0)
+    if np.any(bad):
+        value = np.ravel(t)[np.ravel(bad)][0]
+        raise OrbitDomainError(
+            f"time since the big bang t = {value} is outside the allowed range [0, inf) s: it is before the big bang"
+            if value < 0 * units.S
+            else f"time since the big bang t = {value} is not a number; allowed [0, inf) s"
+        )
+    return seconds
+
+
+# ---- the Newtonian sphere of XXIV ---------------------------------------------------------------------------
+
+
+def _gravitational_parameter(mass, name):
+    """G M (m3/s2) from a mass (kg) or a GM (m3/s2) Quantity; finite and > 0."""
+    if isinstance(mass, u.Quantity) and mass.unit.is_equivalent(units.M3_PER_S2):
+        gm = units.to_si(mass, units.M3_PER_S2, name)
+    else:
+        gm = G * units.to_si(mass, units.KG, name)
+    _require_positive(gm, name, "m3 / s2")
+    return gm
+
+
+@dataclass(frozen=True, eq=False)
+class ExpandingSphere:
+    """A shell of the notes' uniform, pressureless sphere (XXIV), at zero energy; gm = G M (m3/s2) of the mass
+    it encloses, a float64 array that broadcasts. Times t are measured from the big bang."""
+
+    gm: np.ndarray
+
+    @classmethod
+    def from_mass(cls, mass):
+        """The shell enclosing mass M (a mass in kg, or G M in m3/s2)."""
+        return cls(_gravitational_parameter(mass, "enclosed mass M"))
+
+    @classmethod
+    def from_hubble(cls, hubble, radius):
+        """The shell at `radius` (length) when the Hubble parameter is H (1/time): v = H r = sqrt(2 G M / r)
+        gives G M = H**2 r**3 / 2."""
+        h = _hubble(hubble, "Hubble parameter H")
+        r = units.to_si(radius, units.M, "shell radius r")
+        _require_positive(r, "shell radius r", "m")
+        return cls(0.5 * h * h * r**3)
+
+    def _time(self, t):
+        return units.to_si(t, units.S, "time since the big bang t")
+
+    def radius(self, t):
+        """r(t) = (9 G M t**2 / 2)**(1/3) (m) at time t (time) after the big bang (XXIV.iii)."""
+        return core.sphere_radius(self._time(t), self.gm) << units.M
+
+    def speed(self, t):
+        """v(t) = (4 G M / (3 t))**(1/3) (m/s), t > 0 (XXIV.iv)."""
+        return core.sphere_speed(self._time(t), self.gm) << units.M_PER_S
+
+    def hubble_parameter(self, t):
+        """H = v / r = 2 / (3 t) (1/s), t > 0 (XXIV.iv); the same for every shell."""
+        return core.sphere_hubble_parameter(self._time(t)) << PER_S
+
+    def time_at_radius(self, r):
+        """t = sqrt(2 r**3 / (9 G M)) (s) at which the shell reaches r (length), inverting r(t)."""
+        r_si = units.to_si(r, units.M, "shell radius r")
+        if np.any(r_si < 0) or not np.all(np.isfinite(r_si)):
+            bad = float(r_si[~(np.isfinite(r_si) & (r_si >= 0))].flat[0])
+            raise OrbitDomainError(f"shell radius r = {bad!r} m is outside the allowed range [0, inf) m")
+        return core.sphere_time(r_si, self.gm) << units.S
+
+    def density(self, t):
+        """rho = 1 / (6 pi G t**2) (kg/m3), t > 0: the mean density M / (4 pi r**3 / 3) inside every shell."""
+        return np.broadcast_to(core.sphere_density(self._time(t), G), np.shape(self.radius(t))) << KG_PER_M3
+
+    def density_parameter(self, t):
+        """Omega = (mean density inside the shell) / rho_c = 2 G M / (H**2 r**3) (dimensionless), t > 0.
+
+        1 to rounding: a sphere expanding at the zero-energy speed has exactly the critical density.
+        """
+        hubble = self.hubble_parameter(t).to_value(PER_S)
+        r = self.radius(t).to_value(units.M)
+        return 2.0 * self.gm / (hubble * hubble * r**3) << u.one
+
+    def quantities(self, t, only=None):
+        """{snake_case name: Quantity} at time t (time) after the big bang, or `only` those (SPHERE_NAMES)."""
+        names = SPHERE_NAMES if only is None else list(only)
+        unknown = [n for n in names if n not in SPHERE_NAMES]
+        if unknown:
+            raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(SPHERE_NAMES)}")
+        return {name: getattr(self, name)(t) for name in names}
+
+
+SPHERE_NAMES = ["radius", "speed", "hubble_parameter", "density", "density_parameter"]
+
+
+# ---- the validation scene -----------------------------------------------------------------------------------
+
+
+def _fibonacci_directions(n):
+    """n unit vectors spread evenly over the sphere (golden-angle spiral), shape (n, 3)."""
+    k = np.arange(n) + 0.5
+    z = 1.0 - 2.0 * k / n
+    phi = k * math.pi * (3.0 - math.sqrt(5.0))
+    rho = np.sqrt((1.0 - z) * (1.0 + z))
+    return np.stack([rho * np.cos(phi), rho * np.sin(phi), z], axis=-1)
+
+
+def expanding_sphere_problem(n_shells=8, *, inner_radius=1.0, outer_radius=4.0, duration=20.0, n_times=11):
+    """(NBodyProblem, analytic positions) for the notes' expanding sphere (XXIV) as a validation scene.
+
+    Code units, G = 1: a central mass gm = 1 at rest at the origin (body 0), and n_shells test particles
+    (bodies 1..n) at radii spaced evenly from inner_radius to outer_radius along directions spread over the
+    sphere, each moving radially outward at the zero-energy speed sqrt(2 / r). Radial orbits have h = 0,
+    which the N-body integrators handle. Shell i started at its own big bang, t0_i = sqrt(2 r_i**3 / 9) before
+    the integration starts, so at integration time tau its radius is (9 (t0_i + tau)**2 / 2)**(1/3) and its
+    Hubble parameter 2 / (3 (t0_i + tau)). Output times are n_times evenly spaced in [0, duration].
+
+    Returned positions have shape (n_times, n_shells + 1, 3). To read physical units, pick a length L and a
+    mass M: lengths scale by L, times by sqrt(L**3 / (G M)) and speeds by sqrt(G M / L).
+    """
+    from orbits.validate.problem import NBodyProblem  # the validation layer, loaded only for the scene
+
+    n = _count(n_shells, "n_shells", 1)
+    steps = _count(n_times, "n_times", 2)
+    for value, name in ((inner_radius, "inner_radius"), (outer_radius, "outer_radius"), (duration, "duration")):
+        _require_positive(np.asarray(value, dtype=float), name, "(code units)")
+    if outer_radius < inner_radius:
+        raise OrbitDomainError(f"outer_radius = {outer_radius!r} is below inner_radius = {inner_radius!r}")
+    radii = np.linspace(inner_radius, outer_radius, n)
+    directions = _fibonacci_directions(n)
+    times = np.linspace(0.0, duration, steps)
+    problem = NBodyProblem(
+        gm=np.concatenate(([1.0], np.zeros(n))),
+        positions=np.vstack([np.zeros(3), radii[:, None] * directions]),
+        velocities=np.vstack([np.zeros(3), np.sqrt(2.0 / radii)[:, None] * directions]),
+        n_active=1,
+        times=times,
+    )
+    t_big_bang = core.sphere_time(radii, 1.0)
+    shells = core.sphere_radius(t_big_bang + times[:, None], 1.0)[..., None] * directions
+    return problem, np.concatenate([np.zeros((steps, 1, 3)), shells], axis=1)
+
+
+def _count(value, name, minimum):
+    """An integer >= minimum (bool rejected), or OrbitDomainError."""
+    try:
+        count = operator.index(value)
+    except TypeError:
+        raise OrbitDomainError(f"{name} = {value!r} is not an integer") from None
+    if isinstance(value, bool) or count < minimum:
+        raise OrbitDomainError(f"{name} = {value!r} is outside the allowed range [{minimum}, inf) (an integer)")
+    return count
