@@ -3,6 +3,7 @@
 from typing import Annotated
 
 import typer
+
 from orbits_cli.options import Format, FormatOption
 
 
@@ -24,9 +25,9 @@ def anomalies_from(e, mean, true):
     """{name: Quantity}: mean, eccentric / hyperbolic / parabolic and true anomalies for one e."""
     import astropy.units as u
     import numpy as np
-    from orbits_cli import params
 
     from orbits.core import anomalies, kepler
+    from orbits_cli import params
 
     if (mean is None) == (true is None):
         raise typer.BadParameter("give exactly one of --M (mean anomaly) and --nu (true anomaly)")

@@ -3,6 +3,7 @@
 from typing import Annotated
 
 import typer
+
 from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
 
 
@@ -44,9 +45,8 @@ def command(
 
 def build(body_name, primary, a, p, q, e, inc, raan, argp, nu, r, v, mass):
     """(Orbit, title) from the command's options; BadParameter for inconsistent combinations."""
-    from orbits_cli import params
-
     from orbits import Orbit, body
+    from orbits_cli import params
 
     mass_q = None if mass is None else params.quantity(mass, "mass", "--mass")
     if body_name is not None:

@@ -4,6 +4,7 @@ and report the differences, the run times and the settings; exit status 1 if any
 from typing import Annotated
 
 import typer
+
 from orbits_cli.options import Format, FormatOption, PlotOption, save_plot
 
 
@@ -22,11 +23,11 @@ def command(
 
     from orbits import scene as scene_module
     from orbits.io import write_atomic
-    from orbits.validate import backends
+    from orbits.validate import backends, models
     from orbits.validate.run import validate
 
-    names = scenes or scene_module.builtin_names()
-    loaded = [scene_module.load(name) for name in names]  # every scene is checked before anything runs
+    names = scenes or scene_module.builtin_names() + models.builtin_names()
+    loaded = [models.load_any(name) for name in names]  # every scene is checked before anything runs
     chosen = [b.strip() for b in backend.split(",") if b.strip()]
     for name in chosen:
         if not backends.available(name):
@@ -56,10 +57,10 @@ def _run(validate, scenes, backend_names, show_progress):
 
     with Progress(transient=True) as progress:
         task = progress.add_task("validating", total=len(scenes))
+        names = [scene.name for scene in scenes]
 
         def advance(name):
-            progress.update(task, description=f"validating {name}")
-            progress.advance(task, 0)
+            progress.update(task, description=f"validating {name}", completed=names.index(name))
 
         report = validate(scenes, backend_names, progress=advance)
         progress.update(task, completed=len(scenes))

@@ -246,11 +246,54 @@ def _conservation(scene, at_scene, runs, analytic_inv):
     return checks
 
 
+def validate_model_scene(model, backend_names=("rebound", "heyoka"), settings=None):
+    """SceneReport comparing a ModelScene's predictions with each named backend (all in code units)."""
+    settings = {**DEFAULT_SETTINGS, **(settings or {})}
+    runs = {name: backends.integrate(name, model.problem, **settings[name]) for name in backend_names}
+    checks, residuals = [], {}
+    if model.expected is not None:
+        residuals = {n: np.max(np.linalg.norm(r.positions - model.expected, axis=-1), axis=-1) / model.length
+                     for n, r in runs.items()}
+        errors = {n: float(np.max(series)) for n, series in residuals.items()}
+        checks.append(Check("positions |dr|/r_max", "", None, errors, errors, model.tolerance["positions"],
+                            "relative error"))
+    if model.checks is not None:
+        checks.extend(_model_checks(model, runs))
+    return SceneReport(
+        name=model.name, description=model.description, checks=checks,
+        wall_times={"analytic": model.predict_seconds, **{n: r.wall_time for n, r in runs.items()}},
+        setup_times={n: r.setup_time for n, r in runs.items()},
+        settings={n: r.settings for n, r in runs.items()},
+        versions={n: r.version for n, r in runs.items()},
+        time_modes={n: r.time_mode for n, r in runs.items()},
+        code_units=CodeUnits(1.0, 1.0),
+        residual_times=model.problem.times if residuals else np.zeros(0),
+        residuals=residuals,
+    )
+
+
+def _model_checks(model, runs):
+    """One Check per model-specific quantity, gathering every backend's measurement of it."""
+    per_backend = {n: model.checks(r.times, r.positions, r.velocities) for n, r in runs.items()}
+    checks = []
+    for k, (quantity, unit, predicted, _, tolerance, kind) in enumerate(next(iter(per_backend.values()))):
+        values = {n: rows[k][3] for n, rows in per_backend.items()}
+        if kind == "relative error":
+            errors = {n: abs(v - predicted) / abs(predicted) for n, v in values.items()}
+        else:
+            errors = dict(values)
+        checks.append(Check(quantity, unit, predicted, values, errors, tolerance, kind))
+    return checks
+
+
 def validate(scenes, backend_names=("rebound", "heyoka"), settings=None, progress=None):
-    """ValidationReport over several scenes; `progress(scene_name)` is called before each one."""
+    """ValidationReport over data scenes and model scenes; `progress(scene_name)` is called before each."""
+    from orbits.validate.models import ModelScene
+
     report = ValidationReport()
     for scene in scenes:
         if progress:
             progress(scene.name)
-        report.scenes.append(validate_scene(scene, backend_names, settings))
+        run = validate_model_scene if isinstance(scene, ModelScene) else validate_scene
+        report.scenes.append(run(scene, backend_names, settings))
     return report
