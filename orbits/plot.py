@@ -87,6 +87,95 @@ def _mark_positions(ax, nus, radii, scale):
         ax.plot(x[1:], y[1:], marker=".", color="k", ls="none", alpha=0.6, label="body at given times")
 
 
+def flyby_plane(flyby, ax=None, unit=None):
+    """Draw a single Flyby in its plane: the hyperbola about the focus, both asymptotes, the impact parameter b
+    (the focus's distance from the incoming asymptote) and the closest approach; the title gives the deflection."""
+    if flyby.shape != ():
+        raise ValueError(f"flyby_plane draws one flyby; this Flyby holds {flyby.shape}: index it first")
+    fig, ax = _axes(ax)
+    orbit = flyby.orbit
+    p, e = float(orbit.p), float(orbit.e)
+    q, b = p / (1 + e), float(flyby.impact_parameter.si.value)
+    a = p / (e * e - 1)  # |a|
+    r_max = 4 * max(b, q)
+    unit = unit or _length_unit(r_max)
+    scale = u.m.to(unit)
+    x, y = _conic_points(p, e, r_max)
+    ax.plot(x * scale, y * scale, color="C0", lw=1.5, label=f"trajectory, e = {e:.4g}")
+    ax.plot(0, 0, marker="*", ms=14, color="orange", ls="none", label="primary (focus)")
+    ax.plot(q * scale, 0, marker="o", color="C3", ls="none", label=f"closest approach {q * scale:.4g} {unit}")
+    nu_inf = np.arccos(-1 / e)
+    centre = np.array([a * e, 0.0])
+    reach = np.linspace(0, (a * e + r_max) * e, 2)  # from the hyperbola's centre out to x = -r_max
+    for sign, name in ((-1, "incoming asymptote"), (1, "outgoing asymptote")):
+        direction = np.array([np.cos(nu_inf), sign * np.sin(nu_inf)])
+        line = centre[:, None] + direction[:, None] * reach
+        ax.plot(line[0] * scale, line[1] * scale, ls="--", color="gray", lw=1, label=name)
+    incoming = np.array([np.cos(nu_inf), -np.sin(nu_inf)])
+    foot = centre + incoming * np.dot(-centre, incoming)  # nearest point of the incoming asymptote to the focus
+    ax.plot(
+        [0, foot[0] * scale],
+        [0, foot[1] * scale],
+        color="C2",
+        lw=1.5,
+        label=f"impact parameter b = {b * scale:.4g} {unit}",
+    )
+    ax.set_title(f"deflection {np.degrees(float(flyby.deflection_angle.to_value(u.rad))):.2f} deg")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(f"x toward closest approach [{unit.to_string()}]")
+    ax.set_ylabel(f"y [{unit.to_string()}]")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="best", fontsize="small")
+    return fig, ax
+
+
+def binary_plane(binary, ax=None, unit=None):
+    """Draw a single Binary in its orbital plane: both stars' ellipses about the centre of mass, the stars at
+    their current positions and the line joining them."""
+    if binary.shape != ():
+        raise ValueError(f"binary_plane draws one binary; this Binary holds {binary.shape}: index it first")
+    fig, ax = _axes(ax)
+    relative = binary.relative
+    p, e, nu = float(relative.p), float(relative.e), float(relative.nu)
+    share2 = float(binary.mass_fraction.to_value(u.one))  # star 2 sits at (1 - x2) r, star 1 at -x2 r
+    unit = unit or _length_unit(p / (1 - e))
+    scale = u.m.to(unit)
+    x, y = _conic_points(p, e, np.inf)
+    r_now = p / (1 + e * np.cos(nu)) * np.array([np.cos(nu), np.sin(nu)])
+    for share, name, color in ((-share2, "star 1", "C0"), (1 - share2, "star 2", "C1")):
+        ax.plot(share * x * scale, share * y * scale, color=color, lw=1.5, label=f"{name} orbit")
+        ax.plot(share * r_now[0] * scale, share * r_now[1] * scale, marker="o", color=color, ls="none")
+    ax.plot(
+        [-share2 * r_now[0] * scale, (1 - share2) * r_now[0] * scale],
+        [-share2 * r_now[1] * scale, (1 - share2) * r_now[1] * scale],
+        color="gray",
+        lw=1,
+        label="joining line",
+    )
+    ax.plot(0, 0, marker="+", ms=12, color="k", ls="none", label="centre of mass")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(f"x toward periapsis [{unit.to_string()}]")
+    ax.set_ylabel(f"y [{unit.to_string()}]")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="best", fontsize="small")
+    return fig, ax
+
+
+def scale_factor_curves(models, t_max, ax=None, samples=200):
+    """a(t) against cosmic time for {label: Cosmology}, from the big bang to t_max (time Quantity)."""
+    fig, ax = _axes(ax)
+    gyr = t_max.to_value(u.Gyr)
+    times = np.linspace(gyr / samples, gyr, samples) * u.Gyr
+    for label, model in models.items():
+        ax.plot(times.to_value(u.Gyr), model.scale_factor(times).to_value(u.one), label=label)
+    ax.axhline(1.0, color="gray", lw=0.8, ls=":")
+    ax.set_xlabel("time since the big bang [Gyr]")
+    ax.set_ylabel("scale factor a [dimensionless]")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="best", fontsize="small")
+    return fig, ax
+
+
 def validation_residuals(report, ax=None):
     """Position error |dr| / r_max against time, per scene and backend, on log axes (a ValidationReport)."""
     fig, ax = _axes(ax)
@@ -112,8 +201,9 @@ def work_precision(rows, columns=3):
     problems = list(dict.fromkeys(r.problem for r in rows))
     columns = min(columns, len(problems))
     n_rows = -(-len(problems) // columns)
-    fig, axes = plt.subplots(n_rows, columns, figsize=(4.2 * columns + 2.2, 3.4 * n_rows), layout="constrained",
-                             squeeze=False)
+    fig, axes = plt.subplots(
+        n_rows, columns, figsize=(4.2 * columns + 2.2, 3.4 * n_rows), layout="constrained", squeeze=False
+    )
     methods = list(dict.fromkeys(r.method for r in rows))
     for ax, problem in zip(axes.flat, problems):
         for k, method in enumerate(methods):
@@ -128,7 +218,7 @@ def work_precision(rows, columns=3):
         ax.set_xlabel("wall time [s]")
         ax.set_ylabel("position error / orbit size")
         ax.grid(alpha=0.3, which="major")
-    for ax in list(axes.flat)[len(problems):]:
+    for ax in list(axes.flat)[len(problems) :]:
         ax.set_visible(False)
     handles, labels = axes.flat[0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="outside right upper", fontsize="small")

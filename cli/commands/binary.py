@@ -4,7 +4,7 @@ from typing import Annotated
 
 import typer
 
-from orbits_cli.options import Format, FormatOption, OnlyOption
+from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
 
 MASS_HELP = "body name (Earth, Moon, Sun, Jupiter), mass ('1.989e30 kg', '1 solMass') or GM ('3.986e14 m3/s2')"
 
@@ -23,11 +23,16 @@ def command(
     nu: Annotated[str, typer.Option("--nu", help="true anomaly")] = "0",
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
+    plot: PlotOption = None,
 ):
     """Masses, relative orbit, each star's orbit about the centre of mass, energy and angular momentum (XXII)."""
     from orbits_cli import params, render
 
     result = build(m1, m2, a, p, q, period, e, inc, raan, argp, nu)
+    if plot:
+        from orbits.plot import binary_plane
+
+        save_plot(lambda: binary_plane(result), plot)
     render.emit(f"Binary of {m1} and {m2}", result.quantities(params.names(only)), fmt.value)
 
 

@@ -4,7 +4,7 @@ from typing import Annotated
 
 import typer
 
-from orbits_cli.options import Format, FormatOption, OnlyOption
+from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
 
 NOTES_HUBBLE = "0.5e-10 / yr"  # XXIV.iv's H, which gives the notes' age 1.33e10 yr
 
@@ -32,6 +32,7 @@ def command(
     t: Annotated[str | None, typer.Option("--t", help="time since the big bang, e.g. '1 Gyr'")] = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
+    plot: PlotOption = None,
 ):
     """H(z), age, lookback time, comoving distance and a(t) of a Friedmann universe, today or at --z or --t.
 
@@ -42,6 +43,12 @@ def command(
 
     cosmology = build(h0, om, ol, orad, ok)
     table = cosmology.quantities(**epoch(z, t), only=params.names(only))
+    if plot:
+        import astropy.units as u
+
+        from orbits.plot import scale_factor_curves
+
+        save_plot(lambda: scale_factor_curves({title(cosmology): cosmology}, 2 * cosmology.age().to(u.Gyr)), plot)
     render.emit(title(cosmology), display_units(table), fmt.value)
 
 

@@ -5,7 +5,7 @@ from typing import Annotated
 import typer
 
 from orbits_cli.commands.binary import MASS_HELP, mass_or_body
-from orbits_cli.options import Format, FormatOption, OnlyOption
+from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
 
 
 def command(
@@ -23,11 +23,16 @@ def command(
     ] = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
+    plot: PlotOption = None,
 ):
     """Closest approach, speed there, eccentricity, semi-major axis and deflection of a flyby (XXI.vi, XXII.vi)."""
     from orbits_cli import params, render
 
     result, title = build(primary, v_inf, b, periapsis, mass, secondary)
+    if plot:
+        from orbits.plot import flyby_plane
+
+        save_plot(lambda: flyby_plane(result), plot)
     render.emit(title, result.quantities(params.names(only)), fmt.value)
 
 

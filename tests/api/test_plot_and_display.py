@@ -70,3 +70,47 @@ def test_html_and_text_display():
     report = validate([scene.load("flyby")], ("rebound",))
     assert "flyby" in report._repr_html_() and "all checks passed" in report._repr_html_()
     assert repr(report) == "ValidationReport(1 scenes: flyby; passed)"
+
+
+def test_flyby_plane_draws_asymptotes_and_the_impact_parameter():
+    from orbits import Flyby
+    from orbits.plot import flyby_plane
+
+    flyby = Flyby.past("Jupiter", v_inf=5.6 * u.km / u.s, periapsis=200_000 * u.km)
+    _, ax = flyby_plane(flyby)
+    lines = {line.get_label(): line.get_xydata() for line in ax.get_lines()}
+    assert {"incoming asymptote", "outgoing asymptote", "primary (focus)"} <= set(lines)
+    segment = [xy for name, xy in lines.items() if name.startswith("impact parameter")][0]
+    assert np.hypot(*segment[1]) == pytest.approx(flyby.impact_parameter.to_value(u.km), rel=1e-12)
+    incoming = lines["incoming asymptote"]
+    direction = incoming[1] - incoming[0]
+    foot = segment[1]
+    assert abs(np.dot(direction, foot)) < 1e-9 * np.linalg.norm(direction) * np.linalg.norm(foot)  # b is perpendicular
+    assert "144.66 deg" in ax.get_title()
+    closest = [xy for name, xy in lines.items() if name.startswith("closest approach")][0]
+    assert closest[0, 0] == pytest.approx(200_000, rel=1e-12)
+
+
+def test_binary_plane_keeps_the_centre_of_mass_on_the_joining_line():
+    from orbits import Binary
+    from orbits.plot import binary_plane
+
+    _, ax = binary_plane(Binary.from_elements(1 * u.solMass, 0.5 * u.solMass, a=1 * u.AU, e=0.5, nu=60 * u.deg))
+    lines = {line.get_label(): line.get_xydata() for line in ax.get_lines()}
+    join = lines["joining line"]
+    # masses 1 : 0.5, so star 1 is twice as close to the centre of mass as star 2, on the other side
+    np.testing.assert_allclose(join[1], -2 * join[0], rtol=1e-12)
+    star1, star2 = lines["star 1 orbit"], lines["star 2 orbit"]
+    assert np.ptp(star2[:, 0]) == pytest.approx(2 * np.ptp(star1[:, 0]), rel=1e-12)
+    assert np.ptp(star1[:, 0]) + np.ptp(star2[:, 0]) == pytest.approx(2.0, rel=1e-9)  # 2 a of the relative orbit
+
+
+def test_scale_factor_curves_reach_one_at_the_age():
+    from orbits import Cosmology
+    from orbits.plot import scale_factor_curves
+
+    eds = Cosmology.einstein_de_sitter(70 * u.km / u.s / u.Mpc)
+    _, ax = scale_factor_curves({"EdS": eds}, 20 * u.Gyr)
+    t, a = ax.get_lines()[0].get_xydata().T
+    assert np.interp(1.0, a, t) == pytest.approx(eds.age().to_value(u.Gyr), rel=1e-3)
+    assert "Gyr" in ax.get_xlabel()

@@ -5,8 +5,9 @@ import subprocess
 import sys
 
 import pytest
-from orbits_cli.main import app
 from typer.testing import CliRunner
+
+from orbits_cli.main import app
 
 runner = CliRunner()
 
@@ -151,3 +152,16 @@ def test_plot_option_writes_the_picture(tmp_path):
     assert residuals.read_text().lstrip().startswith("<?xml")
     bad = run("orbit", "Earth", "--plot", str(tmp_path / "x.gif"))
     assert bad.exit_code == 2 and ".png, .svg or .pdf" in bad.stderr
+
+
+@pytest.mark.parametrize(
+    "args",
+    [["flyby", "--primary", "Jupiter", "--v-inf", "5.6 km/s", "--periapsis", "200000 km"],
+     ["binary", "--m1", "1 solMass", "--m2", "0.5 solMass", "--a", "1 AU", "--e", "0.5"],
+     ["cosmology", "--Om", "0.3"]],
+)
+def test_plot_option_on_the_other_verbs(args, tmp_path):
+    picture = tmp_path / "p.pdf"
+    result = run(*args, "--plot", str(picture))
+    assert result.exit_code == 0, result.output
+    assert picture.read_bytes()[:5] == b"%PDF-"
