@@ -4,15 +4,25 @@ type and a fragment of its message. Row numbers follow that file."""
 import math
 
 import astropy.units as u
+import mpmath
 import numpy as np
 import pytest
 
-from orbits import Orbit, reference
+from orbits import Binary, Cosmology, Orbit, escape_speed, reference
 from orbits.core import anomalies, elements, kepler
 from orbits.core.propagate import propagate
 from orbits.errors import DegenerateOrbitError, OrbitDomainError
 
 NAN, INF = float("nan"), float("inf")
+
+
+EDS = Cosmology.einstein_de_sitter(70 * u.km / u.s / u.Mpc)
+
+
+def eds_comoving_distance(z):
+    """2 c / H0 (1 - 1 / sqrt(1 + z)) in metres, at 60 digits, for EDS."""
+    with mpmath.workdps(60):
+        return 2 * mpmath.mpf(EDS.hubble_distance.si.value) * (1 - 1 / mpmath.sqrt(1 + mpmath.mpf(z)))
 
 
 def ulps_from(reference_value):
@@ -268,6 +278,37 @@ ROWS = [
         "negative orbiting mass",
         lambda: Orbit.circular("Earth", 7000 * u.km, mass=-1 * u.kg),
         raises(OrbitDomainError, "must be positive"),
+    ),
+    (
+        45,
+        "mass ratio 1e-15: the mass fraction is correctly rounded",
+        lambda: Binary.from_elements(1 * u.kg, 1e-15 * u.kg, a=1 * u.m, e=0.1).mass_fraction,
+        lambda x: float(reference.rel_error(float(x.value), mpmath.mpf(1e-15) / (1 + mpmath.mpf(1e-15)))) <= 2**-53,
+    ),
+    # escape speed
+    (56, "escape from r = 0", lambda: escape_speed("Earth", distance=0 * u.m), raises(OrbitDomainError, "(0, inf) m")),
+    (56, "escape from r < 0", lambda: escape_speed("Earth", distance=-1 * u.m), raises(OrbitDomainError, "-1.0 m")),
+    (56, "escape from r = NaN", lambda: escape_speed("Earth", distance=NAN * u.m), raises(OrbitDomainError, "nan")),
+    (
+        56,
+        "escape from a non-positive mass",
+        lambda: escape_speed(-1 * u.kg, distance=1 * u.m),
+        raises(OrbitDomainError, "-1.0 kg"),
+    ),
+    # cosmology
+    (57, "H0 = 0", lambda: Cosmology.einstein_de_sitter(0 / u.s), raises(OrbitDomainError, "must be positive")),
+    (57, "H0 < 0", lambda: Cosmology.einstein_de_sitter(-70 * u.km / u.s / u.Mpc), raises(OrbitDomainError, "-70.0")),
+    (57, "H0 = NaN", lambda: Cosmology.einstein_de_sitter(NAN / u.s), raises(OrbitDomainError, "nan")),
+    (58, "z = -1", lambda: EDS.comoving_distance(-1), raises(OrbitDomainError, "would be infinite")),
+    (58, "z < -1", lambda: EDS.comoving_distance(-2), raises(OrbitDomainError, "would be negative")),
+    (58, "z = NaN", lambda: EDS.comoving_distance(NAN), raises(OrbitDomainError, "not a number")),
+    (58, "z = inf: D_C = 2 c / H0", lambda: EDS.comoving_distance(INF), lambda d: d == 2 * EDS.hubble_distance),
+    (58, "z = inf: age 0", lambda: EDS.age(INF), lambda t: t.value == 0.0),
+    (
+        58,
+        "z = 1e-12: D_C within 4 ulp (astropy is 8.9e-5 off)",
+        lambda: EDS.comoving_distance(1e-12).si.value,
+        lambda d: float(reference.ulp_error(d, eds_comoving_distance(1e-12))) <= 4,
     ),
     # units
     (
