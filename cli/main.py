@@ -6,7 +6,20 @@ astropy and the backends are imported inside the commands, so `orbits --help` st
 
 import typer
 
-from orbits_cli.commands import bench, binary, cosmology, escape, flyby, info, kepler, orbit, precision, validate
+from orbits_cli.commands import (
+    bench,
+    binary,
+    cosmology,
+    escape,
+    flyby,
+    info,
+    kepler,
+    lagrange,
+    orbit,
+    precision,
+    ring,
+    validate,
+)
 from orbits_cli.options import reports_errors
 
 app = typer.Typer(
@@ -23,6 +36,8 @@ app.command("kepler")(reports_errors(kepler.command))
 app.command("cosmology")(reports_errors(cosmology.command))
 app.command("binary")(reports_errors(binary.command))
 app.command("flyby")(reports_errors(flyby.command))
+app.command("lagrange")(reports_errors(lagrange.command))
+app.command("ring")(reports_errors(ring.command))
 app.add_typer(escape.app, name="escape")
 app.command("info")(reports_errors(info.command))
 bench_app.command("kepler")(reports_errors(bench.kepler))

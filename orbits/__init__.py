@@ -10,7 +10,9 @@ from orbits.cosmology import Cosmology, ExpandingSphere
 from orbits.errors import ConvergenceError, DegenerateOrbitError, OrbitDomainError, OrbitsError
 from orbits.escape import CosmicVelocities, SynchronousOrbit, escape_speed, max_elongation
 from orbits.flyby import Flyby
+from orbits.lagrange import RestrictedThreeBody
 from orbits.orbit import Orbit
+from orbits.rings import Ring
 
 __version__ = "0.1.0"
 
@@ -23,6 +25,8 @@ __all__ = [
     "Binary",
     "Star",
     "Flyby",
+    "RestrictedThreeBody",
+    "Ring",
     "CosmicVelocities",
     "SynchronousOrbit",
     "escape_speed",

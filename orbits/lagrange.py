@@ -1,0 +1,315 @@
+"""RestrictedThreeBody: the Lagrange points of a circular binary (section XXII.viii of the notes), with units.
+
+    >>> from orbits import RestrictedThreeBody
+    >>> em = RestrictedThreeBody.from_primaries("Earth", "Moon")
+    >>> round(float(em.distances_to_secondary[0].to_value("km")))  # L1, on the Earth side of the Moon
+    58019
+
+The binary (GM_1 >= GM_2 at separation r) turns at n = sqrt(G (M + m) / r**3) about its barycentre; every
+quantity is the dimensionless one of orbits.core.lagrange times r, n or (n r)**2. Rotating frame: origin at
+the barycentre, x from M towards m, z along the orbital angular momentum; the inertial frame has the same
+origin, with the binary in the plane of inclination `inc` and ascending node `raan`, and m at the argument of
+latitude `phase` at t = 0.
+
+lagrange_test_particles_problem builds the matching N-body problem for rebound and heyoka (G = 1 code units)
+with what each test particle should do (LagrangeExpectation).
+"""
+
+from dataclasses import dataclass
+from functools import cached_property
+
+import astropy.units as u
+import numpy as np
+
+from orbits import units
+from orbits.binary import gravitational_parameter_of
+from orbits.constants import Body, body
+from orbits.core import lagrange
+from orbits.core.binary import require_positive
+from orbits.errors import OrbitDomainError
+from orbits.validate.problem import NBodyProblem
+
+POINTS = lagrange.POINTS
+PER_SECOND = 1 / u.s
+
+
+def _separation(primary, secondary, separation):
+    """r (m): the given length, or the catalogued mean distance a of a named secondary about that primary."""
+    if separation is not None:
+        value = units.to_si(separation, units.M, "separation r")
+        require_positive(value, "separation r", "m")
+        return value
+    target = body(secondary) if isinstance(secondary, str) else secondary
+    centre = body(primary).name if isinstance(primary, str) else getattr(primary, "name", None)
+    if not isinstance(target, Body) or target.orbit is None or target.orbit.primary != centre:
+        raise OrbitDomainError("separation r is needed: the secondary is not a catalogued body orbiting the primary")
+    return np.asarray(target.orbit.a)
+
+
+@dataclass(frozen=True, eq=False)
+class RestrictedThreeBody:
+    """Circular restricted three-body problem of a binary; fields are float64 SI arrays that broadcast together.
+
+    Build it with RestrictedThreeBody.from_primaries. `gm_primary` >= `gm_secondary` (m3/s2), the separation
+    `r` (m), and the binary's orientation `inc`, `raan` and `phase` (rad).
+    """
+
+    gm_primary: np.ndarray
+    gm_secondary: np.ndarray
+    r: np.ndarray
+    inc: np.ndarray
+    raan: np.ndarray
+    phase: np.ndarray
+
+    @classmethod
+    def from_primaries(cls, primary, secondary, separation=None, *, inc=0 * u.deg, raan=0 * u.deg, phase=0 * u.deg):
+        """Binary of `primary` and `secondary` (each a Body, a name, a mass or a GM Quantity) at `separation`
+        (length; default: the secondary's catalogued mean distance a from the primary, e.g. Earth-Moon).
+
+        mu = m / (M + m) must lie in (0, 1/2]: OrbitDomainError otherwise, naming the value.
+        """
+        gm_1 = gravitational_parameter_of(primary, "primary mass M")
+        gm_2 = gravitational_parameter_of(secondary, "secondary mass m")
+        lagrange.check_mass_ratio(gm_2 / (gm_1 + gm_2))
+        distance = _separation(primary, secondary, separation)
+        angles = [
+            units.to_si(x, units.RAD, name)
+            for x, name in ((inc, "inclination i"), (raan, "ascending node Omega"), (phase, "phase"))
+        ]
+        fields = np.broadcast_arrays(gm_1, gm_2, distance, *angles)
+        return cls(*(np.array(x, dtype=float) for x in fields))
+
+    # ---- the binary -------------------------------------------------------------------------------
+    @cached_property
+    def mu(self):
+        """mu = m / (M + m) (float64 array), the only parameter of the dimensionless problem."""
+        return self.gm_secondary / (self.gm_primary + self.gm_secondary)
+
+    @cached_property
+    def mass_ratio(self):
+        """mu = m / (M + m) (dimensionless)."""
+        return self.mu << u.one
+
+    @cached_property
+    def separation(self):
+        """r (m), the distance between the primaries."""
+        return self.r << units.M
+
+    @cached_property
+    def _n(self):
+        return np.sqrt((self.gm_primary + self.gm_secondary) / self.r**3)
+
+    @cached_property
+    def angular_velocity(self):
+        """n = sqrt(G (M + m) / r**3) (rad/s) of the binary and of the rotating frame."""
+        return self._n << units.RAD_PER_S
+
+    @cached_property
+    def period(self):
+        """T = 2 pi / n (s)."""
+        return 2.0 * np.pi / self._n << units.S
+
+    # ---- the points -----------------------------------------------------------------------------
+    @cached_property
+    def positions(self):
+        """Rotating-frame positions of L1..L5 (m), shape (..., 5, 3); each coordinate within 2**-52 r."""
+        return lagrange.positions(self.mu) * self.r[..., None, None] << units.M
+
+    @cached_property
+    def _distances(self):
+        return lagrange.distances(self.mu) * self.r[..., None, None]
+
+    @cached_property
+    def distances_to_primary(self):
+        """|L_k - M| (m), shape (..., 5)."""
+        return self._distances[..., 0] << units.M
+
+    @cached_property
+    def distances_to_secondary(self):
+        """|L_k - m| (m), shape (..., 5); for L1 and L2 the offset rho, to 2 ulp even for mu = 1e-15."""
+        return self._distances[..., 1] << units.M
+
+    @cached_property
+    def jacobi_constants(self):
+        """C(L_k) = -2 Phi(L_k) (m2/s2), shape (..., 5): the Jacobi constant of a particle at rest at each point."""
+        c = lagrange.jacobi_constant(lagrange.positions(self.mu), np.zeros(3), self.mu[..., None])
+        return c * self._scale_squared[..., None] << units.M_PER_S**2
+
+    @cached_property
+    def _scale_squared(self):
+        return (self._n * self.r) ** 2
+
+    @cached_property
+    def eigenvalues(self):
+        """Eigenvalues of the linearised rotating-frame motion at L1..L5 (1/s), complex, shape (..., 5, 6)."""
+        return lagrange.eigenvalues(self.mu) * self._n[..., None, None] << PER_SECOND
+
+    @cached_property
+    def growth_rates(self):
+        """Largest Re(eigenvalue) at L1..L5 (1/s), shape (..., 5); 0 where linearly stable."""
+        return lagrange.growth_rates(self.mu) * self._n[..., None] << PER_SECOND
+
+    @cached_property
+    def e_folding_times(self):
+        """1 / growth rate (s), shape (..., 5); inf where linearly stable."""
+        rates = lagrange.growth_rates(self.mu)
+        with np.errstate(divide="ignore"):
+            return np.where(rates > 0.0, 1.0 / rates, np.inf) / self._n[..., None] << units.S
+
+    @cached_property
+    def triangular_points_stable(self):
+        """True where L4 and L5 are linearly stable: mu < Routh's (1 - sqrt(23/27)) / 2 = 0.0385208965..., strictly."""
+        return lagrange.triangular_points_stable(self.mu)
+
+    # ---- states and fields ------------------------------------------------------------------------
+    def inertial_states(self, t):
+        """Barycentric inertial positions (m) and velocities (m/s) of L1..L5 at time t (time, broadcasting):
+        shape (..., 5, 3), the frame having turned by phase + n t."""
+        t_si = units.to_si(t, units.S, "time t")
+        angle = (self.phase + self._n * t_si)[..., None]
+        r_rot = lagrange.positions(self.mu)
+        r, v = lagrange.rotating_to_inertial(r_rot, 0.0 * r_rot, angle, self.inc[..., None], self.raan[..., None])
+        speed = (self._n * self.r)[..., None, None]
+        return r * self.r[..., None, None] << units.M, v * speed << units.M_PER_S
+
+    def effective_potential(self, r):
+        """Phi = -G M / r_1 - G m / r_2 - n**2 (x**2 + y**2) / 2 (J/kg) at rotating-frame positions r (length)."""
+        r_si = units.to_si(r, units.M, "position r") / self.r[..., None]
+        return lagrange.effective_potential(r_si, self.mu) * self._scale_squared << units.J_PER_KG
+
+    def jacobi_constant(self, r, v):
+        """C = -2 Phi - |v|**2 (m2/s2) of a rotating-frame state r (length) and v (speed), shape (..., 3)."""
+        r_si = units.to_si(r, units.M, "position r") / self.r[..., None]
+        v_si = units.to_si(v, units.M_PER_S, "velocity v") / (self._n * self.r)[..., None]
+        return lagrange.jacobi_constant(r_si, v_si, self.mu) * self._scale_squared << units.M_PER_S**2
+
+    def zero_velocity_grid(self, extent=1.5, points=401):
+        """(x, y, C) for plotting zero-velocity curves: a points x points grid (m) over |x|, |y| <= extent r in the
+        rotating plane, and C = -2 Phi (m2/s2), the Jacobi constant of a particle at rest there (+inf on a
+        primary). A particle of Jacobi constant C_0 cannot enter where C < C_0; contour C at C(L1), C(L2), ..."""
+        if np.ndim(self.mu) != 0:
+            raise OrbitDomainError("zero_velocity_grid needs a single binary; this object holds an array of them")
+        axis = np.linspace(-extent, extent, points)
+        x, y = np.meshgrid(axis, axis)
+        grid = np.stack([x, y, np.zeros_like(x)], axis=-1)
+        with np.errstate(divide="ignore"):
+            c = lagrange.jacobi_constant(grid, np.zeros(3), self.mu)
+        r = float(self.r)
+        return x * r << units.M, y * r << units.M, c * float(self._scale_squared) << units.M_PER_S**2
+
+    # ---- tables ---------------------------------------------------------------------------------
+    def quantities(self, only=None, points=POINTS):
+        """{name: Quantity}: BINARY_NAMES, then "<point>_<name>" for each of `points` and POINT_NAMES (the
+        e-folding time only where the point is unstable). `only` takes full names ("L4_growth_rate") or
+        POINT_NAMES, which expand over `points`."""
+        unknown = [p for p in points if p not in POINTS]
+        if unknown:
+            raise KeyError(f"unknown points {unknown}; choose from {', '.join(POINTS)}")
+        names = []
+        for name in BINARY_NAMES + [f"{p}_{n}" for p in points for n in POINT_NAMES] if only is None else only:
+            if name in POINT_NAMES:
+                names += [f"{p}_{name}" for p in points]
+            elif name in QUANTITY_NAMES:
+                names.append(name)
+            else:
+                raise KeyError(f"unknown quantity {name!r}; choose from {', '.join(BINARY_NAMES + list(POINT_NAMES))}")
+        result = {}
+        for name in names:
+            value = getattr(self, name) if name in BINARY_NAMES else self._point_quantity(*name.split("_", 1))
+            if value is not None:
+                result[name] = value
+        return result
+
+    def _point_quantity(self, point, name):
+        """One point's value of a POINT_NAMES entry (None for the e-folding time of a stable point)."""
+        k = POINTS.index(point)
+        if name == "eigenvalues":
+            values = self.eigenvalues[..., k, :]
+            return np.stack([values.real, values.imag], axis=-1)
+        table = getattr(self, POINT_NAMES[name])
+        value = table[..., k, :] if name == "position" else table[..., k]
+        return None if name == "e_folding_time" and not np.all(np.isfinite(value)) else value
+
+
+BINARY_NAMES = ["mass_ratio", "separation", "angular_velocity", "period"]
+#: Per-point names and the (..., 5)-shaped property each one reads (eigenvalues come as (re, im) pairs).
+POINT_NAMES = {
+    "position": "positions",
+    "distance_to_primary": "distances_to_primary",
+    "distance_to_secondary": "distances_to_secondary",
+    "jacobi_constant": "jacobi_constants",
+    "growth_rate": "growth_rates",
+    "e_folding_time": "e_folding_times",
+    "eigenvalues": "eigenvalues",
+}
+QUANTITY_NAMES = BINARY_NAMES + [f"{p}_{n}" for p in POINTS for n in POINT_NAMES]
+
+
+# ---- validation: test particles at the Lagrange points, in G = 1 code units ------------------------------------
+@dataclass(frozen=True, eq=False)
+class LagrangeExpectation:
+    """What the test particle `index` of a lagrange_test_particles_problem should do. Code units: r = 1,
+    G (M + m) = 1, so n = 1 and the binary's period is 2 pi.
+
+    `position` is the rotating-frame equilibrium; `offset` the initial displacement along the growing mode
+    (0 for linearly stable points, which start on the point); `growth_rate` the predicted e-folding rate
+    (0 if linearly stable); `jacobi_constant` that of the initial state, conserved exactly by the motion.
+    """
+
+    point: str
+    index: int
+    mass_ratio: float
+    position: np.ndarray
+    offset: float
+    growth_rate: float
+    jacobi_constant: float
+
+    def deviations(self, positions):
+        """|r_rot - position| at each output of integrated (K, N, 3) positions, the rotating frame being the one
+        the integrated primaries (bodies 0 and 1) define, so their own phase error does not count."""
+        particle, primary, secondary = positions[:, self.index], positions[:, 0], positions[:, 1]
+        r_rot = lagrange.rotating_coordinates(particle, primary, secondary, self.mass_ratio)
+        return np.linalg.norm(r_rot - self.position, axis=-1)
+
+    def jacobi_constants(self, positions, velocities):
+        """The particle's Jacobi constant at each output, from inertial (K, N, 3) states about the barycentre."""
+        return lagrange.jacobi_constant_inertial(
+            positions[:, self.index], velocities[:, self.index], positions[:, 0], positions[:, 1], self.mass_ratio
+        )
+
+
+def lagrange_test_particles_problem(mass_ratio, times, points=POINTS, offset=0.0):
+    """(NBodyProblem, [LagrangeExpectation]): a circular binary (G M = 1 - mu at (-mu, 0, 0), G m = mu at
+    (1 - mu, 0, 0), n = 1, period 2 pi) with one massless test particle per point of `points`, and what each
+    should do. Unstable points start `offset` (units of r) along their growing mode; stable ones on the point.
+    `times` are output times in code units."""
+    mu = float(lagrange.check_mass_ratio(mass_ratio))
+    r_rot, modes = lagrange.positions(mu), lagrange.growing_mode(mu)
+    rates = lagrange.growth_rates(mu)
+    positions = [[-mu, 0.0, 0.0], [1.0 - mu, 0.0, 0.0]]
+    velocities = [[0.0, -mu, 0.0], [0.0, 1.0 - mu, 0.0]]
+    expectations = []
+    for point in points:
+        k = POINTS.index(point)
+        r0, v0 = r_rot[k] + offset * modes[k, :3], offset * modes[k, 3:]
+        r_in, v_in = lagrange.rotating_to_inertial(r0, v0, 0.0)
+        positions.append(r_in)
+        velocities.append(v_in)
+        jacobi = float(lagrange.jacobi_constant(r0, v0, mu))
+        moved = offset if rates[k] > 0.0 else 0.0
+        index = len(positions) - 1
+        expectations.append(LagrangeExpectation(point, index, mu, r_rot[k], moved, float(rates[k]), jacobi))
+    gm = [1.0 - mu, mu] + [0.0] * len(expectations)
+    problem = NBodyProblem(gm=gm, positions=positions, velocities=velocities, n_active=2, times=times)
+    return problem, expectations
+
+
+def fitted_growth_rate(times, amplitudes, low=1e-9, high=1e-4):
+    """Least-squares slope of ln(amplitude) against time over the samples with low <= amplitude <= high:
+    the measured e-folding rate of an exponential departure (units of 1/time)."""
+    times, amplitudes = np.asarray(times, dtype=float), np.asarray(amplitudes, dtype=float)
+    window = (amplitudes >= low) & (amplitudes <= high)
+    if np.count_nonzero(window) < 3:
+        raise OrbitDomainError(f"fewer than 3 samples with {low} <= amplitude <= {high}: cannot fit a growth rate")
+    slope, _ = np.polyfit(times[window], np.log(amplitudes[window]), 1)
+    return float(slope)

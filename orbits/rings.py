@@ -1,0 +1,260 @@
+"""Ring: n equal masses on a regular n-gon, optionally about a central mass (section XXIII of the notes, and
+Maxwell's ring), with units.
+
+    >>> import astropy.units as u
+    >>> from orbits import Ring
+    >>> ring = Ring.from_masses(3, 1 * u.M_sun, 1 * u.AU)
+    >>> ring.period.to(u.yr).round(4)  # omega**2 = G m / (sqrt(3) r**3)
+    <Quantity 1.3161 yr>
+
+Closed forms come from orbits.core.rings (each body circles GM_eff = G m S_n / 4 + G M); the linear stability
+(growth rate of the most unstable mode, the break-up time of a ring seeded by float64 round-off, the central
+mass above which a ring of n >= 7 is stable) from the 4n x 4n rotating-frame linearisation.
+ring_problem builds the matching N-body problem for rebound and heyoka (G = 1 code units, r = 1, omega = 1).
+"""
+
+import math
+from dataclasses import dataclass
+from functools import cached_property
+
+import astropy.units as u
+import numpy as np
+
+from orbits import units
+from orbits.binary import gravitational_parameter_of
+from orbits.constants import G
+from orbits.core import rings, twobody
+from orbits.core.binary import require_positive
+from orbits.errors import OrbitDomainError
+from orbits.validate.problem import NBodyProblem
+
+#: Relative perturbation that float64 round-off plants in a ring, and the shape deviation called break-up.
+ROUND_OFF_SEED = 1e-16
+BREAKUP_DEVIATION = 1e-3
+
+
+@dataclass(frozen=True, eq=False)
+class Ring:
+    """n bodies of GM `gm` (m3/s2) on a circle of radius `r` (m) about a central `gm_central` (m3/s2, 0 for
+    none); gm, r and gm_central are float64 arrays that broadcast together. Build it with Ring.from_masses."""
+
+    n: int
+    gm: np.ndarray
+    r: np.ndarray
+    gm_central: np.ndarray
+
+    @classmethod
+    def from_masses(cls, n, mass, radius, *, central_mass=None):
+        """Ring of n (int >= 2) bodies of `mass` each (a mass or GM Quantity, a Body or a name) on a circle of
+        `radius` (length), about `central_mass` (same forms, or None).
+
+        TypeError for a non-integer or bool n; OrbitDomainError for n < 2 or a non-positive radius or mass.
+        """
+        n = rings.check_count(n)
+        gm = gravitational_parameter_of(mass, "ring body mass m")
+        radius_si = units.to_si(radius, units.M, "ring radius r")
+        require_positive(radius_si, "ring radius r", "m")
+        gm_central = 0.0 if central_mass is None else gravitational_parameter_of(central_mass, "central mass M")
+        fields = np.broadcast_arrays(gm, radius_si, gm_central)
+        return cls(n, *(np.array(x, dtype=float) for x in fields))
+
+    # ---- closed forms (XXIII) -------------------------------------------------------------------
+    @cached_property
+    def csc_sum(self):
+        """S_n = sum_{k=1}^{n-1} csc(pi k / n) (dimensionless), within 3 ulp (math.fsum over k < n/2)."""
+        return rings.csc_sum(self.n) << u.one
+
+    @cached_property
+    def _gm_eff(self):
+        return self.gm * (0.25 * self.csc_sum.value) + self.gm_central
+
+    @cached_property
+    def mass(self):
+        """m = GM / G (kg) of each ring body."""
+        return self.gm / G << units.KG
+
+    @cached_property
+    def central_mass_ratio(self):
+        """beta = M / m (dimensionless)."""
+        return self.gm_central / self.gm << u.one
+
+    @cached_property
+    def angular_velocity(self):
+        """omega = sqrt((G m S_n / 4 + G M) / r**3) (rad/s)."""
+        return twobody.circular_angular_velocity(self.r, self._gm_eff) << units.RAD_PER_S
+
+    @cached_property
+    def period(self):
+        """T = 2 pi / omega (s)."""
+        return 2.0 * np.pi / twobody.circular_angular_velocity(self.r, self._gm_eff) << units.S
+
+    @cached_property
+    def speed(self):
+        """v = sqrt((G m S_n / 4 + G M) / r) (m/s) of each body about the barycentre."""
+        return twobody.circular_speed(self.r, self._gm_eff) << units.M_PER_S
+
+    @cached_property
+    def potential_energy(self):
+        """U = -n G m**2 S_n / (4 r) - n G M m / r (J): every pair once, zero at infinite separation."""
+        return -self.n * self.mass.value * self._gm_eff / self.r << units.J
+
+    @cached_property
+    def kinetic_energy(self):
+        """K = n m v**2 / 2 = -U / 2 (J)."""
+        return 0.5 * self.n * self.mass.value * self._gm_eff / self.r << units.J
+
+    @cached_property
+    def energy(self):
+        """E = U + K = U / 2 (J), the binding energy."""
+        return -0.5 * self.n * self.mass.value * self._gm_eff / self.r << units.J
+
+    @cached_property
+    def angular_momentum(self):
+        """L = n m v r (kg m2/s) about the barycentre."""
+        return self.n * self.mass.value * np.sqrt(self._gm_eff * self.r) << units.KG_M2_PER_S
+
+    def state_vectors(self, phase=0 * u.deg):
+        """Positions (m) and velocities (m/s) of the n ring bodies, shape (n, 3): body k at angle
+        phase + 2 pi k / n in the xy plane, counter-clockwise; the barycentre and central mass at rest at 0."""
+        if np.ndim(self.r) != 0:
+            raise OrbitDomainError("state_vectors needs a single ring; this object holds an array of them")
+        angle = float(units.to_si(phase, units.RAD, "phase"))
+        r, v = rings.state_vectors(self.n, float(self.r), float(self.speed.value), angle)
+        return r << units.M, v << units.M_PER_S
+
+    # ---- linear stability -----------------------------------------------------------------------
+    @cached_property
+    def _beta(self):
+        if np.ndim(self.gm_central / self.gm) != 0:
+            raise OrbitDomainError("linear stability needs a single ring; this object holds an array of them")
+        return float(self.gm_central / self.gm)
+
+    @cached_property
+    def _omega(self):
+        return float(twobody.circular_angular_velocity(self.r, self._gm_eff))
+
+    @cached_property
+    def _growth(self):
+        return rings.growth_rate(self.n, self._beta)
+
+    @cached_property
+    def eigenvalues(self):
+        """Eigenvalues of the 4n x 4n rotating-frame linearisation (1/s), complex, shape (n, 4): row j is the
+        Fourier mode j (perturbation of body k proportional to exp(2 pi i j k / n))."""
+        return rings.eigenvalues(self.n, self._beta) * self._omega << 1 / u.s
+
+    @cached_property
+    def linearly_stable(self):
+        """True when no mode grows (every |Re lambda| <= 1e-9 omega)."""
+        return self._growth[1] is None
+
+    @cached_property
+    def growth_rate(self):
+        """sigma = largest Re(lambda) (1/s); 0 when linearly stable."""
+        return self._growth[0] * self._omega << 1 / u.s
+
+    @cached_property
+    def unstable_mode(self):
+        """Fourier mode j of the fastest-growing perturbation (dimensionless); OrbitDomainError if stable."""
+        self._require_unstable("unstable mode")
+        return self._growth[1] << u.one
+
+    @cached_property
+    def e_folding_time(self):
+        """1 / sigma (s); OrbitDomainError if the ring is linearly stable."""
+        self._require_unstable("e-folding time")
+        return 1.0 / (self._growth[0] * self._omega) << units.S
+
+    @cached_property
+    def breakup_time(self):
+        """ln(1e-3 / 1e-16) / sigma (s): the time for float64 round-off (1e-16 relative) to grow to a 1e-3
+        deformation at the rate sigma; OrbitDomainError if the ring is linearly stable."""
+        self._require_unstable("break-up time")
+        return float(rings.breakup_time(self._growth[0], ROUND_OFF_SEED, BREAKUP_DEVIATION)) / self._omega << units.S
+
+    @cached_property
+    def central_mass_threshold(self):
+        """beta_c m (kg): the smallest central mass that makes this ring linearly stable (n >= 7 only;
+        OrbitDomainError otherwise). beta_c / n**3 = 0.4077 (n = 7) ... 0.43504 (n -> infinity)."""
+        if np.ndim(self.gm) != 0:
+            raise OrbitDomainError("central_mass_threshold needs a single ring; this object holds an array of them")
+        return rings.central_mass_threshold(self.n) * float(self.gm) / G << units.KG
+
+    def _require_unstable(self, quantity):
+        if self.linearly_stable:
+            raise OrbitDomainError(f"{quantity} is defined for unstable rings only; this ring is linearly stable")
+
+    # ---- tables ---------------------------------------------------------------------------------
+    def quantities(self, only=None):
+        """{name: Quantity} of the QUANTITY_NAMES this ring has (or `only` those, raising if one is undefined)."""
+        names = QUANTITY_NAMES if only is None else list(only)
+        unknown = [n for n in names if n not in QUANTITY_NAMES]
+        if unknown:
+            raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(QUANTITY_NAMES)}")
+        result = {}
+        for name in names:
+            try:
+                result[name] = getattr(self, name)
+            except OrbitDomainError:
+                if only is not None:
+                    raise
+        return result
+
+
+QUANTITY_NAMES = [
+    "csc_sum",
+    "central_mass_ratio",
+    "angular_velocity",
+    "period",
+    "speed",
+    "potential_energy",
+    "kinetic_energy",
+    "energy",
+    "angular_momentum",
+    "growth_rate",
+    "unstable_mode",
+    "e_folding_time",
+    "breakup_time",
+    "central_mass_threshold",
+]
+
+
+# ---- validation: a ring integrated from its exact initial state, in G = 1 code units ------------------------------
+@dataclass(frozen=True, eq=False)
+class RingExpectation:
+    """What a ring_problem should do. Code units: r = 1, omega = 1 (period 2 pi). `first_body` is the index of
+    ring body 0 (1 when a central mass is body 0); `growth_rate` (0 if stable), `mode` (None if stable) and
+    `breakup_time` (inf if stable) are the linear predictions for a round-off seed of ROUND_OFF_SEED."""
+
+    n: int
+    first_body: int
+    growth_rate: float
+    mode: int | None
+    breakup_time: float
+
+    def shape_deviations(self, positions):
+        """Largest chord error |d_kl - 2 sin(pi |k - l| / n)| of the ring at each output of (K, N, 3) positions."""
+        return rings.shape_deviation(positions[:, self.first_body :], 1.0)
+
+    def measured_breakup_time(self, times, positions, level=BREAKUP_DEVIATION):
+        """First output time at which the shape deviation reaches `level`; inf if it never does."""
+        reached = np.flatnonzero(self.shape_deviations(positions) >= level)
+        return float(times[reached[0]]) if reached.size else math.inf
+
+
+def ring_problem(n, times, central_ratio=0.0, phase=0.0):
+    """(NBodyProblem, RingExpectation): n bodies of G m = 1 / (beta + S_n / 4) on the unit circle at
+    omega = 1 (angle phase + 2 pi k / n), preceded by a central body of G M = beta G m when beta = M / m > 0;
+    `times` in code units. The state is exact to rounding, so round-off alone seeds any instability."""
+    n = rings.check_count(n)
+    beta = float(central_ratio)
+    rate, mode = rings.growth_rate(n, beta)
+    gm = 1.0 / (beta + 0.25 * rings.csc_sum(n))
+    positions, velocities = rings.state_vectors(n, 1.0, 1.0, phase)
+    masses = np.full(n, gm)
+    if beta > 0.0:
+        positions, velocities = np.vstack([np.zeros(3), positions]), np.vstack([np.zeros(3), velocities])
+        masses = np.concatenate([[beta * gm], masses])
+    problem = NBodyProblem(gm=masses, positions=positions, velocities=velocities, n_active=masses.size, times=times)
+    breakup = float(rings.breakup_time(rate, ROUND_OFF_SEED, BREAKUP_DEVIATION))
+    return problem, RingExpectation(n, int(beta > 0.0), rate, mode, breakup)
