@@ -75,7 +75,118 @@ def _sphere_checks(problem):
     return checks
 
 
-MODELS = {"expanding_universe": _expanding_universe}
+def _earth_moon_mass_ratio():
+    from orbits.constants import BODIES
+
+    moon, earth = BODIES["Moon"].gm, BODIES["Earth"].gm
+    return moon / (earth + moon)
+
+
+def _lagrange_stable(periods=100, outputs=400):
+    """Test particles on the Earth-Moon L4 and L5 points (linearly stable: mu < Routh's 0.0385)."""
+    from orbits.lagrange import lagrange_test_particles_problem
+
+    mu = _earth_moon_mass_ratio()
+    start = time.perf_counter()
+    times = np.linspace(0.0, periods * 2 * np.pi, outputs + 1)[1:]
+    problem, expectations = lagrange_test_particles_problem(mu, times, ["L4", "L5"])
+    seconds = time.perf_counter() - start
+
+    def checks(times, positions, velocities):
+        rows = []
+        for e in expectations:
+            rows.append((f"{e.point}: max distance from the point (rotating frame)", "r", 0.0,
+                         float(np.max(e.deviations(positions))), 1e-11, "absolute drift"))
+            rows.append((f"{e.point}: Jacobi constant", "", e.jacobi_constant, _jacobi_drift(e, positions, velocities),
+                         1e-12, "relative drift"))
+        return rows
+
+    return ModelScene("lagrange_L4_L5", f"Test particles at the Earth-Moon L4 and L5 points (mu = {mu:.6g}) for "
+                      f"{periods} periods: they stay put", problem, None, 1.0, {}, seconds, checks)
+
+
+def _lagrange_unstable(mass_ratio=None, points=("L1", "L2", "L3"), offset=1e-10, outputs=600):
+    """Test particles `offset` off unstable points along the growing mode, until 1e-4: the fitted e-folding
+    rate against the eigenvalue of the linearised motion."""
+    from orbits.lagrange import fitted_growth_rate, lagrange_test_particles_problem
+
+    mu = _earth_moon_mass_ratio() if mass_ratio is None else float(mass_ratio)
+    start = time.perf_counter()
+    _, probes = lagrange_test_particles_problem(mu, [1.0], list(points), offset)
+    horizon = max(np.log(1e-4 / offset) / p.growth_rate for p in probes)
+    times = np.linspace(0.0, horizon, outputs + 1)[1:]
+    problem, expectations = lagrange_test_particles_problem(mu, times, list(points), offset)
+    seconds = time.perf_counter() - start
+
+    def checks(times, positions, velocities):
+        rows = []
+        for e in expectations:
+            try:
+                rate = fitted_growth_rate(times, e.deviations(positions))
+            except ValueError:
+                rate = float("nan")  # too few samples in the fitting window: reported as a failure
+            rows.append((f"{e.point}: e-folding rate vs eigenvalue", "1 / time unit", e.growth_rate, rate, 0.03,
+                         "relative error"))
+            rows.append((f"{e.point}: Jacobi constant", "", e.jacobi_constant, _jacobi_drift(e, positions, velocities),
+                         1e-12, "relative drift"))
+        return rows
+
+    label = "Earth-Moon" if mass_ratio is None else f"mu = {mu:g}"
+    return ModelScene("lagrange_unstable" if mass_ratio is None else "lagrange_beyond_routh",
+                      f"Test particles {offset:g} off the {label} {', '.join(points)} points along the growing mode: "
+                      f"they depart at the rate of the linearised motion", problem, None, 1.0, {}, seconds, checks)
+
+
+def _jacobi_drift(expectation, positions, velocities):
+    c = expectation.jacobi_constants(positions, velocities)
+    return float(np.max(np.abs(c - expectation.jacobi_constant)) / abs(expectation.jacobi_constant))
+
+
+def _ring(n=5, outputs=400):
+    """n equal masses on a circle (no central mass, unstable for n >= 3): round-off grows to a 1e-3 break-up
+    at the time the linearised motion predicts."""
+    from orbits.rings import ring_problem
+
+    start = time.perf_counter()
+    _, probe = ring_problem(n, [1.0])
+    times = np.linspace(0.0, 3.0 * probe.breakup_time, outputs + 1)[1:]
+    problem, expected = ring_problem(n, times)
+    seconds = time.perf_counter() - start
+
+    def checks(times, positions, velocities):
+        ratio = expected.measured_breakup_time(times, positions) / expected.breakup_time
+        early = times <= expected.breakup_time / 3
+        shape = float(np.max(expected.shape_deviations(positions[early])))
+        return [
+            ("break-up time: |ln(measured / predicted)|", "", 0.0, float(abs(np.log(ratio))), float(np.log(3.0)),
+             "absolute drift"),
+            ("shape deviation before a third of the break-up time", "r", 0.0, shape, 1e-9, "absolute drift"),
+        ]
+
+    return ModelScene(f"ring_{n}", f"A ring of {n} equal masses (XXIII): round-off (1e-16) grows at the predicted "
+                      f"rate {expected.growth_rate:.4g} / time unit to a 1e-3 break-up at t = "
+                      f"{expected.breakup_time:.4g}", problem, None, 1.0, {}, seconds, checks)
+
+
+def _ring_builder(n):
+    def build(outputs=400):
+        return _ring(n, outputs)
+
+    return build
+
+
+def _beyond_routh(outputs=600):
+    """L4 and L5 of a mu = 0.1 pair, beyond Routh's ratio: unstable, departing at the eigenvalue rate."""
+    return _lagrange_unstable(0.1, ("L4", "L5"), outputs=outputs)
+
+
+MODELS = {
+    "expanding_universe": _expanding_universe,
+    "lagrange_L4_L5": _lagrange_stable,
+    "lagrange_unstable": _lagrange_unstable,
+    "lagrange_beyond_routh": _beyond_routh,
+    **{f"ring_{n}": _ring_builder(n) for n in range(3, 9)},
+}
 
 
 def builtin_names():
