@@ -176,6 +176,58 @@ def scale_factor_curves(models, t_max, ax=None, samples=200):
     return fig, ax
 
 
+def lagrange_plane(system, ax=None, extent=1.5, points=401):
+    """Rotating-frame view of a RestrictedThreeBody: the primaries, L1..L5, and the zero-velocity curves at the
+    Jacobi constants of L1, L2 and L3 (a particle with that constant cannot enter where C(x, y) < C)."""
+    fig, ax = _axes(ax)
+    x, y, c = system.zero_velocity_grid(extent=extent, points=points)
+    r = float(system.separation.to_value(u.m))
+    levels = np.sort(system.jacobi_constants.to_value(c.unit)[:3])
+    contours = ax.contour(
+        x.to_value(u.m) / r, y.to_value(u.m) / r, c.value, levels=levels, colors=["C2", "C1", "C0"], linewidths=1.2
+    )
+    ax.clabel(
+        contours,
+        fmt={level: f"C(L{k + 1})" for k, level in enumerate(system.jacobi_constants.value[:3])},
+        fontsize="x-small",
+    )
+    mu = float(system.mass_ratio.to_value(u.one))
+    ax.plot([-mu], [0], marker="o", ms=12, color="C0", ls="none", label=f"primary (1 - mu), mu = {mu:.4g}")
+    ax.plot([1 - mu], [0], marker="o", ms=6, color="C7", ls="none", label="secondary")
+    xy = system.positions.to_value(u.m)[:, :2] / r
+    for k, (px, py) in enumerate(xy):
+        ax.plot(px, py, marker="x", color="C3", ls="none", label="Lagrange points" if k == 0 else None)
+        ax.annotate(f"L{k + 1}", (px, py), textcoords="offset points", xytext=(4, 4), fontsize="small")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (rotating frame) [separation r]")
+    ax.set_ylabel("y (rotating frame) [separation r]")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="lower left", fontsize="small")
+    return fig, ax
+
+
+def ring_breakup(times, deviations, growth_rate, breakup_time, ax=None, seed=1e-16):
+    """Shape deviation of a ring against time (log), with the linear prediction seed * exp(rate t) and the
+    predicted break-up time (times in the ring's time unit)."""
+    fig, ax = _axes(ax)
+    shown = np.where(np.asarray(deviations) > 0, deviations, np.nan)
+    ax.semilogy(times, shown, color="C0", label="integrated ring")
+    ax.semilogy(
+        times,
+        seed * np.exp(growth_rate * np.asarray(times)),
+        color="C3",
+        ls="--",
+        label=f"round-off x exp({growth_rate:.3g} t)",
+    )
+    ax.axvline(breakup_time, color="gray", ls=":", label=f"predicted break-up t = {breakup_time:.3g}")
+    ax.set_ylim(1e-17, 10)
+    ax.set_xlabel("time [1 / angular velocity]")
+    ax.set_ylabel("largest chord error [ring radius]")
+    ax.grid(alpha=0.3, which="major")
+    ax.legend(loc="best", fontsize="small")
+    return fig, ax
+
+
 def validation_residuals(report, ax=None):
     """Position error |dr| / r_max against time, per scene and backend, on log axes (a ValidationReport)."""
     fig, ax = _axes(ax)

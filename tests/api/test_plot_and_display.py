@@ -114,3 +114,27 @@ def test_scale_factor_curves_reach_one_at_the_age():
     t, a = ax.get_lines()[0].get_xydata().T
     assert np.interp(1.0, a, t) == pytest.approx(eds.age().to_value(u.Gyr), rel=1e-3)
     assert "Gyr" in ax.get_xlabel()
+
+
+def test_lagrange_plane_marks_the_five_points_and_the_zero_velocity_curves():
+    from orbits import RestrictedThreeBody
+    from orbits.plot import lagrange_plane
+
+    system = RestrictedThreeBody.from_primaries(0.9 * u.kg, 0.1 * u.kg, 1 * u.m)
+    _, ax = lagrange_plane(system, points=201)
+    texts = sorted(t.get_text() for t in ax.texts if t.get_text().startswith("L"))
+    assert texts == ["L1", "L2", "L3", "L4", "L5"]
+    marks = [line for line in ax.get_lines() if line.get_marker() == "x"]
+    xs = sorted(float(m.get_xdata()[0]) for m in marks)
+    assert xs[2] == pytest.approx(0.5 - 0.1, rel=1e-12)  # L4, L5 at x = 1/2 - mu
+    assert len(ax.collections) >= 1 and "separation r" in ax.get_xlabel()
+
+
+def test_ring_breakup_draws_the_prediction_through_the_seed():
+    from orbits.plot import ring_breakup
+
+    times = np.linspace(0, 40, 50)
+    _, ax = ring_breakup(times, 1e-16 * np.exp(times), 1.0, 29.9)
+    prediction = [line for line in ax.get_lines() if line.get_label().startswith("round-off")][0]
+    np.testing.assert_allclose(prediction.get_ydata(), 1e-16 * np.exp(times), rtol=1e-12)
+    assert ax.get_yscale() == "log" and any("29.9" in line.get_label() for line in ax.get_lines())
