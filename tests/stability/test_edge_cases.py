@@ -8,8 +8,9 @@ import mpmath
 import numpy as np
 import pytest
 
-from orbits import Binary, Cosmology, Orbit, escape_speed, reference
-from orbits.core import anomalies, elements, kepler
+from orbits import Binary, Cosmology, Orbit, Ring, escape_speed, reference
+from orbits.constants import G
+from orbits.core import anomalies, elements, kepler, lagrange, rings
 from orbits.core.propagate import propagate
 from orbits.errors import DegenerateOrbitError, OrbitDomainError
 
@@ -290,6 +291,84 @@ ROWS = [
         "mass ratio 1e-15: the mass fraction is correctly rounded",
         lambda: Binary.from_elements(1 * u.kg, 1e-15 * u.kg, a=1 * u.m, e=0.1).mass_fraction.value,
         lambda x: float(reference.ulp_error(float(x), exact_fraction(1e-15))) <= 0.5,
+    ),
+    # Lagrange points (EDGE_CASES values at 11 digits, from mpmath)
+    (
+        46,
+        "mu = 1e-15: rho / h at L1",
+        lambda: lagrange.collinear_offsets(1e-15)[0] / (1e-15 / 3) ** (1 / 3),
+        lambda x: abs(x - 0.99999768879) < 1e-11,
+    ),
+    (
+        46,
+        "mu = 1e-15: rho / h at L2",
+        lambda: lagrange.collinear_offsets(1e-15)[1] / (1e-15 / 3) ** (1 / 3),
+        lambda x: abs(x - 1.0000023112) < 1e-10,
+    ),
+    (47, "mu = 0", lambda: lagrange.check_mass_ratio(0.0), raises(OrbitDomainError, "massless secondary")),
+    (48, "mu = 0.5: L1 exactly at the barycentre", lambda: lagrange.positions(0.5)[0, 0], lambda x: x == 0.0),
+    (
+        48,
+        "mu = 0.5: x_L2 = -x_L3 = 1.19840614455",
+        lambda: lagrange.positions(0.5)[1:3, 0],
+        lambda x: abs(x[0] - 1.19840614455) < 1e-11 and x[1] == -x[0],
+    ),
+    (49, "mu > 0.5", lambda: lagrange.check_mass_ratio(0.6), raises(OrbitDomainError, "heavier body as the primary")),
+    (50, "mu < 0", lambda: lagrange.check_mass_ratio(-0.1), raises(OrbitDomainError, "outside (0, 0.5]")),
+    (50, "mu = NaN", lambda: lagrange.check_mass_ratio(NAN), raises(OrbitDomainError, "not finite")),
+    (
+        51,
+        "just below Routh's ratio: L4/L5 stable",
+        lambda: lagrange.triangular_points_stable(np.nextafter(lagrange.ROUTH_MASS_RATIO, 0)),
+        bool,
+    ),
+    (
+        51,
+        "at Routh's ratio (rounded): unstable, the boundary is exclusive",
+        lambda: lagrange.triangular_points_stable(lagrange.ROUTH_MASS_RATIO),
+        lambda x: not x,
+    ),
+    (
+        51,
+        "Routh's ratio is (1 - sqrt(23/27)) / 2",
+        lambda: lagrange.ROUTH_MASS_RATIO,
+        lambda x: abs(x - 0.0385208965046) < 1e-13,
+    ),
+    # rings
+    (52, "n = 1", lambda: rings.check_count(1), raises(OrbitDomainError, "outside [2, inf)")),
+    (52, "n = 2.5", lambda: rings.check_count(2.5), raises(TypeError, "must be an integer")),
+    (52, "n = True", lambda: rings.check_count(True), raises(TypeError, "bool")),
+    (52, "numpy integers are accepted", lambda: rings.check_count(np.int64(4)), lambda n: n == 4),
+    (
+        53,
+        "n = 2 is the equal-mass binary: v**2 = G m / (4 R)",
+        lambda: Ring.from_masses(2, 1e20 * u.kg, 1e8 * u.m).speed.si.value ** 2,
+        lambda v2: math.isclose(v2, G * 1e20 / (4 * 1e8), rel_tol=4 * 2**-53),
+    ),
+    (
+        54,
+        "n = 3: v**2 = G m / (sqrt(3) R)",
+        lambda: Ring.from_masses(3, 1e20 * u.kg, 1e8 * u.m).speed.si.value ** 2,
+        lambda v2: math.isclose(v2, G * 1e20 / (math.sqrt(3) * 1e8), rel_tol=4 * 2**-53),
+    ),
+    (54, "R <= 0", lambda: Ring.from_masses(3, 1 * u.kg, 0 * u.m), raises(OrbitDomainError, "(0, inf) m")),
+    (54, "m < 0", lambda: Ring.from_masses(3, -1 * u.kg, 1 * u.m), raises(OrbitDomainError, "(0, inf) kg")),
+    (
+        55,
+        "n = 5 with a heavy central mass is still unstable",
+        lambda: Ring.from_masses(5, 1 * u.kg, 1 * u.m, central_mass=1e9 * u.kg).linearly_stable,
+        lambda x: not x,
+    ),
+    (
+        55,
+        "n = 8 is stable above Maxwell's threshold and not below it",
+        lambda: [
+            Ring.from_masses(
+                8, 1 * u.kg, 1 * u.m, central_mass=f * Ring.from_masses(8, 1 * u.kg, 1 * u.m).central_mass_threshold
+            ).linearly_stable
+            for f in (0.8, 1.25)
+        ],
+        lambda flags: flags == [False, True],
     ),
     # escape speed
     (56, "escape from r = 0", lambda: escape_speed("Earth", distance=0 * u.m), raises(OrbitDomainError, "(0, inf) m")),
