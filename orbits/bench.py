@@ -1,17 +1,31 @@
-"""Kepler-equation benchmark: the orbits solvers against peer libraries on the same inputs.
+"""Benchmarks behind ``orbits bench``: orbits against its peers, every figure measured in the same run.
 
-``bench_kepler`` times every available method on three data sets ("easy", "hard" near e = 1,
-"hyperbolic") and measures its error against an mpmath reference on the first pairs.  Peers whose
+- bench_kepler: Kepler's equation on three sets ("easy", "hard" near e = 1, "hyperbolic"), throughput
+  and worst error against mpmath, for orbits (compiled kernels on one thread and on every core, and
+  the NumPy fallback), heyoka's kepE cfunc (one thread and every core), rebound.M_to_E, a plain NumPy
+  Newton solver, exoplanet-core and pykep.
+- bench_propagate: two-body propagation of elliptic and mixed-conic states, throughput and worst
+  relative position and velocity error against mpmath (orbits.reference), for orbits, heyoka's
+  lagrange_prop cfunc, a plain NumPy f-and-g + Newton baseline, pykep and hapsira.
+- bench_api: the unit-aware API (orbits.Orbit) against the float64 core on the same inputs.
+- bench_cli: cold start of the command line, as the median of repeated fresh processes.
+- bench_validate: where the time of ``orbits validate`` goes (analytic, integrator setup and compile,
+  integration) per built-in scene, sequential and as a dask sweep.
+
+Threads: numpy's element-wise functions run on one thread; heyoka's cfunc splits large batches over
+its own thread pool, which bench_kepler pins with heyoka.set_nthreads; orbits' kernels split over
+orbits.core._fast.num_threads(). Rows say how many threads they used. rebound is timed through its
+per-call Python API, which measures the Python call overhead as much as the solver. Peers whose
 package is absent are skipped with a note; every peer is imported lazily.
-
-Run single-threaded for comparable numbers: ``OMP_NUM_THREADS=1 orbits bench kepler``.  NumPy
-element-wise functions and heyoka's compiled function (``cfunc`` built with its default
-``parallel_mode=False``) evaluate a batch on one thread; rebound is timed through its per-call
-Python API, which measures the Python call overhead as much as the solver.
 """
 
+import contextlib
 import dataclasses
 import math
+import shutil
+import statistics
+import subprocess
+import sys
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -66,11 +80,12 @@ def _as_pair(e, M):
 
 @dataclass(frozen=True)
 class _Method:
-    """A solver adapter.  prepare(e, M) puts the inputs in the form the library takes (not timed);
-    solve(prepared, hyperbolic) returns the anomalies, or None if the equation is unsupported."""
+    """A peer adapter.  prepare(...) puts the inputs in the form the library takes (not timed); for
+    Kepler solvers prepare(e, M) and solve(prepared, hyperbolic), which returns the anomalies or None
+    if the equation is unsupported; for propagators prepare(states) and solve(prepared) -> (r, v)."""
 
     name: str
-    solve: Callable[[object, bool], np.ndarray | None]
+    solve: Callable[..., object]
     prepare: Callable[[np.ndarray, np.ndarray], object] = _as_pair
     setup_seconds: float = 0.0
     note: str = ""
@@ -175,17 +190,64 @@ def _worst_errors(x, refs, periodic):
 # --- methods --------------------------------------------------------------------------------------
 
 
-def _orbits_method():
+def _cores():
+    """Threads the 'all cores' rows use: orbits.core._fast.num_threads() (ORBITS_NUM_THREADS or the cores)."""
+    from orbits.core import _fast
+
+    return _fast.num_threads()
+
+
+@contextlib.contextmanager
+def _orbits_threads(threads):
+    """Run orbits' compiled kernels on `threads` threads (threads=0: the NumPy fallback) inside the block."""
+    from orbits.core import _fast
+
+    previous_threads, previous_enabled = _fast.num_threads(), _fast.enabled()
+    _fast.set_num_threads(max(threads, 1))
+    _fast.set_enabled(threads > 0)
+    try:
+        yield
+    finally:
+        _fast.set_num_threads(previous_threads)
+        _fast.set_enabled(previous_enabled)
+
+
+def _orbits_method(threads):
     from orbits.core.kepler import eccentric_anomaly, hyperbolic_anomaly
 
     def solve(pair, hyperbolic):
         e, M = pair
-        return hyperbolic_anomaly(M, e) if hyperbolic else eccentric_anomaly(M, e)
+        with _orbits_threads(threads):
+            return hyperbolic_anomaly(M, e) if hyperbolic else eccentric_anomaly(M, e)
 
-    return _Method("orbits", solve)
+    start = time.perf_counter()
+    with _orbits_threads(threads):  # loads (or compiles) the kernels: the first call's one-off cost
+        eccentric_anomaly(0.5, 0.5), hyperbolic_anomaly(0.5, 1.5)
+    setup = time.perf_counter() - start
+    return _Method(_orbits_name(threads), solve, setup_seconds=setup, note=_orbits_note(threads))
 
 
-def _heyoka_method():
+def _orbits_name(threads):
+    return {0: "orbits (NumPy)", 1: "orbits"}.get(threads, "orbits (all cores)")
+
+
+def _orbits_note(threads):
+    if threads == 0:
+        return "NumPy fallback (ORBITS_JIT=0)"
+    return "compiled, 1 thread" if threads == 1 else f"compiled, {threads} threads"
+
+
+@contextlib.contextmanager
+def _heyoka_threads(heyoka, threads):
+    previous = heyoka.get_nthreads()
+    heyoka.set_nthreads(threads)
+    try:
+        yield
+    finally:
+        heyoka.set_nthreads(previous)
+
+
+def _heyoka_method(threads):
     import heyoka
 
     start = time.perf_counter()
@@ -193,12 +255,17 @@ def _heyoka_method():
     cf = heyoka.cfunc([heyoka.kepE(e, M)], [e, M])
     setup = time.perf_counter() - start
 
+    def solve(inputs, hyperbolic):
+        with _heyoka_threads(heyoka, threads):
+            return cf(inputs)[0]
+
+    name = "heyoka kepE (cfunc)" if threads == 1 else "heyoka kepE (all cores)"
     return _Method(
-        "heyoka kepE (cfunc)",
-        lambda inputs, hyperbolic: cf(inputs)[0],
+        name,
+        solve,
         lambda e, M: np.stack([e, M]),
         setup,
-        "kepE is elliptic only (NaN for e > 1)",
+        f"{threads} thread{'s' if threads > 1 else ''}; elliptic only (NaN for e > 1)",
     )
 
 
@@ -275,8 +342,11 @@ def _pykep_method():
 
 
 _METHODS = [
-    ("orbits", _orbits_method),
-    ("heyoka kepE (cfunc)", _heyoka_method),
+    ("orbits", lambda: _orbits_method(1)),
+    ("orbits (all cores)", lambda: _orbits_method(_cores())),
+    ("orbits (NumPy)", lambda: _orbits_method(0)),
+    ("heyoka kepE (cfunc)", lambda: _heyoka_method(1)),
+    ("heyoka kepE (all cores)", lambda: _heyoka_method(_cores())),
     ("rebound.M_to_E", _rebound_method),
     ("numpy Newton", _numpy_newton_method),
     ("exoplanet-core", _exoplanet_core_method),
@@ -325,10 +395,10 @@ def _measure(method, data, refs, repeats):
     )
 
 
-def _load_methods():
-    """[(name, _Method or None, skip note)] for every method, importing peers lazily."""
+def _load(factories):
+    """[(name, _Method or None, skip note)] for every (name, factory), importing peers lazily."""
     loaded = []
-    for name, factory in _METHODS:
+    for name, factory in factories:
         try:
             loaded.append((name, factory(), ""))
         except ImportError as exc:
@@ -348,7 +418,7 @@ def bench_kepler(n_easy=1_000_000, n_hard=100_000, n_hyp=100_000, n_ref=2000, se
     Returns one BenchRow per (method, data set), methods in a fixed order.
     """
     datasets = _datasets(n_easy, n_hard, n_hyp, seed)
-    methods = _load_methods()
+    methods = _load(_METHODS)
     rows = []
     for data in datasets:
         refs = _references(data, min(n_ref, len(data.e)))
@@ -367,27 +437,547 @@ def _solves(row):
 
 
 def format_rows(rows):
-    """Plain-text table: throughput (M/s), ratio to the fastest method on the same set (among methods
-    returning finite anomalies), worst relative and ulp errors, NaN count, notes."""
-    fastest = {}
-    for r in filter(_solves, rows):
-        fastest[r.dataset] = max(fastest.get(r.dataset, 0.0), r.throughput_per_s)
-    header = f"{'method':<22}{'dataset':<12}{'M/s':>9}{'vs best':>9}{'max rel err':>13}{'max ulp':>11}{'NaN':>8}  note"
+    """Plain-text table of bench_kepler: throughput (M/s), ratio to orbits on one thread on the same set
+    (above 1: faster than orbits), worst relative and ulp errors, NaN count, notes."""
+    reference = {r.dataset: r.throughput_per_s for r in rows if r.method == "orbits" and _solves(r)}
+    header = f"{'method':<24}{'dataset':<12}{'M/s':>9}{'vs orbits':>10}{'max rel err':>13}{'max ulp':>11}"
+    header += f"{'NaN':>8}  note"
     lines = [header, "-" * len(header)]
     for r in rows:
         if r.status == "ok":
-            ratio = f"{r.throughput_per_s / fastest[r.dataset]:>9.3f}" if _solves(r) else f"{'-':>9}"
+            ratio = f"{r.throughput_per_s / reference[r.dataset]:>10.3f}" if r.dataset in reference else f"{'-':>10}"
             stats = f"{r.throughput_per_s / 1e6:>9.3f}{ratio}{r.max_rel_error:>13.2e}{r.max_ulp:>11.3g}{r.n_nan:>8d}"
         else:
-            stats = f"{'-':>9}{'-':>9}{'-':>13}{'-':>11}{'-':>8}"
-        note = r.note if r.status == "ok" else f"{r.status}: {r.note}"
-        if r.setup_seconds:
-            note = f"{note} (compile/setup {r.setup_seconds:.3f} s)".lstrip()
-        lines.append(f"{r.method:<22}{r.dataset:<12}{stats}  {note}")
+            stats = f"{'-':>9}{'-':>10}{'-':>13}{'-':>11}{'-':>8}"
+        lines.append(f"{r.method:<24}{r.dataset:<12}{stats}  {_note(r)}")
     return "\n".join(lines)
 
 
+def _note(row):
+    """The row's note, its status if not ok, and its one-off setup time."""
+    note = row.note if row.status == "ok" else f"{row.status}: {row.note}"
+    if row.setup_seconds:
+        note = f"{note} (compile/setup {row.setup_seconds:.3f} s)".lstrip()
+    return note
+
+
 def rows_to_json(rows):
-    """Rows as JSON-ready dicts (NaN and infinity become None)."""
-    clean = lambda v: None if isinstance(v, float) and not math.isfinite(v) else v
-    return [{k: clean(v) for k, v in dataclasses.asdict(r).items()} for r in rows]
+    """Rows (any of the benchmarks' row classes) as JSON-ready dicts (NaN and infinity become None)."""
+    return [_clean(dataclasses.asdict(r)) for r in rows]
+
+
+def _clean(value):
+    if isinstance(value, dict):
+        return {k: _clean(v) for k, v in value.items()}
+    return None if isinstance(value, float) and not math.isfinite(value) else value
+
+
+# --- two-body propagation -------------------------------------------------------------------------
+
+MU_EARTH = 3.986004418e14
+#: States on which slow or per-state methods are timed (their throughput is per state, so it scales).
+PROPAGATE_SUBSET = 100_000
+
+
+@dataclass(frozen=True)
+class PropagateRow:
+    """One propagator on one data set: best of the repeats for n states; worst relative position and
+    velocity errors against mpmath over the first n_ref states with a finite result; NaN count."""
+
+    method: str
+    dataset: str
+    n: int
+    seconds: float
+    throughput_per_s: float
+    max_position_error: float
+    max_velocity_error: float
+    n_nan: int
+    status: str
+    note: str = ""
+    setup_seconds: float = 0.0
+
+
+@dataclass(frozen=True)
+class _States:
+    """Initial states (m, m/s) about MU_EARTH and times of flight (s)."""
+
+    name: str
+    r0: np.ndarray
+    v0: np.ndarray
+    dt: np.ndarray
+
+
+def _propagation_sets(n, seed):
+    """ "elliptic": e ~ U[0, 0.95]; "mixed": a third each of those ellipses, hyperbolas with
+    e - 1 = 10**U(-6, 0.5) and near-parabolic orbits with |1 - e| < 1e-3. p = 7000-21000 km, random
+    orientation, true anomaly in [-1, 1] rad, time of flight U(-10, 10) periods (2 pi sqrt(p**3 / mu) for
+    open orbits)."""
+    rng = np.random.default_rng(seed)
+    third = n // 3
+    mixed = np.concatenate(
+        [
+            rng.uniform(0, 0.95, third),
+            1 + 10 ** rng.uniform(-6, 0.5, third),
+            1 + rng.uniform(-1e-3, 1e-3, n - 2 * third),
+        ]
+    )
+    elliptic = _conic_states("elliptic", rng, rng.uniform(0, 0.95, n))
+    return [elliptic, _conic_states("mixed", rng, rng.permutation(mixed))]
+
+
+def _conic_states(name, rng, e):
+    from orbits.core.elements import elements_to_state
+
+    n = e.size
+    p = 7e6 * rng.uniform(1, 3, n)
+    angles = rng.uniform(0, np.pi, n), rng.uniform(0, 2 * np.pi, n), rng.uniform(0, 2 * np.pi, n), rng.uniform(-1, 1, n)
+    r0, v0 = elements_to_state(p, e, *angles, MU_EARTH)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        period = 2 * np.pi * np.sqrt(np.where(e < 1, p / np.abs((1 - e) * (1 + e)), p) ** 3 / MU_EARTH)
+    return _States(name, r0, v0, rng.uniform(-10, 10, n) * period)
+
+
+def _propagation_references(states, n_ref):
+    """[(r, v)] as mpf lists from orbits.reference.propagate for the first n_ref states."""
+    from orbits.reference import propagate
+
+    return [propagate(states.r0[i], states.v0[i], MU_EARTH, states.dt[i]) for i in range(min(n_ref, states.dt.size))]
+
+
+def _propagation_errors(r, v, refs):
+    """(worst |r - r_ref| / |r_ref|, worst |v - v_ref| / |v_ref|) over the finite rows; NaN if none."""
+    worst = [[], []]
+    with mpmath.workdps(40):
+        for i, ref in enumerate(refs):
+            for k, (x, exact) in enumerate(zip((r[i], v[i]), ref)):
+                if np.all(np.isfinite(x)):
+                    diff = mpmath.sqrt(sum((mpmath.mpf(float(a)) - b) ** 2 for a, b in zip(x, exact)))
+                    worst[k].append(float(diff / mpmath.sqrt(sum(b**2 for b in exact))))
+    return max(worst[0], default=math.nan), max(worst[1], default=math.nan)
+
+
+def _orbits_propagator(threads):
+    from orbits.core.propagate import propagate
+
+    def solve(states):
+        with _orbits_threads(threads):
+            return propagate(states.r0, states.v0, MU_EARTH, states.dt)
+
+    start = time.perf_counter()
+    with _orbits_threads(threads):
+        propagate(np.array([7e6, 0.0, 0.0]), np.array([0.0, 7.5e3, 0.0]), MU_EARTH, 100.0)
+    setup = time.perf_counter() - start
+    subset = PROPAGATE_SUBSET if threads == 0 else None
+    return _Method(_orbits_name(threads), solve, _as_states, setup, _orbits_note(threads), subset)
+
+
+def _as_states(states):
+    return states
+
+
+def _heyoka_propagator(threads):
+    """heyoka's lagrange_prop (heyoka >= 7.11) compiled as a cfunc; elliptic only."""
+    import heyoka
+
+    if not hasattr(heyoka.model, "lagrange_prop"):
+        raise ImportError("heyoka.model.lagrange_prop (heyoka >= 7.11)", name="heyoka >= 7.11")
+    start = time.perf_counter()
+    variables = heyoka.make_vars("x", "y", "z", "vx", "vy", "vz", "mu", "t")
+    pos, vel = heyoka.model.lagrange_prop(pos0=variables[:3], vel0=variables[3:6], mu=variables[6], tm=variables[7])
+    cf = heyoka.cfunc(list(pos) + list(vel), variables)
+    setup = time.perf_counter() - start
+
+    def prepare(states):
+        mu = np.full(states.dt.size, MU_EARTH)
+        return np.ascontiguousarray(np.vstack([states.r0.T, states.v0.T, mu, states.dt]))
+
+    def solve(inputs):
+        with _heyoka_threads(heyoka, threads):
+            out = cf(inputs)
+        return out[:3].T, out[3:].T
+
+    name = "heyoka lagrange_prop" if threads == 1 else "heyoka lagrange_prop (all cores)"
+    return _Method(name, solve, prepare, setup, f"cfunc, {threads} thread(s); elliptic only")
+
+
+def _numpy_fg_propagator():
+    return _Method(
+        "numpy f-and-g + Newton", _fg_newton, _as_states, note="plain baseline, elliptic only", subset=PROPAGATE_SUBSET
+    )
+
+
+def _fg_newton(states):
+    """Plain vectorised f and g on ellipses: Newton on Kepler's equation from E = M (abs step tol 1e-15),
+    no period reduction, no care for cancellation; NaN for open orbits."""
+    r0, v0, dt, mu = states.r0, states.v0, states.dt, MU_EARTH
+    r = np.linalg.norm(r0, axis=-1)
+    rv = np.sum(r0 * v0, axis=-1)
+    with np.errstate(all="ignore"):
+        a = 1.0 / (2.0 / r - np.sum(v0 * v0, axis=-1) / mu)
+        a = np.where(a > 0, a, np.nan)
+        n = np.sqrt(mu / a**3)
+        e_cos, e_sin = 1.0 - r / a, rv / np.sqrt(mu * a)
+        E0 = np.arctan2(e_sin, e_cos)
+        e = np.hypot(e_cos, e_sin)
+        M = E0 - e_sin + n * dt
+        E = _newton_elliptic(e, M)
+        dE = E - E0
+        f, g = 1.0 - a / r * (1.0 - np.cos(dE)), dt - (dE - np.sin(dE)) / n
+        r1 = f[:, None] * r0 + g[:, None] * v0
+        r1_norm = np.linalg.norm(r1, axis=-1)
+        f_dot, g_dot = -np.sqrt(mu * a) * np.sin(dE) / (r * r1_norm), 1.0 - a / r1_norm * (1.0 - np.cos(dE))
+        return r1, f_dot[:, None] * r0 + g_dot[:, None] * v0
+
+
+def _pykep_propagator():
+    import pykep
+
+    def solve(states):
+        pairs = [pykep.propagate_lagrangian(r, v, t, MU_EARTH) for r, v, t in zip(states.r0, states.v0, states.dt)]
+        return np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs])
+
+    return _Method(
+        "pykep propagate_lagrangian", solve, _as_states, note="per-state Python API", subset=PROPAGATE_SUBSET
+    )
+
+
+def _hapsira_propagator():
+    from hapsira.core.propagation.farnocchia import farnocchia_rv
+
+    def solve(states):
+        pairs = [farnocchia_rv(MU_EARTH, r, v, t) for r, v, t in zip(states.r0, states.v0, states.dt)]
+        return np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs])
+
+    return _Method("hapsira farnocchia", solve, _as_states, note="per-state Python API", subset=PROPAGATE_SUBSET)
+
+
+_PROPAGATORS = [
+    ("orbits", lambda: _orbits_propagator(1)),
+    ("orbits (all cores)", lambda: _orbits_propagator(_cores())),
+    ("orbits (NumPy)", lambda: _orbits_propagator(0)),
+    ("heyoka lagrange_prop", lambda: _heyoka_propagator(1)),
+    ("heyoka lagrange_prop (all cores)", lambda: _heyoka_propagator(_cores())),
+    ("numpy f-and-g + Newton", _numpy_fg_propagator),
+    ("pykep propagate_lagrangian", _pykep_propagator),
+    ("hapsira farnocchia", _hapsira_propagator),
+]
+
+
+def _subset(states, n):
+    return _States(states.name, states.r0[:n], states.v0[:n], states.dt[:n])
+
+
+def _measure_propagator(method, states, refs, repeats):
+    """Time method on states (best of repeats, inputs prepared outside the timing) and check its results."""
+    n = states.dt.size if method.subset is None else min(states.dt.size, method.subset)
+    inputs = method.prepare(_subset(states, n))
+    try:
+        seconds, (r, v) = _best_time(lambda: method.solve(inputs), repeats)
+    except Exception as exc:  # a peer failing on some input is a benchmark result, not a crash
+        return _failed_propagation(method, states, n, exc)
+    r, v = np.asarray(r, dtype=float), np.asarray(v, dtype=float)
+    position, velocity = _propagation_errors(r, v, refs)
+    n_nan = int(np.count_nonzero(~np.all(np.isfinite(np.concatenate([r, v], axis=-1)), axis=-1)))
+    return PropagateRow(
+        method.name,
+        states.name,
+        n,
+        seconds,
+        n / seconds,
+        position,
+        velocity,
+        n_nan,
+        "ok",
+        method.note,
+        method.setup_seconds,
+    )
+
+
+def _failed_propagation(method, states, n, exc):
+    note = f"raised {type(exc).__name__}: {exc}".splitlines()[0][:200]
+    nan = math.nan
+    return PropagateRow(method.name, states.name, n, nan, nan, nan, nan, 0, "raised", note, method.setup_seconds)
+
+
+def _best_time(call, repeats):
+    """(best wall time of `repeats` calls, the last result)."""
+    best, result = math.inf, None
+    for _ in range(repeats):
+        start = time.perf_counter()
+        result = call()
+        best = min(best, time.perf_counter() - start)
+    return best, result
+
+
+def bench_propagate(n=1_000_000, n_ref=200, seed=0, repeats=3):
+    """Time and check every available two-body propagator on the "elliptic" and "mixed" sets (see
+    _propagation_sets). Errors are relative to |r| and |v| of the mpmath reference (orbits.reference);
+    timings exclude preparing the inputs in the form each library takes.
+    Returns one PropagateRow per (method, data set)."""
+    loaded = _load(_PROPAGATORS)
+    rows = []
+    for states in _propagation_sets(n, seed):
+        refs = _propagation_references(states, n_ref)
+        for name, method, note in loaded:
+            if method is None:
+                rows.append(PropagateRow(name, states.name, 0, *[math.nan] * 4, 0, "skipped", note))
+            else:
+                rows.append(_measure_propagator(method, states, refs, repeats))
+    return rows
+
+
+def format_propagate(rows):
+    """Plain-text table of bench_propagate: M states/s, ratio to orbits on one thread on the same set,
+    worst relative position and velocity errors, NaN count, notes."""
+    reference = {r.dataset: r.throughput_per_s for r in rows if r.method == "orbits" and r.status == "ok"}
+    header = f"{'method':<34}{'dataset':<10}{'M/s':>9}{'vs orbits':>10}{'max |dr|/r':>12}{'max |dv|/v':>12}"
+    header += f"{'NaN':>9}  note"
+    lines = [header, "-" * len(header)]
+    for r in rows:
+        if r.status == "ok":
+            ratio = f"{r.throughput_per_s / reference[r.dataset]:>10.3f}" if r.dataset in reference else f"{'-':>10}"
+            stats = f"{r.throughput_per_s / 1e6:>9.3f}{ratio}{r.max_position_error:>12.2e}{r.max_velocity_error:>12.2e}"
+            stats += f"{r.n_nan:>9d}"
+        else:
+            stats = f"{'-':>9}{'-':>10}{'-':>12}{'-':>12}{'-':>9}"
+        lines.append(f"{r.method:<34}{r.dataset:<10}{stats}  {_note(r)}")
+    return "\n".join(lines)
+
+
+# --- unit-aware API overhead ----------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class ApiRow:
+    """One API call against the core call it wraps, on the same inputs: seconds per call (best of the
+    repeats) and the overhead, absolute and as a fraction of the core time."""
+
+    case: str
+    n: int
+    core_seconds: float
+    api_seconds: float
+    overhead_seconds: float
+    overhead_fraction: float
+
+
+def _per_call(call, n, repeats):
+    """Best over repeats of the mean time per call, over enough calls to last about 20 ms."""
+    call()
+    number = max(1, int(0.02 / max(_best_time(call, 1)[0], 1e-7))) if n < 1000 else 1
+    best = math.inf
+    for _ in range(repeats):
+        start = time.perf_counter()
+        for _ in range(number):
+            call()
+        best = min(best, (time.perf_counter() - start) / number)
+    return best
+
+
+def _api_cases(n, rng):
+    """[(case name, core call, API call)] on n orbits (scalars for n = 1)."""
+    import astropy.units as u
+
+    from orbits import Orbit
+    from orbits.core import elements
+    from orbits.core.propagate import propagate
+
+    shape = () if n == 1 else (n,)
+    a, e, nu = 7000 + rng.uniform(0, 1000, shape), rng.uniform(0, 0.5, shape), rng.uniform(-np.pi, np.pi, shape)
+    a_q, nu_q, dt = a * u.km, nu * u.rad, rng.uniform(0, 1e4, shape)
+    dt_q = dt * u.s
+    orbit = Orbit.from_elements("Earth", a=a_q, e=e, nu=nu_q)
+    r, v = orbit._state  # the state the API call uses, computed once (cached) as in any repeated use
+    p, zero = a * 1e3 * (1 - e) * (1 + e), np.zeros(shape)
+    return [
+        ("Orbit.propagate vs core propagate", lambda: propagate(r, v, orbit.mu, dt), lambda: orbit.propagate(dt_q)),
+        (
+            "Orbit.from_elements vs elements_to_state",
+            lambda: elements.elements_to_state(p, e, zero, zero, zero, nu, orbit.mu),
+            lambda: Orbit.from_elements("Earth", a=a_q, e=e, nu=nu_q),
+        ),
+    ]
+
+
+def bench_api(sizes=(1, 100_000, 1_000_000), seed=0, repeats=5):
+    """Overhead of the unit-aware API (orbits.Orbit) over the float64 core on the same inputs, per call,
+    for scalars and arrays of the given sizes. Returns one ApiRow per (case, size)."""
+    rows = []
+    rng = np.random.default_rng(seed)
+    for n in sizes:
+        for case, core, api in _api_cases(n, rng):
+            core_s, api_s = _per_call(core, n, repeats), _per_call(api, n, repeats)
+            rows.append(ApiRow(case, n, core_s, api_s, api_s - core_s, (api_s - core_s) / core_s))
+    return rows
+
+
+def format_api(rows):
+    """Plain-text table of bench_api (times in microseconds)."""
+    header = f"{'case':<44}{'n':>9}{'core us':>13}{'API us':>13}{'overhead us':>13}{'overhead':>10}"
+    lines = [header, "-" * len(header)]
+    for r in rows:
+        lines.append(
+            f"{r.case:<44}{r.n:>9d}{r.core_seconds * 1e6:>13.1f}{r.api_seconds * 1e6:>13.1f}"
+            f"{r.overhead_seconds * 1e6:>13.1f}{r.overhead_fraction:>10.1%}"
+        )
+    return "\n".join(lines)
+
+
+# --- command-line cold start ----------------------------------------------------------------------
+
+#: (arguments of `orbits`, target wall time in seconds or None) of bench_cli.
+CLI_COMMANDS = [
+    (["--help"], 0.2),
+    (["orbit", "--primary", "Earth", "--a", "42164 km", "--only", "period,speed"], 0.6),
+    (["kepler", "--e", "0.9", "--M", "0.1 rad"], None),
+]
+
+
+@dataclass(frozen=True)
+class CliRow:
+    """Wall time of `runs` fresh processes running one command: median and fastest; the issue's target."""
+
+    command: str
+    runs: int
+    median_seconds: float
+    min_seconds: float
+    target_seconds: float | None
+
+
+def _orbits_command():
+    """The installed `orbits` script, or the same entry point through this interpreter."""
+    script = shutil.which("orbits")
+    return [script] if script else [sys.executable, "-c", "from orbits_cli.main import app; app()"]
+
+
+def bench_cli(runs=10, commands=None):
+    """Cold-start wall time of each command over `runs` fresh processes (one unmeasured warm-up run
+    fills the OS file cache, as on any machine that has run orbits before)."""
+    rows = []
+    for args, target in commands or CLI_COMMANDS:
+        argv = _orbits_command() + args
+        subprocess.run(argv, capture_output=True, check=True)
+        times = []
+        for _ in range(runs):
+            start = time.perf_counter()
+            subprocess.run(argv, capture_output=True, check=True)
+            times.append(time.perf_counter() - start)
+        rows.append(CliRow("orbits " + " ".join(args), runs, statistics.median(times), min(times), target))
+    return rows
+
+
+def format_cli(rows):
+    """Plain-text table of bench_cli."""
+    header = f"{'command':<70}{'runs':>6}{'median s':>10}{'min s':>8}{'target s':>10}"
+    lines = [header, "-" * len(header)]
+    for r in rows:
+        target = f"{r.target_seconds:>10.2f}" if r.target_seconds else f"{'-':>10}"
+        lines.append(f"{r.command:<70}{r.runs:>6d}{r.median_seconds:>10.3f}{r.min_seconds:>8.3f}{target}")
+    return "\n".join(lines)
+
+
+# --- validation: where the time goes --------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class ValidateRow:
+    """Wall time of one scene (or of the whole run, scene "all") by stage: "analytic", "<backend> setup"
+    (integrator construction; heyoka's compilation, or its cache hit) and "<backend> integration";
+    "other" is the rest of validate_scene (comparisons, residuals). mode: sequential or sweep."""
+
+    scene: str
+    mode: str
+    stages: dict
+    total_seconds: float
+
+
+def _scene_row(report, total, mode):
+    stages = {"analytic": report.wall_times["analytic"]}
+    for backend, setup in report.setup_times.items():
+        stages[f"{backend} setup"] = setup
+        stages[f"{backend} integration"] = report.wall_times[backend]
+    stages["other"] = total - sum(stages.values())
+    return ValidateRow(report.name, mode, stages, total)
+
+
+def bench_validate(scenes=None, backend_names=("rebound", "heyoka"), sweep=True):
+    """Time `orbits validate` stage by stage on the built-in data and model scenes (or `scenes`):
+    sequentially in this process, scene by scene, then (sweep=True, dask installed) as validate_sweep
+    on a 2-worker LocalCluster of threads and of processes, whole runs only (cluster start-up included)."""
+    from orbits import scene as scene_module
+    from orbits.validate import models
+    from orbits.validate.run import validate
+
+    names = scene_module.builtin_names() + models.builtin_names()
+    scenes = scenes or [models.load_any(name) for name in names]
+    rows = []
+    start_all = time.perf_counter()
+    for scene in scenes:
+        start = time.perf_counter()
+        report = validate([scene], backend_names).scenes[0]
+        rows.append(_scene_row(report, time.perf_counter() - start, "sequential"))
+    rows.append(ValidateRow("all", "sequential", {}, time.perf_counter() - start_all))
+    if sweep:
+        rows.extend(_sweep_rows(scenes, backend_names))
+    return rows
+
+
+def _sweep_rows(scenes, backend_names):
+    try:
+        from orbits import distributed
+    except ImportError:
+        return []
+    rows = []
+    for processes in (False, True):
+        start = time.perf_counter()
+        try:
+            with distributed.sweep_client(processes=processes) as client:
+                started = time.perf_counter()
+                distributed.validate_sweep(scenes, client, backend_names)
+                swept = time.perf_counter()
+        except ImportError:
+            return []
+        mode = f"sweep, 2 worker {'processes' if processes else 'threads'}"
+        stages = {"cluster start": started - start, "scenes": swept - started}
+        rows.append(ValidateRow("all", mode, stages, time.perf_counter() - start))
+    return rows
+
+
+def format_validate(rows):
+    """Plain-text table of bench_validate: seconds per stage, one line per scene and run."""
+    stages = list(dict.fromkeys(k for r in rows for k in r.stages))
+    widths = [max(len(s), 8) + 2 for s in stages]
+    scene_width = max(len(r.scene) for r in rows) + 2
+    header = f"{'scene':<{scene_width}}{'mode':<27}" + "".join(f"{s:>{w}}" for s, w in zip(stages, widths))
+    header += f"{'total s':>10}"
+    lines = [header, "-" * len(header)]
+    for r in rows:
+        cells = "".join(f"{r.stages[s]:>{w}.4f}" if s in r.stages else " " * w for s, w in zip(stages, widths))
+        lines.append(f"{r.scene:<{scene_width}}{r.mode:<27}{cells}{r.total_seconds:>10.3f}")
+    return "\n".join(lines)
+
+
+# --- everything -----------------------------------------------------------------------------------
+
+#: name -> (run with default sizes, format) of every benchmark, in the order `orbits bench all` runs them.
+BENCHMARKS = {
+    "kepler": (bench_kepler, format_rows),
+    "propagate": (bench_propagate, format_propagate),
+    "api": (bench_api, format_api),
+    "cli": (bench_cli, format_cli),
+    "validate": (bench_validate, format_validate),
+}
+
+
+def bench_all(**options):
+    """{name: rows} of every benchmark; options maps a benchmark name to its keyword arguments."""
+    return {name: run(**options.get(name, {})) for name, (run, _) in BENCHMARKS.items()}
+
+
+def format_report(report):
+    """Every benchmark's table under its name."""
+    return "\n\n".join(f"== {name} ==\n{BENCHMARKS[name][1](rows)}" for name, rows in report.items())
+
+
+def report_to_json(report):
+    """{name: rows as JSON-ready dicts} (NaN and infinity become None)."""
+    return {name: rows_to_json(rows) for name, rows in report.items()}

@@ -38,18 +38,27 @@ def gravitational_parameter(primary):
 
 
 def _require_positive(x, name, unit):
-    if not np.all(np.isfinite(x)):
+    if not np.isfinite(x).all():
         raise OrbitDomainError(f"{name} = {float(np.asarray(x)[~np.isfinite(x)].flat[0])!r} {unit} is not finite")
-    if np.any(x <= 0):
+    if (x <= 0).any():
         raise OrbitDomainError(f"{name} = {float(np.asarray(x)[x <= 0].flat[0])!r} {unit} must be positive")
+
+
+def _shape(x):
+    """Shape of an array, Quantity or number (the attribute when there is one: np.shape dispatches
+    through Quantity.__array_function__, 2 us per call)."""
+    return x.shape if hasattr(x, "shape") else np.shape(x)
 
 
 def _check_shapes(**arrays):
     """Raise OrbitDomainError naming the arguments whose shapes do not broadcast together."""
+    shapes = {_shape(x) for x in arrays.values()} - {()}
+    if len(shapes) <= 1:  # scalars and one shape: nothing to check (np.broadcast_shapes costs 5 us)
+        return
     try:
-        np.broadcast_shapes(*(np.shape(x) for x in arrays.values()))
+        np.broadcast_shapes(*shapes)
     except ValueError:
-        listing = ", ".join(f"{name} {np.shape(x)}" for name, x in arrays.items())
+        listing = ", ".join(f"{name} {_shape(x)}" for name, x in arrays.items())
         raise OrbitDomainError(f"argument shapes do not broadcast together: {listing}") from None
 
 
@@ -61,23 +70,31 @@ def _semi_latus_rectum(a, e, p, q):
     if p is not None:
         value = units.to_si(p, units.M, "semi-latus rectum p")
         _require_positive(value, "semi-latus rectum p", "m")
-        return value
+        return value.copy()  # to_si may return a view of the caller's Quantity; the Orbit keeps its own p
     if q is not None:
         value = units.to_si(q, units.M, "periapsis distance q")
         _require_positive(value, "periapsis distance q", "m")
         return value * (1.0 + e)
     value = units.to_si(a, units.M, "semi-major axis a")
-    if np.any(~np.isfinite(value)):
+    size = value * (1.0 - e) * (1.0 + e)
+    if not ((size > 0.0) & (size < np.inf)).all():  # a valid a gives 0 < size < inf: check in detail otherwise
+        _check_semi_major_axis(value, e)
+    return size
+
+
+def _check_semi_major_axis(value, e):
+    """Raise OrbitDomainError for the first non-finite a, for e = 1, or for an a of the wrong sign for its e
+    (a > 0 iff e < 1)."""
+    if not np.isfinite(value).all():
         raise OrbitDomainError(f"semi-major axis a = {float(value[~np.isfinite(value)].flat[0])!r} m is not finite")
-    if np.any(e == 1.0):
+    if (e == 1.0).any():
         raise OrbitDomainError("parabolic orbit (e = 1) has infinite a: give q or p instead of a")
     wrong = np.where(e < 1.0, value <= 0.0, value >= 0.0)
-    if np.any(wrong):
+    if wrong.any():
         i = tuple(np.argwhere(np.broadcast_to(wrong, np.broadcast_shapes(value.shape, e.shape)))[0])
         bad_a, bad_e = np.broadcast_to(value, wrong.shape)[i], np.broadcast_to(e, wrong.shape)[i]
         rule = "a > 0 for a bound orbit (e < 1)" if bad_e < 1 else "a < 0 for a hyperbola (e > 1)"
         raise OrbitDomainError(f"semi-major axis a = {float(bad_a)!r} m with e = {float(bad_e)!r}: need {rule}")
-    return value * (1.0 - e) * (1.0 + e)
 
 
 @dataclass(frozen=True, eq=False)
@@ -116,7 +133,7 @@ class Orbit:
         """Orbit from one size element (a, p or q), e, i, Omega, omega and the true anomaly nu."""
         e = units.to_number(e, "eccentricity e")
         _check_shapes(e=e, a=a, p=p, q=q, inc=inc, raan=raan, argp=argp, nu=nu)
-        if not np.all(np.isfinite(e)) or np.any(e < 0):
+        if not np.isfinite(e).all() or (e < 0).any():
             bad = e[~(np.isfinite(e) & (e >= 0))].flat[0]
             raise OrbitDomainError(f"eccentricity e = {float(bad)!r} is outside [0, inf)")
         size = _semi_latus_rectum(a, e + 0.0, p, q)
@@ -132,10 +149,11 @@ class Orbit:
         mu = gravitational_parameter(primary)
         r, _ = elements.elements_to_state(size, e + 0.0, *angles, mu)  # validates ranges and asymptotes
         shape = r.shape[:-1]
-        fields = [np.broadcast_to(x, shape).astype(float) for x in (mu, size, e + 0.0, *angles)]
-        fields[4], fields[5] = elements.wrap_two_pi(fields[4]), elements.wrap_two_pi(fields[5])
-        fields[6] = elements.wrap_pi(fields[6])
-        return cls(*fields, mass=_mass(mass, shape))
+        # Wrapped before broadcasting: a scalar default (0 deg) is wrapped once, not once per orbit. Arrays
+        # computed here are new and kept as they are; the others are copied (they may be views of inputs).
+        wrapped = [elements.wrap_two_pi(angles[1]), elements.wrap_two_pi(angles[2]), elements.wrap_pi(angles[3])]
+        fresh = [_owned(x, shape) for x in (size, e + 0.0, *wrapped)]
+        return cls(_field(mu, shape), *fresh[:2], _field(angles[0], shape), *fresh[2:], mass=_mass(mass, shape))
 
     @classmethod
     def from_vectors(cls, primary, r, v, *, mass=None):
@@ -159,7 +177,7 @@ class Orbit:
         return self.p.shape
 
     def _require_ellipse(self, quantity):
-        if np.any(self.e >= 1.0):
+        if (self.e >= 1.0).any():
             bad = float(self.e[self.e >= 1].flat[0])
             raise OrbitDomainError(f"{quantity} is defined for ellipses only (e < 1); this orbit has e = {bad!r}")
 
@@ -252,7 +270,7 @@ class Orbit:
         _require_positive(r_si, "distance r", "m")
         with np.errstate(invalid="ignore"):
             v = twobody.speed_at_radius(r_si, self.p, self.e, self.mu)
-        if not np.all(np.isfinite(v)):
+        if not np.isfinite(v).all():
             raise OrbitDomainError("distance r lies beyond the apoapsis of this orbit: the body never gets there")
         return v << units.M_PER_S
 
@@ -410,6 +428,18 @@ class Orbit:
             else:
                 result[name] = value
         return result
+
+
+def _field(x, shape):
+    """A float64 array of the given shape owning its data: x copied, or broadcast then copied."""
+    x = np.asarray(x, dtype=float)
+    return x.copy() if x.shape == shape else np.broadcast_to(x, shape).astype(float)
+
+
+def _owned(x, shape):
+    """_field for an array the caller has just computed (nobody else holds it): no copy if x has the shape."""
+    x = np.asarray(x, dtype=float)
+    return x if x.shape == shape else np.broadcast_to(x, shape).astype(float)
 
 
 def _mass(mass, shape):

@@ -1,4 +1,4 @@
-"""Tests of the Kepler benchmark harness (orbits.bench) on tiny sizes; no timing assertions."""
+"""Tests of the benchmark harness (orbits.bench) on tiny sizes; no timing assertions."""
 
 import importlib.util
 import json
@@ -13,7 +13,17 @@ from mpmath import mp
 
 from orbits import bench
 
-METHODS = ["orbits", "heyoka kepE (cfunc)", "rebound.M_to_E", "numpy Newton", "exoplanet-core", "pykep"]
+METHODS = [
+    "orbits",
+    "orbits (all cores)",
+    "orbits (NumPy)",
+    "heyoka kepE (cfunc)",
+    "heyoka kepE (all cores)",
+    "rebound.M_to_E",
+    "numpy Newton",
+    "exoplanet-core",
+    "pykep",
+]
 DATASETS = ["easy", "hard", "hyperbolic"]
 SIZES = dict(n_easy=2000, n_hard=2000, n_hyp=2000, n_ref=50, seed=0, repeats=1)
 
@@ -43,6 +53,7 @@ def test_one_row_per_method_and_dataset(rows):
         ("exoplanet-core", "exoplanet_core"),
         ("pykep", "pykep"),
         ("heyoka kepE (cfunc)", "heyoka"),
+        ("heyoka kepE (all cores)", "heyoka"),
         ("rebound.M_to_E", "rebound"),
     ],
 )
@@ -153,3 +164,96 @@ def test_a_method_that_raises_is_reported_not_fatal(monkeypatch):
     assert [r.status for r in rows] == ["raised"] * 3
     assert rows[0].note == "raised FloatingPointError: no convergence"
     assert "raised" in bench.format_rows(rows)
+
+
+def test_orbits_rows_are_exact_on_every_set(rows):
+    for method in ("orbits", "orbits (all cores)", "orbits (NumPy)"):
+        for dataset in DATASETS:
+            r = row(rows, method, dataset)
+            assert r.status == "ok" and r.n_nan == 0 and r.max_ulp <= 4, r
+
+
+def test_kepler_table_gives_ratios_to_orbits(rows):
+    lines = bench.format_rows(rows).splitlines()
+    assert "vs orbits" in lines[0]
+    assert all(line.split()[2:4][1] == "1.000" for line in lines[2:] if line.startswith("orbits  "))
+
+
+# --- propagation, API, CLI, validation -------------------------------------------------------------
+
+PROPAGATORS = [name for name, _ in bench._PROPAGATORS]
+
+
+@pytest.fixture(scope="module")
+def propagate_rows():
+    return bench.bench_propagate(n=3000, n_ref=8, seed=1, repeats=1)
+
+
+def test_propagate_has_one_row_per_method_and_set(propagate_rows):
+    expected = [(d, m) for d in ("elliptic", "mixed") for m in PROPAGATORS]
+    assert [(r.dataset, r.method) for r in propagate_rows] == expected
+    for method, module in (("pykep propagate_lagrangian", "pykep"), ("hapsira farnocchia", "hapsira")):
+        r = row(propagate_rows, method, "mixed")
+        assert (r.status == "skipped") == (importlib.util.find_spec(module) is None)
+
+
+def test_orbits_propagates_every_conic_within_1e_13(propagate_rows):
+    for method in ("orbits", "orbits (all cores)", "orbits (NumPy)"):
+        for dataset in ("elliptic", "mixed"):
+            r = row(propagate_rows, method, dataset)
+            assert r.status == "ok" and r.n_nan == 0 and r.max_position_error <= 1e-13, r
+
+
+def test_elliptic_only_peers_give_nan_on_open_orbits(propagate_rows):
+    r = row(propagate_rows, "numpy f-and-g + Newton", "mixed")
+    assert 0 < r.n_nan < r.n and row(propagate_rows, "numpy f-and-g + Newton", "elliptic").n_nan == 0
+    if importlib.util.find_spec("heyoka"):
+        assert row(propagate_rows, "heyoka lagrange_prop", "mixed").n_nan > 0
+
+
+def test_propagate_table_and_json(propagate_rows):
+    table = bench.format_propagate(propagate_rows)
+    assert len(table.splitlines()) == len(propagate_rows) + 2 and "max |dr|/r" in table
+    json.dumps(bench.rows_to_json(propagate_rows), allow_nan=False)
+
+
+def test_api_rows_compare_the_same_calls():
+    rows = bench.bench_api(sizes=(1, 2000), repeats=1)
+    assert [(r.case.split()[0], r.n) for r in rows] == [
+        ("Orbit.propagate", 1),
+        ("Orbit.from_elements", 1),
+        ("Orbit.propagate", 2000),
+        ("Orbit.from_elements", 2000),
+    ]
+    assert all(r.core_seconds > 0 and r.api_seconds > 0 for r in rows)
+    assert bench.format_api(rows).splitlines()[0].split()[:2] == ["case", "n"]
+
+
+def test_cli_rows_time_fresh_processes():
+    rows = bench.bench_cli(runs=2, commands=[(["--help"], 0.2)])
+    assert rows[0].command == "orbits --help" and rows[0].runs == 2 and rows[0].min_seconds <= rows[0].median_seconds
+    assert "0.20" in bench.format_cli(rows)
+
+
+def test_validate_rows_split_the_time_by_stage():
+    rows = bench.bench_validate(sweep=False)
+    scenes = [r for r in rows if r.scene != "all"]
+    assert scenes and all({"analytic", "rebound integration", "heyoka setup"} <= r.stages.keys() for r in scenes)
+    assert all(abs(sum(r.stages.values()) - r.total_seconds) < 1e-9 for r in scenes)
+    assert rows[-1].scene == "all" and rows[-1].total_seconds >= sum(r.total_seconds for r in scenes)
+    assert len(bench.format_validate(rows).splitlines()) == len(rows) + 2
+
+
+def test_all_runs_every_benchmark_and_serialises():
+    tiny = {
+        "kepler": {"n_easy": 200, "n_hard": 200, "n_hyp": 200, "n_ref": 5, "repeats": 1},
+        "propagate": {"n": 300, "n_ref": 3, "repeats": 1},
+        "api": {"sizes": (1,), "repeats": 1},
+        "cli": {"runs": 1, "commands": [(["--help"], 0.2)]},
+        "validate": {"sweep": False},
+    }
+    report = bench.bench_all(**tiny)
+    assert list(report) == list(bench.BENCHMARKS)
+    text = bench.format_report(report)
+    assert all(f"== {name} ==" in text for name in bench.BENCHMARKS)
+    json.dumps(bench.report_to_json(report), allow_nan=False)

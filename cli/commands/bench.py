@@ -3,7 +3,23 @@
 from typing import Annotated
 
 import typer
+
 from orbits_cli.options import Format, FormatOption
+
+OutputOption = Annotated[str | None, typer.Option(help="also write the rows as JSON to this file (atomically)")]
+RepeatsOption = Annotated[int, typer.Option(help="timing repeats (best is kept)")]
+
+
+def _emit(data, table, fmt, output):
+    """Print the table (or the JSON), and write the JSON atomically to `output` if given."""
+    import json
+
+    from orbits.io import write_atomic
+
+    text = json.dumps(data, indent=2)
+    print(text if fmt == Format.json else table)
+    if output:
+        write_atomic(output, text + "\n")
 
 
 def kepler(
@@ -11,19 +27,90 @@ def kepler(
     hard: Annotated[int, typer.Option(help="hard pairs, e in [0.99, 1 - 1e-9], M tiny or near pi")] = 100_000,
     hyperbolic: Annotated[int, typer.Option(help="hyperbolic pairs")] = 100_000,
     reference: Annotated[int, typer.Option(help="pairs per set checked against mpmath")] = 2000,
-    repeats: Annotated[int, typer.Option(help="timing repeats (best is kept)")] = 3,
-    output: Annotated[str | None, typer.Option(help="also write the rows as JSON to this file (atomically)")] = None,
+    repeats: RepeatsOption = 3,
+    output: OutputOption = None,
     fmt: FormatOption = Format.table,
 ):
     """Kepler solvers: throughput and worst error of orbits and its peers, measured in one run."""
-    import json
+    from orbits.bench import bench_kepler, format_rows, rows_to_json
 
-    from orbits.bench import bench_kepler as run
-    from orbits.bench import format_rows, rows_to_json
-    from orbits.io import write_atomic
+    rows = bench_kepler(n_easy=easy, n_hard=hard, n_hyp=hyperbolic, n_ref=reference, repeats=repeats)
+    _emit(rows_to_json(rows), format_rows(rows), fmt, output)
 
-    rows = run(n_easy=easy, n_hard=hard, n_hyp=hyperbolic, n_ref=reference, repeats=repeats)
-    text = json.dumps(rows_to_json(rows), indent=2)
-    print(text if fmt == Format.json else format_rows(rows))
-    if output:
-        write_atomic(output, text + "\n")
+
+def propagate(
+    states: Annotated[int, typer.Option(help="states per set (elliptic, mixed conics)")] = 1_000_000,
+    reference: Annotated[int, typer.Option(help="states per set checked against mpmath")] = 200,
+    repeats: RepeatsOption = 3,
+    output: OutputOption = None,
+    fmt: FormatOption = Format.table,
+):
+    """Two-body propagation: throughput and worst position and velocity error of orbits and its peers."""
+    from orbits.bench import bench_propagate, format_propagate, rows_to_json
+
+    rows = bench_propagate(n=states, n_ref=reference, repeats=repeats)
+    _emit(rows_to_json(rows), format_propagate(rows), fmt, output)
+
+
+def api(
+    sizes: Annotated[str, typer.Option(help="comma-separated batch sizes (1 = scalars)")] = "1,100000,1000000",
+    repeats: RepeatsOption = 5,
+    output: OutputOption = None,
+    fmt: FormatOption = Format.table,
+):
+    """Unit-aware API: time per call of orbits.Orbit against the float64 core on the same inputs."""
+    from orbits.bench import bench_api, format_api, rows_to_json
+
+    rows = bench_api(sizes=_sizes(sizes), repeats=repeats)
+    _emit(rows_to_json(rows), format_api(rows), fmt, output)
+
+
+def _sizes(text):
+    try:
+        return tuple(int(s) for s in text.split(",") if s.strip())
+    except ValueError:
+        raise typer.BadParameter(f"--sizes: {text!r} is not a comma-separated list of integers") from None
+
+
+def cli(
+    runs: Annotated[int, typer.Option(help="fresh processes per command")] = 10,
+    output: OutputOption = None,
+    fmt: FormatOption = Format.table,
+):
+    """Command-line cold start: median wall time of fresh `orbits` processes."""
+    from orbits.bench import bench_cli, format_cli, rows_to_json
+
+    rows = bench_cli(runs=runs)
+    _emit(rows_to_json(rows), format_cli(rows), fmt, output)
+
+
+def validate(
+    sweep: Annotated[bool, typer.Option(help="also time dask sweeps (LocalCluster of threads, of processes)")] = True,
+    output: OutputOption = None,
+    fmt: FormatOption = Format.table,
+):
+    """Validation: where the time of `orbits validate` goes, scene by scene and stage by stage."""
+    from orbits.bench import bench_validate, format_validate, rows_to_json
+
+    rows = bench_validate(sweep=sweep)
+    _emit(rows_to_json(rows), format_validate(rows), fmt, output)
+
+
+def all_(
+    quick: Annotated[bool, typer.Option(help="a tenth of the default sizes and 3 CLI runs")] = False,
+    output: OutputOption = None,
+    fmt: FormatOption = Format.table,
+):
+    """Every benchmark above in one run: one table each, one JSON object {benchmark: rows}."""
+    from orbits.bench import bench_all, format_report, report_to_json
+
+    options = {}
+    if quick:
+        options = {
+            "kepler": {"n_easy": 100_000, "n_hard": 10_000, "n_hyp": 10_000, "n_ref": 200},
+            "propagate": {"n": 100_000, "n_ref": 50},
+            "api": {"sizes": (1, 100_000)},
+            "cli": {"runs": 3},
+        }
+    report = bench_all(**options)
+    _emit(report_to_json(report), format_report(report), fmt, output)

@@ -16,6 +16,12 @@ def command(
     output: Annotated[str | None, typer.Option(help="also write the JSON report to this file (atomically)")] = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
+    sweep: Annotated[
+        bool, typer.Option(help="run the scenes as dask tasks (pip install 'orbits[dask]'), one per scene")
+    ] = False,
+    scheduler: Annotated[
+        str | None, typer.Option(help="with --sweep: dask scheduler address, e.g. tcp://host:8786 (default: local)")
+    ] = None,
 ):
     """Cross-check the analytic answers of the built-in scenes (or the given ones) against N-body codes."""
     import json
@@ -32,6 +38,8 @@ def command(
     for name in chosen:
         if not backends.available(name):
             raise typer.BadParameter(f"--backend: {name} is not installed (pip install {name})")
+    if sweep or scheduler:
+        validate = _sweeper(scheduler)
     report = _run(validate, loaded, chosen, show_progress=fmt == Format.table and sys.stdout.isatty())
     data = report.to_dict()
     if output:
@@ -48,6 +56,21 @@ def command(
         validation_report(data)
     if not report.passed:
         raise typer.Exit(1)
+
+
+def _sweeper(address):
+    """validate(scenes, backend_names, progress=None) running each scene as a task on a dask cluster."""
+    try:
+        import distributed  # noqa: F401
+    except ImportError:
+        raise typer.BadParameter("--sweep needs dask: pip install 'orbits[dask]'") from None
+    from orbits.distributed import sweep_client, validate_sweep
+
+    def run(scenes, backend_names, progress=None):
+        with sweep_client(address) as client:
+            return validate_sweep(scenes, client, backend_names, progress=progress)
+
+    return run
 
 
 def _run(validate, scenes, backend_names, show_progress):

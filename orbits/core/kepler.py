@@ -17,10 +17,19 @@ How the accuracy is reached:
 - The starter is the root of the cubic model (1 - e) E + e E**3 / 6 = M, found without cancellation,
   and Halley's method runs inside a shrinking bracket, so it cannot diverge; a solve that does not
   converge raises ConvergenceError.
+
+Speed: the three solvers run compiled kernels (orbits/core/_fast_kepler.py, numba, cached on disk) when
+numba is installed, with the same reduction, residuals and safeguards; these NumPy implementations run
+otherwise (ORBITS_JIT=0, see orbits.core._fast) and re-run any batch the kernels flag, so that invalid
+input raises the same messages. One thread, the benchmark's 1e6 easy pairs (e < 0.99): 56 M solves/s
+compiled against 2.9 M/s here; both are within 4 ulp of mpmath (tests/core/test_fast_kepler.py).
+First call in a fresh process, kernels loaded from the disk cache: 0.43 s, mostly importing and
+initialising numba (see orbits.core._fast).
 """
 
 import numpy as np
 
+from orbits.core import _fast
 from orbits.core._checks import check_eccentricity, check_finite
 from orbits.core._dd import two_product, two_sum
 from orbits.core._roots import halley_in_bracket
@@ -131,6 +140,26 @@ def eccentric_anomaly(M, e):
     Accuracy: within 4 ulp of the exact root for e <= 1 - 2**-53 (tests/core/test_kepler.py).
     """
     M, e = np.broadcast_arrays(np.asarray(M, dtype=float), np.asarray(e, dtype=float))
+    if _fast.enabled():
+        return _compiled("elliptic", _eccentric_anomaly_numpy, M, e)
+    return _eccentric_anomaly_numpy(M, e)
+
+
+def _compiled(kernel, numpy_version, *inputs):
+    """Run the compiled kernel of that name; on invalid or unconverged input, the NumPy version (which raises)."""
+    from orbits.core import _fast_kepler
+
+    # Writable C-contiguous inputs (copied only if needed): one array type per kernel, so numba compiles
+    # each kernel once rather than again for read-only arrays.
+    flat = [np.require(x, requirements=["C", "W"]).reshape(-1) for x in inputs]
+    out = np.empty_like(flat[0])
+    if _fast.run(getattr(_fast_kepler, kernel), out.size, *flat, out):
+        return numpy_version(*inputs)
+    return out.reshape(inputs[0].shape)[()]
+
+
+def _eccentric_anomaly_numpy(M, e):
+    """eccentric_anomaly for broadcast float64 arrays, in NumPy."""
     check_eccentricity(e, 0.0, 1.0, False, True, "elliptic", _OTHER_CONICS)
     with np.errstate(under="ignore"):  # subnormal and zero results are legitimate
         m_hi, m_lo = reduce_mean_anomaly(M)
@@ -171,6 +200,13 @@ def hyperbolic_anomaly(M, e):
     form H + log(e/2) + log1p(-exp(-2H)) = log(M + H).
     """
     M, e = np.broadcast_arrays(np.asarray(M, dtype=float), np.asarray(e, dtype=float))
+    if _fast.enabled():
+        return _compiled("hyperbolic", _hyperbolic_anomaly_numpy, M, e)
+    return _hyperbolic_anomaly_numpy(M, e)
+
+
+def _hyperbolic_anomaly_numpy(M, e):
+    """hyperbolic_anomaly for broadcast float64 arrays, in NumPy."""
     check_finite(M, "mean anomaly M", "rad")
     check_eccentricity(e, 1.0, np.inf, True, True, "hyperbolic", _OTHER_CONICS)
     sign = np.where(np.signbit(M), -1.0, 1.0)
@@ -238,6 +274,13 @@ def parabolic_anomaly(W):
     Odd in W; W = 0 gives 0 exactly; finite for every finite W.
     """
     W = np.asarray(W, dtype=float)
+    if _fast.enabled():
+        return _compiled("parabolic", _parabolic_anomaly_numpy, W)
+    return _parabolic_anomaly_numpy(W)
+
+
+def _parabolic_anomaly_numpy(W):
+    """parabolic_anomaly for a float64 array, in NumPy."""
     check_finite(W, "parabolic mean anomaly W", "(dimensionless)")
     magnitude = np.abs(W)
     D = np.zeros_like(magnitude)

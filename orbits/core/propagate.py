@@ -13,11 +13,16 @@ functions c_k come from their series for |z| <= 1 and from cancellation-free clo
 |1 - e| down to 1e-16 and exact parabolas propagate without a special case.
 Radial orbits (r x v = 0) raise DegenerateOrbitError: the collision with the primary is not
 regularised here.
+
+Speed: with numba installed the same algorithm runs compiled, one state at a time
+(orbits/core/_fast_propagate.py); this NumPy version runs otherwise (ORBITS_JIT=0) and re-runs any
+batch the kernel flags, so that invalid input raises the same messages. Measured figures are in the
+docstring of orbits.bench.bench_propagate and in the README's Benchmarks section.
 """
 
 import numpy as np
 
-from orbits.core import _dd
+from orbits.core import _dd, _fast
 from orbits.core._checks import check_finite
 from orbits.core._roots import halley_in_bracket
 from orbits.core.elements import check_state
@@ -25,14 +30,22 @@ from orbits.core.kepler import TWO_PI_1, TWO_PI_2, sinh_minus_x, x_minus_sin
 from orbits.errors import DegenerateOrbitError
 
 
-def _stumpff_series(z, first):
-    """c_k(z) = sum_j (-z)**j / (2j + k)! for k = first, by Horner's rule (|z| <= 1, 12 terms)."""
+def _stumpff_coefficients(first):
+    """Coefficients, highest first, of c_k(z) = sum_j (-z)**j / (2j + k)!, k = first, j < 12 (|z| <= 1)."""
     coefficients, factorial = [], float(np.prod(np.arange(1, first + 1)))
     for j in range(12):
         coefficients.append((-1.0) ** j / factorial)
         factorial *= (2 * j + first + 1) * (2 * j + first + 2)
+    return tuple(coefficients[::-1])
+
+
+C2_SERIES, C3_SERIES = _stumpff_coefficients(2), _stumpff_coefficients(3)
+
+
+def _stumpff_series(z, coefficients):
+    """Horner's rule for the series c_k(z) with the given coefficients."""
     total = np.zeros_like(z)
-    for c in reversed(coefficients):
+    for c in coefficients:
         total = total * z + c
     return total
 
@@ -46,7 +59,7 @@ def stumpff(z):
     c0, c1, c2, c3 = (np.empty_like(z) for _ in range(4))
     small, pos, neg = np.abs(z) <= 1.0, z > 1.0, z < -1.0
     zs = z[small]
-    c2[small], c3[small] = _stumpff_series(zs, 2), _stumpff_series(zs, 3)
+    c2[small], c3[small] = _stumpff_series(zs, C2_SERIES), _stumpff_series(zs, C3_SERIES)
     c0[small], c1[small] = 1.0 - zs * c2[small], 1.0 - zs * c3[small]
     s = np.sqrt(z[pos])
     c0[pos], c1[pos] = np.cos(s), np.sin(s) / s
@@ -104,25 +117,29 @@ def _solve_universal(tau, r0, sigma0, alpha):
 
 
 def _reduce_by_periods(r0, v0, mu, dt):
-    """dt - k P with k = round(dt / P) on ellipses (unchanged on open orbits), P = 2 pi / sqrt(mu alpha**3).
+    """(dt - k P with k = round(dt / P) on ellipses, unchanged on open orbits; alpha [1/m]), where
+    alpha = 2 / |r0| - |v0|**2 / mu and P = 2 pi / sqrt(mu alpha**3).
 
-    alpha = 2 / |r0| - |v0|**2 / mu and P are formed in double-double arithmetic: a rounding error of
-    1e-16 in P would otherwise grow into a 1e-11 phase error after 1e3 periods of an e = 0.9 orbit.
+    alpha and P are formed in double-double arithmetic: a rounding error of 1e-16 in P would otherwise
+    grow into a 1e-11 phase error after 1e3 periods of an e = 0.9 orbit, and alpha formed in float64
+    from the scaled state loses to cancellation the digits that the solve needs near e = 1 (measured
+    on the benchmark's mixed states: worst position error 4.9e-11 with it, 6.6e-16 with this alpha).
     """
     zero = np.zeros_like(dt)
     r_norm = _dd.sqrt(_dd.dot(r0, r0))
     v2_over_mu = _dd.div(_dd.dot(v0, v0), (mu, zero))
     alpha = _dd.add(_dd.div((2.0 + zero, zero), r_norm), (-v2_over_mu[0], -v2_over_mu[1]))
+    alpha_si = alpha[0] + alpha[1]
     bound = alpha[0] > 0
     if not np.any(bound):
-        return dt
+        return dt, alpha_si
     alpha = (np.where(bound, alpha[0], 1.0), np.where(bound, alpha[1], 0.0))
     n = _dd.mul(_dd.sqrt((mu, zero)), _dd.mul(alpha, _dd.sqrt(alpha)))
     period = _dd.div((TWO_PI_1 + zero, TWO_PI_2 + zero), n)
     turns = np.where(bound, np.rint(dt / period[0]), 0.0)
     p_hi, p_lo = _dd.two_product(turns, period[0])
     reduced = _dd.add((dt, zero), (-p_hi, -(p_lo + turns * period[1])))
-    return reduced[0] + reduced[1]
+    return reduced[0] + reduced[1], alpha_si
 
 
 def propagate(r0, v0, mu, dt):
@@ -131,6 +148,42 @@ def propagate(r0, v0, mu, dt):
     Accuracy: agrees with an mpmath reference to 1e-12 relative over 1e3 periods and for
     |1 - e| >= 1e-14 (tests/core/test_propagate.py).
     """
+    if _fast.enabled():
+        result = _propagate_compiled(r0, v0, mu, dt)
+        if result is not None:
+            return result
+    return _propagate_numpy(r0, v0, mu, dt)
+
+
+def _propagate_compiled(r0, v0, mu, dt):
+    """propagate by the compiled kernel; None if the inputs need the NumPy version's checks to raise."""
+    from orbits.core import _fast_propagate
+
+    r0, v0, mu, dt = (np.asarray(x, dtype=float) for x in (r0, v0, mu, dt))
+    if r0.shape[-1:] != (3,) or v0.shape[-1:] != (3,):
+        return None
+    try:
+        batch = np.broadcast_shapes(r0.shape[:-1], v0.shape[:-1], mu.shape, dt.shape)
+    except ValueError:
+        return None
+    r0, v0 = (_contiguous(x, batch + (3,)).reshape(-1, 3) for x in (r0, v0))
+    mu, dt = (_contiguous(x, batch).reshape(-1) for x in (mu, dt))
+    r, v = np.empty_like(r0), np.empty_like(v0)
+    if _fast.run(_fast_propagate.propagate, dt.size, r0, v0, mu, dt, r, v):
+        return None
+    return r.reshape(batch + (3,)), v.reshape(batch + (3,))
+
+
+def _contiguous(x, shape):
+    """x broadcast to shape as a writable C-contiguous array (copied only if needed): every call then
+    passes the kernel the same array types, so numba compiles it once."""
+    if x.shape != shape:
+        x = np.broadcast_to(x, shape)
+    return np.require(x, requirements=["C", "W"])
+
+
+def _propagate_numpy(r0, v0, mu, dt):
+    """propagate in NumPy (masked iterations over the whole batch)."""
     r0, v0, mu = check_state(r0, v0, mu)
     dt = np.asarray(dt, dtype=float)
     check_finite(dt, "time step dt", "s")
@@ -143,12 +196,12 @@ def propagate(r0, v0, mu, dt):
             "the state is radial (r x v = 0): the propagator does not regularise the collision with "
             "the primary; give the orbit a non-zero angular momentum"
         )
-    dt = _reduce_by_periods(r0, v0, mu, dt)
+    dt, alpha_si = _reduce_by_periods(r0, v0, mu, dt)
     length = np.sqrt(np.sum(r0 * r0, axis=-1))
     speed_scale = np.sqrt(mu / length)
     x, w, tau = r0 / length[..., None], v0 / speed_scale[..., None], dt * speed_scale / length
     r_scaled = np.sqrt(np.sum(x * x, axis=-1))
-    alpha = 2.0 / r_scaled - np.sum(w * w, axis=-1)
+    alpha = alpha_si * length
     backwards = np.signbit(tau)
     w = np.where(backwards[..., None], -w, w)
     tau = np.abs(tau)

@@ -435,6 +435,22 @@ def test_edge_case(row, case, call, expected, record):
     record("EDGE_CASES.md rows checked", 1, 0.0, "failures")
 
 
+def test_row24_iteration_cap_raises_with_the_inputs_and_the_bracket(monkeypatch):
+    """Row 24: a solver that runs out of iterations raises ConvergenceError naming its inputs, last iterate
+    and bracket; it never returns its last iterate silently. The cap is lowered to 2 to provoke it."""
+    from orbits.core import _roots
+    from orbits.errors import ConvergenceError
+
+    monkeypatch.setattr(_roots, "MAX_ITERATIONS", 2)
+
+    def residual(x, idx):  # x**3 - 2 with a useless derivative: every step leaves the bracket
+        return x**3 - 2.0, np.full_like(x, 1e-300), np.zeros_like(x)
+
+    x, lo, hi = np.array([0.1]), np.array([0.0]), np.array([4.0])
+    with pytest.raises(ConvergenceError, match=r"did not converge in 2 iterations at M = 0.5.*bracket \["):
+        _roots.halley_in_bracket(x, lo, hi, residual, "test solve", {"M": np.array([0.5])})
+
+
 @pytest.mark.parametrize("one_minus_e", [1e-6, 1e-9, 1e-12, 1e-14, -1e-14, -1e-12, -1e-9, -1e-6])
 def test_row40_near_parabolic_round_trip_uses_p(one_minus_e, record):
     """Row 40 / issue 9: state -> elements -> state to 1e-12 relative down to |1 - e| = 1e-14."""

@@ -1,0 +1,57 @@
+"""`orbits bench propagate|api|cli|validate|all` and `orbits validate --sweep` on tiny sizes."""
+
+import json
+
+import pytest
+from typer.testing import CliRunner
+
+from orbits_cli.main import app
+
+
+def run(*args):
+    return CliRunner().invoke(app, list(args))
+
+
+def test_bench_propagate_writes_the_rows_atomically(tmp_path):
+    target = tmp_path / "propagate.json"
+    result = run("bench", "propagate", "--states", "600", "--reference", "4", "--repeats", "1", "--output", str(target))
+    assert result.exit_code == 0, result.output
+    rows = json.loads(target.read_text())
+    assert {r["dataset"] for r in rows} == {"elliptic", "mixed"} and "max |dr|/r" in result.output
+    assert [p.name for p in tmp_path.iterdir()] == ["propagate.json"]
+
+
+def test_bench_api_json_format():
+    result = run("bench", "api", "--sizes", "1", "--repeats", "1", "--format", "json")
+    assert result.exit_code == 0, result.output
+    assert {r["case"].split()[0] for r in json.loads(result.output)} == {"Orbit.propagate", "Orbit.from_elements"}
+
+
+def test_bench_api_rejects_bad_sizes():
+    result = run("bench", "api", "--sizes", "1,x")
+    assert result.exit_code == 2 and "comma-separated" in result.output
+
+
+def test_bench_validate_without_sweep():
+    result = run("bench", "validate", "--no-sweep", "--format", "json")
+    assert result.exit_code == 0, result.output
+    assert json.loads(result.output)[-1]["scene"] == "all"
+
+
+def test_bench_cli_and_all_are_registered():
+    for name in ("cli", "all"):
+        result = run("bench", name, "--help")
+        assert result.exit_code == 0 and "--output" in result.output
+
+
+def test_validate_sweep_matches_the_sequential_run(tmp_path):
+    pytest.importorskip("distributed")
+    sequential, swept = tmp_path / "a.json", tmp_path / "b.json"
+    assert run("validate", "circular", "flyby", "--output", str(sequential)).exit_code == 0
+    result = run("validate", "circular", "flyby", "--sweep", "--output", str(swept))
+    assert result.exit_code == 0, result.output
+    strip = lambda path: [
+        {k: v for k, v in s.items() if k in ("name", "checks", "residuals")}
+        for s in json.loads(path.read_text())["scenes"]
+    ]
+    assert strip(sequential) == strip(swept)
