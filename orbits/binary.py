@@ -30,6 +30,7 @@ from orbits.core import binary as binary_core
 from orbits.core import twobody
 from orbits.errors import OrbitDomainError
 from orbits.orbit import Orbit
+from orbits.tables import quantity_table
 
 
 def gravitational_parameter_of(value, name):
@@ -361,18 +362,7 @@ class Binary:
         `star2_<name>` for each star's orbit about the CM (RELATIVE_NAMES, STAR_NAMES). Without `only`,
         quantities undefined for this binary (e.g. the period of an unbound pair) are left out.
         """
-        names = QUANTITY_NAMES if only is None else list(only)
-        unknown = [n for n in names if n not in QUANTITY_NAMES]
-        if unknown:
-            raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(QUANTITY_NAMES)}")
-        result = {}
-        for name in names:
-            try:
-                result[name] = self._lookup(name)
-            except OrbitDomainError:
-                if only is not None:
-                    raise
-        return result
+        return quantity_table(self._lookup, QUANTITY_NAMES, only)
 
     def _lookup(self, name):
         for prefix in ("relative", "star1", "star2"):

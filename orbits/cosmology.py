@@ -37,6 +37,7 @@ from orbits import units
 from orbits.constants import SPEED_OF_LIGHT, G
 from orbits.core import cosmology as core
 from orbits.errors import OrbitDomainError
+from orbits.tables import check_names
 
 PER_S = u.s**-1
 KG_PER_M3 = u.kg / u.m**3
@@ -196,9 +197,7 @@ class Cosmology:
         """{snake_case name: Quantity} at redshift z or at time t after the big bang (default: today, z = 0),
         or `only` those names (QUANTITY_NAMES)."""
         names = QUANTITY_NAMES if only is None else list(only)
-        unknown = [n for n in names if n not in QUANTITY_NAMES]
-        if unknown:
-            raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(QUANTITY_NAMES)}")
+        check_names(names, QUANTITY_NAMES)
         if z is not None and t is not None:
             raise TypeError("give the epoch as a redshift z or a time t, not both")
         if t is None:
@@ -331,9 +330,7 @@ class ExpandingSphere:
     def quantities(self, t, only=None):
         """{snake_case name: Quantity} at time t (time) after the big bang, or `only` those (SPHERE_NAMES)."""
         names = SPHERE_NAMES if only is None else list(only)
-        unknown = [n for n in names if n not in SPHERE_NAMES]
-        if unknown:
-            raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(SPHERE_NAMES)}")
+        check_names(names, SPHERE_NAMES)
         return {name: getattr(self, name)(t) for name in names}
 
 

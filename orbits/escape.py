@@ -31,6 +31,7 @@ from orbits.core import binary as binary_core
 from orbits.core import escape as escape_core
 from orbits.core import twobody
 from orbits.errors import OrbitDomainError
+from orbits.tables import quantity_table
 
 
 def _named(primary):
@@ -256,18 +257,7 @@ def _orbit_radius(value, name):
 
 
 def _table(obj, all_names, only):
-    names = all_names if only is None else list(only)
-    unknown = [n for n in names if n not in all_names]
-    if unknown:
-        raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(all_names)}")
-    result = {}
-    for name in names:
-        try:
-            result[name] = getattr(obj, name)
-        except OrbitDomainError:
-            if only is not None:
-                raise
-    return result
+    return quantity_table(lambda name: getattr(obj, name), all_names, only)
 
 
 COSMIC_NAMES = [

@@ -31,6 +31,7 @@ from orbits.core import binary as binary_core
 from orbits.core import flyby as flyby_core
 from orbits.errors import OrbitDomainError
 from orbits.orbit import Orbit, gravitational_parameter
+from orbits.tables import quantity_table
 
 
 def _impact_parameter(b, periapsis, v_inf, mu):
@@ -222,18 +223,7 @@ class Flyby:
     def quantities(self, only=None):
         """{snake_case name: Quantity} of the encounter (or `only` those); `star1_<name>`, `star2_<name>` for the
         stars of Flyby.between. Without `only`, quantities this encounter lacks (no mass, no pair) are left out."""
-        names = QUANTITY_NAMES if only is None else list(only)
-        unknown = [n for n in names if n not in QUANTITY_NAMES]
-        if unknown:
-            raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(QUANTITY_NAMES)}")
-        result = {}
-        for name in names:
-            try:
-                result[name] = self._lookup(name)
-            except OrbitDomainError:
-                if only is not None:
-                    raise
-        return result
+        return quantity_table(self._lookup, QUANTITY_NAMES, only)
 
     def _lookup(self, name):
         for prefix in ("star1", "star2"):

@@ -21,6 +21,7 @@ from orbits import units
 from orbits.constants import Body, G, body
 from orbits.core import anomalies, elements, propagate, twobody
 from orbits.errors import OrbitDomainError
+from orbits.tables import quantity_table
 
 
 def gravitational_parameter(primary):
@@ -411,23 +412,13 @@ class Orbit:
     # ---- tables ---------------------------------------------------------------------------------
     def quantities(self, only=None):
         """{snake_case name: Quantity} of the section XXI quantities this orbit has (or `only` those)."""
-        names = QUANTITY_NAMES if only is None else list(only)
-        unknown = [n for n in names if n not in QUANTITY_NAMES]
-        if unknown:
-            raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(QUANTITY_NAMES)}")
-        result = {}
-        for name in names:
-            try:
-                value = getattr(self, name)
-            except OrbitDomainError:
-                if only is not None:
-                    raise
-                continue
-            if name == "covertex_times":
-                result["covertex_time_periapsis_side"], result["covertex_time_apoapsis_side"] = value
-            else:
-                result[name] = value
-        return result
+        return quantity_table(self._table_entry, QUANTITY_NAMES, only)
+
+    def _table_entry(self, name):
+        if name == "covertex_times":
+            t1, t2 = self.covertex_times
+            return {"covertex_time_periapsis_side": t1, "covertex_time_apoapsis_side": t2}
+        return getattr(self, name)
 
 
 def _field(x, shape):

@@ -12,6 +12,7 @@ and binary problems, and from the exact rigid rotation, evaluated in mpmath, for
 never another integrator. Wall times count integration only; compile and setup times are reported apart.
 """
 
+import importlib.util
 import time
 import warnings
 from dataclasses import dataclass, field
@@ -172,12 +173,8 @@ def methods(quick=False):
         Method("heyoka long double", "heyoka", "tol", thin((1e-12, 1e-15, 1e-18)),
                {"high_accuracy": True, "fp_type": "long double"}),
     ]
-    try:
-        import scipy  # noqa: F401
-
+    if importlib.util.find_spec("scipy") is not None:
         chosen.append(Method("scipy DOP853", "scipy", "rtol", thin((1e-6, 1e-9, 1e-12, 1e-14))))
-    except ImportError:
-        pass
     return chosen
 
 

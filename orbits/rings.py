@@ -26,6 +26,7 @@ from orbits.constants import G
 from orbits.core import rings, twobody
 from orbits.core.binary import require_positive
 from orbits.errors import OrbitDomainError
+from orbits.tables import quantity_table
 from orbits.validate.problem import NBodyProblem
 
 #: Relative perturbation that float64 round-off plants in a ring, and the shape deviation called break-up.
@@ -187,18 +188,7 @@ class Ring:
     # ---- tables ---------------------------------------------------------------------------------
     def quantities(self, only=None):
         """{name: Quantity} of the QUANTITY_NAMES this ring has (or `only` those, raising if one is undefined)."""
-        names = QUANTITY_NAMES if only is None else list(only)
-        unknown = [n for n in names if n not in QUANTITY_NAMES]
-        if unknown:
-            raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(QUANTITY_NAMES)}")
-        result = {}
-        for name in names:
-            try:
-                result[name] = getattr(self, name)
-            except OrbitDomainError:
-                if only is not None:
-                    raise
-        return result
+        return quantity_table(lambda name: getattr(self, name), QUANTITY_NAMES, only)
 
 
 QUANTITY_NAMES = [

@@ -1,0 +1,30 @@
+"""Quantity tables shared by the domain objects: {snake_case name: Quantity}, `only` selecting names."""
+
+from orbits.errors import OrbitDomainError
+
+
+def check_names(names, allowed):
+    """Raise KeyError listing the allowed names if any of `names` is not one of them."""
+    unknown = [n for n in names if n not in allowed]
+    if unknown:
+        raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(allowed)}")
+
+
+def quantity_table(lookup, allowed, only=None):
+    """{name: Quantity} for `only` (default: all `allowed`); lookup(name) returns a Quantity or a dict of them.
+
+    Without `only`, names this object does not have (lookup raises OrbitDomainError, e.g. the period of a
+    hyperbola) are left out; names asked for explicitly raise instead.
+    """
+    names = allowed if only is None else list(only)
+    check_names(names, allowed)
+    result = {}
+    for name in names:
+        try:
+            value = lookup(name)
+        except OrbitDomainError:
+            if only is not None:
+                raise
+            continue
+        result.update(value if isinstance(value, dict) else {name: value})
+    return result
