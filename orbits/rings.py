@@ -232,13 +232,24 @@ class RingExpectation:
         return float(times[reached[0]]) if reached.size else math.inf
 
 
-def ring_problem(n, times, central_ratio=0.0, phase=0.0):
+def ring_problem(n, times, central_ratio=0.0, phase=0.0, extended=False):
     """(NBodyProblem, RingExpectation): n bodies of G m = 1 / (beta + S_n / 4) on the unit circle at
     omega = 1 (angle phase + 2 pi k / n), preceded by a central body of G M = beta G m when beta = M / m > 0;
-    `times` in code units. The state is exact to rounding, so round-off alone seeds any instability."""
+    `times` in code units. The state is exact to rounding, so round-off alone seeds any instability.
+
+    extended=True builds the state in long double (for heyoka's fp_type="long double"): the seed is then
+    long double round-off, ROUND_OFF_SEED scaled by the ratio of the two machine epsilons (about 5e-20), and
+    the predicted break-up later by ln(1e-16 / 5e-20) / rate."""
     n = rings.check_count(n)
     beta = float(central_ratio)
     rate, mode = rings.growth_rate(n, beta)
+    if extended:
+        masses, positions, velocities = _long_double_ring(n, beta, phase)
+        seed = ROUND_OFF_SEED * float(np.finfo(np.longdouble).eps / np.finfo(np.float64).eps)
+        problem = NBodyProblem(gm=masses, positions=positions, velocities=velocities, n_active=masses.size,
+                               times=times)
+        breakup = float(rings.breakup_time(rate, seed, BREAKUP_DEVIATION))
+        return problem, RingExpectation(n, int(beta > 0.0), rate, mode, breakup)
     gm = 1.0 / (beta + 0.25 * rings.csc_sum(n))
     positions, velocities = rings.state_vectors(n, 1.0, 1.0, phase)
     masses = np.full(n, gm)
@@ -248,3 +259,22 @@ def ring_problem(n, times, central_ratio=0.0, phase=0.0):
     problem = NBodyProblem(gm=masses, positions=positions, velocities=velocities, n_active=masses.size, times=times)
     breakup = float(rings.breakup_time(rate, ROUND_OFF_SEED, BREAKUP_DEVIATION))
     return problem, RingExpectation(n, int(beta > 0.0), rate, mode, breakup)
+
+
+def _long_double_ring(n, beta, phase):
+    """(gm, positions, velocities) of ring_problem's state computed in long double (x87: 64-bit mantissa)."""
+    one = np.longdouble(1)
+    pi = 4 * np.arctan(one)
+    k = np.arange(n, dtype=np.longdouble)
+    theta = np.longdouble(phase) + 2 * pi * k / n
+    csc = np.sort(1 / np.sin(pi * np.arange(1, n, dtype=np.longdouble) / n))
+    gm = one / (np.longdouble(beta) + np.sum(csc) / 4)
+    zeros = np.zeros(n, dtype=np.longdouble)
+    positions = np.stack([np.cos(theta), np.sin(theta), zeros], axis=-1)
+    velocities = np.stack([-np.sin(theta), np.cos(theta), zeros], axis=-1)
+    masses = np.full(n, gm)
+    if beta > 0.0:
+        origin = np.zeros((1, 3), dtype=np.longdouble)
+        positions, velocities = np.vstack([origin, positions]), np.vstack([origin, velocities])
+        masses = np.concatenate([[np.longdouble(beta) * gm], masses])
+    return masses, positions, velocities

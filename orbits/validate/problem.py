@@ -14,9 +14,11 @@ from orbits.errors import OrbitDomainError
 
 
 def _frozen_float_array(name: str, value, shape: tuple[int, ...] | None = None) -> np.ndarray:
-    """Return a read-only float64 copy of ``value``; raise if it has the wrong shape or a non-finite entry."""
+    """Return a read-only float64 copy of ``value`` (long double kept as long double, for extended-precision
+    runs); raise if it has the wrong shape or a non-finite entry."""
+    dtype = np.longdouble if getattr(value, "dtype", None) == np.longdouble else np.float64
     try:
-        array = np.array(value, dtype=np.float64)
+        array = np.array(value, dtype=dtype)
     except (TypeError, ValueError) as exc:
         raise OrbitDomainError(f"{name} cannot be read as a float64 array: {exc}") from None
     if shape is not None and array.shape != shape:
@@ -64,7 +66,8 @@ class NBodyProblem:
     """Initial Cartesian state at t = 0 of N point masses (G = 1) and the times at which the state is wanted.
 
     Bodies [0, n_active) are massive; bodies [n_active, N) are massless test particles (gm = 0) that feel the
-    massive bodies but do not act on anything. Arrays are copied to read-only float64 on construction;
+    massive bodies but do not act on anything. Arrays are copied to read-only float64 on construction (arrays
+    given in long double stay long double, for heyoka's fp_type="long double"; rebound reads them as float64);
     equality is identity (eq=False), since elementwise array comparison has no single truth value.
     """
 

@@ -1,0 +1,29 @@
+"""Rings in heyoka's extended precision: a smaller round-off seed breaks the ring later, as predicted.
+
+Measured (heyoka, tol 1e-19, long double state): n = 4, 6, 8 break up at 0.99, 1.02 and 1.02 times the time
+predicted for a long-double seed (5e-20), 1.16-1.20 times later than the float64 run of the same ring.
+"""
+
+import numpy as np
+import pytest
+
+from orbits.rings import ring_problem
+from orbits.validate import backends
+
+pytestmark = pytest.mark.skipif(not backends.available("heyoka"), reason="heyoka is not installed")
+
+
+@pytest.mark.parametrize("n", [4, 6, 8])
+def test_long_double_ring_breaks_up_later_as_predicted(n):
+    _, probe = ring_problem(n, [1.0], extended=True)
+    times = np.linspace(0, 1.6 * probe.breakup_time, 500)[1:]
+    single, single_expected = ring_problem(n, times)
+    extended, expected = ring_problem(n, times, extended=True)
+    assert extended.positions.dtype == np.longdouble and single.positions.dtype == np.float64
+    fast = backends.integrate("heyoka", single, tol=1e-16)
+    slow = backends.integrate("heyoka", extended, tol=1e-19, fp_type="long double")
+    assert slow.settings["fp_type"] == "long double"
+    t_single = single_expected.measured_breakup_time(fast.times, fast.positions)
+    t_extended = expected.measured_breakup_time(slow.times, slow.positions)
+    assert 0.8 <= t_extended / expected.breakup_time <= 1.25
+    assert t_extended > 1.1 * t_single  # predicted: ln(1e-3 / 5e-20) / ln(1e-3 / 1e-16) = 1.25 times later
