@@ -19,6 +19,15 @@ OnlyOption = Annotated[
 ]
 
 
+# The orientation of a conic, shared by every verb that takes elements (bare angle numbers are degrees).
+EccentricityOption = Annotated[float, typer.Option("--e", help="eccentricity")]
+InclinationOption = Annotated[str, typer.Option("--inc", help="inclination ('28.5 deg'; bare numbers are degrees)")]
+NodeOption = Annotated[str, typer.Option("--raan", help="longitude of the ascending node")]
+PeriapsisArgumentOption = Annotated[
+    str, typer.Option("--argp", help="argument of periapsis (for a binary: of star 2 relative to star 1)")
+]
+TrueAnomalyOption = Annotated[str, typer.Option("--nu", help="true anomaly")]
+
 PlotOption = Annotated[
     str | None, typer.Option("--plot", help="also draw a picture to this .png, .svg or .pdf file (atomically)")
 ]

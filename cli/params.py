@@ -35,6 +35,16 @@ def angle(text, name):
         return quantity(text, "angle", name)
 
 
+def orientation(inc, raan, argp, nu):
+    """{inc, raan, argp, nu} as angle Quantities from the shared element options."""
+    return {
+        "inc": angle(inc, "--inc"),
+        "raan": angle(raan, "--raan"),
+        "argp": angle(argp, "--argp"),
+        "nu": angle(nu, "--nu"),
+    }
+
+
 def vector(text, physical_type, name):
     """3-vector Quantity from "X,Y,Z UNIT" (e.g. "7000,0,0 km")."""
     numbers, _, unit = text.strip().partition(" ")

@@ -21,6 +21,15 @@ def _axes(ax):
     return ax.figure, ax
 
 
+def _finish_plane(ax, unit, x_label):
+    """Equal aspect, labelled axes with the length unit, grid and legend: the end of every in-plane picture."""
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(f"{x_label} [{unit.to_string()}]")
+    ax.set_ylabel(f"y [{unit.to_string()}]")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="best", fontsize="small")
+
+
 def _length_unit(size_m):
     """AU for orbits larger than 0.1 AU, km otherwise."""
     return u.AU if size_m > 0.1 * u.AU.to(u.m) else u.km
@@ -65,11 +74,7 @@ def orbit_plane(orbit, times=None, ax=None, unit=None, label=None):
         ax.plot(-c * scale, 0, marker="+", ms=10, color="gray", ls="none", label="centre")
         ax.plot(-2 * c * scale, 0, marker="x", color="gray", ls="none", label="empty focus")
     _mark_positions(ax, nus, radii, scale)
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel(f"x toward periapsis [{unit.to_string()}]")
-    ax.set_ylabel(f"y [{unit.to_string()}]")
-    ax.grid(alpha=0.3)
-    ax.legend(loc="best", fontsize="small")
+    _finish_plane(ax, unit, "x toward periapsis")
     return fig, ax
 
 
@@ -121,11 +126,7 @@ def flyby_plane(flyby, ax=None, unit=None):
         label=f"impact parameter b = {b * scale:.4g} {unit}",
     )
     ax.set_title(f"deflection {np.degrees(float(flyby.deflection_angle.to_value(u.rad))):.2f} deg")
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel(f"x toward closest approach [{unit.to_string()}]")
-    ax.set_ylabel(f"y [{unit.to_string()}]")
-    ax.grid(alpha=0.3)
-    ax.legend(loc="best", fontsize="small")
+    _finish_plane(ax, unit, "x toward closest approach")
     return fig, ax
 
 
@@ -153,11 +154,7 @@ def binary_plane(binary, ax=None, unit=None):
         label="joining line",
     )
     ax.plot(0, 0, marker="+", ms=12, color="k", ls="none", label="centre of mass")
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel(f"x toward periapsis [{unit.to_string()}]")
-    ax.set_ylabel(f"y [{unit.to_string()}]")
-    ax.grid(alpha=0.3)
-    ax.legend(loc="best", fontsize="small")
+    _finish_plane(ax, unit, "x toward periapsis")
     return fig, ax
 
 

@@ -4,7 +4,18 @@ from typing import Annotated
 
 import typer
 
-from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
+from orbits_cli.options import (
+    EccentricityOption,
+    Format,
+    FormatOption,
+    InclinationOption,
+    NodeOption,
+    OnlyOption,
+    PeriapsisArgumentOption,
+    PlotOption,
+    TrueAnomalyOption,
+    save_plot,
+)
 
 MASS_HELP = "body name (Earth, Moon, Sun, Jupiter), mass ('1.989e30 kg', '1 solMass') or GM ('3.986e14 m3/s2')"
 
@@ -16,11 +27,11 @@ def command(
     p: Annotated[str | None, typer.Option("--p", help="relative semi-latus rectum")] = None,
     q: Annotated[str | None, typer.Option("--q", help="periapsis separation")] = None,
     period: Annotated[str | None, typer.Option("--period", help="orbital period, e.g. '27.32 d' (sets a)")] = None,
-    e: Annotated[float, typer.Option("--e", help="eccentricity")] = 0.0,
-    inc: Annotated[str, typer.Option("--inc", help="inclination ('28.5 deg'; bare numbers are degrees)")] = "0",
-    raan: Annotated[str, typer.Option("--raan", help="longitude of the ascending node")] = "0",
-    argp: Annotated[str, typer.Option("--argp", help="argument of periapsis of star 2 relative to star 1")] = "0",
-    nu: Annotated[str, typer.Option("--nu", help="true anomaly")] = "0",
+    e: EccentricityOption = 0.0,
+    inc: InclinationOption = "0",
+    raan: NodeOption = "0",
+    argp: PeriapsisArgumentOption = "0",
+    nu: TrueAnomalyOption = "0",
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
@@ -51,10 +62,7 @@ def build(m1, m2, a, p, q, period, e, inc, raan, argp, nu):
         mass_or_body(m1, "--m1"),
         mass_or_body(m2, "--m2"),
         e=e,
-        inc=params.angle(inc, "--inc"),
-        raan=params.angle(raan, "--raan"),
-        argp=params.angle(argp, "--argp"),
-        nu=params.angle(nu, "--nu"),
+        **params.orientation(inc, raan, argp, nu),
         **size,
     )
 

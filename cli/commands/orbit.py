@@ -4,7 +4,18 @@ from typing import Annotated
 
 import typer
 
-from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
+from orbits_cli.options import (
+    EccentricityOption,
+    Format,
+    FormatOption,
+    InclinationOption,
+    NodeOption,
+    OnlyOption,
+    PeriapsisArgumentOption,
+    PlotOption,
+    TrueAnomalyOption,
+    save_plot,
+)
 
 
 def command(
@@ -17,11 +28,11 @@ def command(
     a: Annotated[str | None, typer.Option("--a", help="semi-major axis, e.g. '1 AU' (negative for hyperbolas)")] = None,
     p: Annotated[str | None, typer.Option("--p", help="semi-latus rectum")] = None,
     q: Annotated[str | None, typer.Option("--q", help="periapsis distance (use for e = 1)")] = None,
-    e: Annotated[float, typer.Option("--e", help="eccentricity")] = 0.0,
-    inc: Annotated[str, typer.Option("--inc", help="inclination ('28.5 deg'; bare numbers are degrees)")] = "0",
-    raan: Annotated[str, typer.Option("--raan", help="longitude of the ascending node")] = "0",
-    argp: Annotated[str, typer.Option("--argp", help="argument of periapsis")] = "0",
-    nu: Annotated[str, typer.Option("--nu", help="true anomaly")] = "0",
+    e: EccentricityOption = 0.0,
+    inc: InclinationOption = "0",
+    raan: NodeOption = "0",
+    argp: PeriapsisArgumentOption = "0",
+    nu: TrueAnomalyOption = "0",
     r: Annotated[
         str | None, typer.Option("--r", help="position vector 'X,Y,Z UNIT' (with --v instead of elements)")
     ] = None,
@@ -69,10 +80,7 @@ def build(body_name, primary, a, p, q, e, inc, raan, argp, nu, r, v, mass):
     orbit = Orbit.from_elements(
         center,
         e=e,
-        inc=params.angle(inc, "--inc"),
-        raan=params.angle(raan, "--raan"),
-        argp=params.angle(argp, "--argp"),
-        nu=params.angle(nu, "--nu"),
+        **params.orientation(inc, raan, argp, nu),
         mass=mass_q,
         **sizes,
     )
