@@ -53,7 +53,7 @@ def reports_errors(command):
     def wrapper(*args, **kwargs):
         import astropy.units as u
 
-        from orbits.errors import OrbitsError
+        from orbits.core.errors import OrbitsError
 
         try:
             return command(*args, **kwargs)

@@ -1,41 +1,53 @@
 """orbits: celestial mechanics to the last float64 digit, cross-checked against rebound and heyoka.
 
-Public API: Orbit (orbits.orbit), named bodies and constants (orbits.constants), errors
-(orbits.errors). The float64 numeric core lives in orbits.core and takes no units.
+Public API (loaded on first use, PEP 562, so that `import orbits` is instant and `import orbits.core.<any>`
+never loads astropy): Orbit, Binary and Star, Flyby, RestrictedThreeBody, Ring, CosmicVelocities,
+SynchronousOrbit, escape_speed, max_elongation, Cosmology, ExpandingSphere, anomalies, the named bodies and
+constants, and the errors. The float64 numeric core lives in orbits.core and takes no units; the N-body
+cross-checks live in orbits.validate and the benchmarks in orbits.tools.
 """
 
-from orbits.binary import Binary, Star
-from orbits.constants import BODIES, Body, G, body
-from orbits.cosmology import Cosmology, ExpandingSphere
-from orbits.errors import ConvergenceError, DegenerateOrbitError, OrbitDomainError, OrbitsError
-from orbits.escape import CosmicVelocities, SynchronousOrbit, escape_speed, max_elongation
-from orbits.flyby import Flyby
-from orbits.lagrange import RestrictedThreeBody
-from orbits.orbit import Orbit
-from orbits.rings import Ring
+import importlib
 
 __version__ = "0.1.0"
 
-__all__ = [
-    "BODIES",
-    "G",
-    "Body",
-    "body",
-    "Orbit",
-    "Binary",
-    "Star",
-    "Flyby",
-    "RestrictedThreeBody",
-    "Ring",
-    "CosmicVelocities",
-    "SynchronousOrbit",
-    "escape_speed",
-    "max_elongation",
-    "Cosmology",
-    "ExpandingSphere",
-    "ConvergenceError",
-    "DegenerateOrbitError",
-    "OrbitDomainError",
-    "OrbitsError",
-    "__version__",
-]
+#: public name -> the module that defines it
+_HOMES = {
+    "Orbit": "orbits.orbit",
+    "Binary": "orbits.binary",
+    "Star": "orbits.binary",
+    "Flyby": "orbits.flyby",
+    "RestrictedThreeBody": "orbits.lagrange",
+    "Ring": "orbits.rings",
+    "CosmicVelocities": "orbits.escape",
+    "SynchronousOrbit": "orbits.escape",
+    "escape_speed": "orbits.escape",
+    "max_elongation": "orbits.escape",
+    "Cosmology": "orbits.cosmology",
+    "ExpandingSphere": "orbits.cosmology",
+    "anomalies": "orbits.anomalies",
+    "BODIES": "orbits.constants",
+    "G": "orbits.constants",
+    "Body": "orbits.constants",
+    "body": "orbits.constants",
+    "ConvergenceError": "orbits.core.errors",
+    "DegenerateOrbitError": "orbits.core.errors",
+    "OrbitDomainError": "orbits.core.errors",
+    "OrbitsError": "orbits.core.errors",
+    "SceneError": "orbits.core.errors",
+}
+
+__all__ = [*_HOMES, "__version__"]
+
+
+def __getattr__(name: str):
+    """Import the public name's home module on first use and cache the name here."""
+    if name not in _HOMES:
+        raise AttributeError(f"module 'orbits' has no attribute {name!r}")
+    value = getattr(importlib.import_module(_HOMES[name]), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(__all__)

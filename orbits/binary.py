@@ -24,31 +24,14 @@ from functools import cached_property
 import astropy.units as u
 import numpy as np
 
-from orbits import units
-from orbits.constants import Body, G, body
+from orbits import inputs, units
+from orbits.constants import G
 from orbits.core import binary as binary_core
 from orbits.core import twobody
-from orbits.errors import OrbitDomainError
+from orbits.core.checks import require_positive
+from orbits.core.errors import OrbitDomainError
 from orbits.orbit import Orbit
 from orbits.tables import quantity_table
-
-
-def gravitational_parameter_of(value, name):
-    """G m (m3/s2) of a mass given as a Body, a body name, a mass (kg) or a GM (m3/s2) Quantity.
-
-    Raises OrbitDomainError naming `name`, the value, the allowed range (0, inf) and the unit for m <= 0.
-    """
-    if isinstance(value, str):
-        value = body(value)
-    if isinstance(value, Body):
-        return np.asarray(value.gm, dtype=float)
-    if isinstance(value, u.Quantity) and value.unit.is_equivalent(units.M3_PER_S2):
-        gm = units.to_si(value, units.M3_PER_S2, name)
-        binary_core.require_positive(gm, name, "m3 / s2")
-        return gm
-    mass = units.to_si(value, units.KG, name)
-    binary_core.require_positive(mass, name, "kg")
-    return G * mass
 
 
 def _vector(value, unit, name, shape):
@@ -118,7 +101,7 @@ class Binary:
         separation) or the period T (then a = (G (m1 + m2) T**2 / (4 pi**2))**(1/3), e < 1). Angles orient
         the relative orbit; star 2 shares its periapsis direction, star 1 is opposite.
         """
-        gm1, gm2 = gravitational_parameter_of(m1, "mass m1"), gravitational_parameter_of(m2, "mass m2")
+        gm1, gm2 = inputs.gravitational_parameter(m1, "mass m1"), inputs.gravitational_parameter(m2, "mass m2")
         if period is not None:
             a = _semi_major_axis_from_period(period, e, gm1 + gm2, given=(a, p, q))
         relative = Orbit.from_elements(
@@ -143,7 +126,7 @@ class Binary:
     @classmethod
     def from_vectors(cls, m1, m2, r1, v1, r2, v2):
         """Binary from both stars' positions (length) and velocities (speed), shape (..., 3), in any inertial frame."""
-        gm1, gm2 = gravitational_parameter_of(m1, "mass m1"), gravitational_parameter_of(m2, "mass m2")
+        gm1, gm2 = inputs.gravitational_parameter(m1, "mass m1"), inputs.gravitational_parameter(m2, "mass m2")
         r1, r2 = units.to_si(r1, units.M, "position r1"), units.to_si(r2, units.M, "position r2")
         v1, v2 = units.to_si(v1, units.M_PER_S, "velocity v1"), units.to_si(v2, units.M_PER_S, "velocity v2")
         relative = Orbit.from_vectors(
@@ -316,7 +299,7 @@ class Binary:
         the two-star potential).
         """
         r = units.to_si(distance, units.M, "distance r")
-        binary_core.require_positive(r, "distance r", "m")
+        require_positive(r, "distance r", "m")
         return twobody.escape_speed(r, self.relative.mu) << units.M_PER_S
 
     # ---- state vectors --------------------------------------------------------------------------
@@ -378,7 +361,7 @@ def _semi_major_axis_from_period(period, e, mu, given):
     if any(x is not None for x in given):
         raise TypeError("give exactly one size of a, p, q, period; got period and another")
     t = units.to_si(period, units.S, "period T")
-    binary_core.require_positive(t, "period T", "s")
+    require_positive(t, "period T", "s")
     binary_core.require_bound(units.to_number(e, "eccentricity e"), "a period")
     return binary_core.semi_major_axis_from_period(t, mu) << units.M
 

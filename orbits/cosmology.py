@@ -16,27 +16,26 @@
 
 Cosmology stores H0 (1/s) and today's density parameters as floats; like astropy.cosmology it multiplies the
 dimensionless E(z) and its integrals by one scale, t_H = 1 / H0 or d_H = c / H0, and it chooses its method
-(closed form or quadrature, orbits.core.cosmology.Friedmann) once, at construction. astropy.cosmology itself
+(closed form or quadrature, orbits.core.friedmann.Friedmann) once, at construction. astropy.cosmology itself
 is never imported (it costs ~0.7 s); the tests use it as an independent reference.
 
 ExpandingSphere is the notes' Newtonian model: a shell enclosing G M moves at the zero-energy speed
 sqrt(2 G M / r), so r(t) = (9 G M t**2 / 2)**(1/3), v(t) = (4 G M / (3 t))**(1/3), H = 2 / (3 t); its mean
 density is exactly critical (Omega = 1), which is why it agrees with Cosmology.einstein_de_sitter.
-expanding_sphere_problem sets the same scene up for the N-body backends.
+The matching N-body problem for rebound and heyoka is built in orbits.validate.builders.
 """
 
-import math
-import operator
 from dataclasses import dataclass, field
 from functools import cached_property
 
 import astropy.units as u
 import numpy as np
 
-from orbits import units
+from orbits import inputs, units
 from orbits.constants import SPEED_OF_LIGHT, G
-from orbits.core import cosmology as core
-from orbits.errors import OrbitDomainError
+from orbits.core import friedmann, sphere
+from orbits.core.checks import require_positive
+from orbits.core.errors import OrbitDomainError
 from orbits.tables import check_names
 
 PER_S = u.s**-1
@@ -53,15 +52,6 @@ def _hubble(value, name="Hubble constant H0"):
         bad = np.ravel(value)[~np.ravel(np.isfinite(hubble) & (hubble > 0))][0]
         raise OrbitDomainError(f"{name} = {bad} is outside the allowed range (0, inf) 1 / s: it must be positive")
     return hubble
-
-
-def _require_positive(x, name, unit):
-    """Raise OrbitDomainError naming the first entry of x that is not finite and > 0."""
-    bad = ~(np.isfinite(x) & (x > 0))
-    if np.any(bad):
-        raise OrbitDomainError(
-            f"{name} = {float(np.asarray(x)[bad].flat[0])!r} {unit} is outside the allowed range (0, inf) {unit}"
-        )
 
 
 def _densities(Om0, Ol0, Or0, Ok0):
@@ -95,11 +85,11 @@ class Cosmology:
     omega_r: float = 0.0
     omega_k: float = 0.0
     omega_l: float = 0.0
-    model: core.Friedmann = field(init=False, repr=False)
+    model: friedmann.Friedmann = field(init=False, repr=False)
 
     def __post_init__(self):
-        _require_positive(self.h0, "Hubble constant H0", "1 / s")
-        model = core.Friedmann(self.omega_m, self.omega_r, self.omega_k, self.omega_l)
+        require_positive(self.h0, "Hubble constant H0", "1 / s")
+        model = friedmann.Friedmann(self.omega_m, self.omega_r, self.omega_k, self.omega_l)
         object.__setattr__(self, "h0", float(self.h0))
         object.__setattr__(self, "model", model)
         for name in ("omega_m", "omega_r", "omega_k", "omega_l"):
@@ -126,7 +116,7 @@ class Cosmology:
     # ---- scales -------------------------------------------------------------------------------
     @cached_property
     def method(self):
-        """How distances and times are computed, chosen at construction (orbits.core.cosmology.METHODS)."""
+        """How distances and times are computed, chosen at construction (orbits.core.friedmann.METHODS)."""
         return self.model.method
 
     @cached_property
@@ -172,7 +162,7 @@ class Cosmology:
     def critical_density(self, z=0.0):
         """rho_c(z) = 3 H(z)**2 / (8 pi G) (kg/m3); inf beyond the float64 range."""
         with np.errstate(over="ignore"):
-            return core.critical_density(self.hubble_parameter(z).to_value(PER_S), G) << KG_PER_M3
+            return sphere.critical_density(self.hubble_parameter(z).to_value(PER_S), G) << KG_PER_M3
 
     def density_parameter(self, z=0.0):
         """Omega_m(z) = rho_m(z) / rho_c(z) (dimensionless): 1 at every z for Einstein-de Sitter."""
@@ -260,16 +250,6 @@ def _cosmic_time(t):
 # ---- the Newtonian sphere of XXIV ---------------------------------------------------------------------------
 
 
-def _gravitational_parameter(mass, name):
-    """G M (m3/s2) from a mass (kg) or a GM (m3/s2) Quantity; finite and > 0."""
-    if isinstance(mass, u.Quantity) and mass.unit.is_equivalent(units.M3_PER_S2):
-        gm = units.to_si(mass, units.M3_PER_S2, name)
-    else:
-        gm = G * units.to_si(mass, units.KG, name)
-    _require_positive(gm, name, "m3 / s2")
-    return gm
-
-
 @dataclass(frozen=True, eq=False)
 class ExpandingSphere:
     """A shell of the notes' uniform, pressureless sphere (XXIV), at zero energy; gm = G M (m3/s2) of the mass
@@ -280,7 +260,7 @@ class ExpandingSphere:
     @classmethod
     def from_mass(cls, mass):
         """The shell enclosing mass M (a mass in kg, or G M in m3/s2)."""
-        return cls(_gravitational_parameter(mass, "enclosed mass M"))
+        return cls(inputs.gravitational_parameter(mass, "enclosed mass M"))
 
     @classmethod
     def from_hubble(cls, hubble, radius):
@@ -288,7 +268,7 @@ class ExpandingSphere:
         gives G M = H**2 r**3 / 2."""
         h = _hubble(hubble, "Hubble parameter H")
         r = units.to_si(radius, units.M, "shell radius r")
-        _require_positive(r, "shell radius r", "m")
+        require_positive(r, "shell radius r", "m")
         return cls(0.5 * h * h * r**3)
 
     def _time(self, t):
@@ -296,15 +276,15 @@ class ExpandingSphere:
 
     def radius(self, t):
         """r(t) = (9 G M t**2 / 2)**(1/3) (m) at time t (time) after the big bang (XXIV.iii)."""
-        return core.sphere_radius(self._time(t), self.gm) << units.M
+        return sphere.sphere_radius(self._time(t), self.gm) << units.M
 
     def speed(self, t):
         """v(t) = (4 G M / (3 t))**(1/3) (m/s), t > 0 (XXIV.iv)."""
-        return core.sphere_speed(self._time(t), self.gm) << units.M_PER_S
+        return sphere.sphere_speed(self._time(t), self.gm) << units.M_PER_S
 
     def hubble_parameter(self, t):
         """H = v / r = 2 / (3 t) (1/s), t > 0 (XXIV.iv); the same for every shell."""
-        return core.sphere_hubble_parameter(self._time(t)) << PER_S
+        return sphere.sphere_hubble_parameter(self._time(t)) << PER_S
 
     def time_at_radius(self, r):
         """t = sqrt(2 r**3 / (9 G M)) (s) at which the shell reaches r (length), inverting r(t)."""
@@ -312,11 +292,11 @@ class ExpandingSphere:
         if np.any(r_si < 0) or not np.all(np.isfinite(r_si)):
             bad = float(r_si[~(np.isfinite(r_si) & (r_si >= 0))].flat[0])
             raise OrbitDomainError(f"shell radius r = {bad!r} m is outside the allowed range [0, inf) m")
-        return core.sphere_time(r_si, self.gm) << units.S
+        return sphere.sphere_time(r_si, self.gm) << units.S
 
     def density(self, t):
         """rho = 1 / (6 pi G t**2) (kg/m3), t > 0: the mean density M / (4 pi r**3 / 3) inside every shell."""
-        return np.broadcast_to(core.sphere_density(self._time(t), G), np.shape(self.radius(t))) << KG_PER_M3
+        return np.broadcast_to(sphere.sphere_density(self._time(t), G), np.shape(self.radius(t))) << KG_PER_M3
 
     def density_parameter(self, t):
         """Omega = (mean density inside the shell) / rho_c = 2 G M / (H**2 r**3) (dimensionless), t > 0.
@@ -335,62 +315,3 @@ class ExpandingSphere:
 
 
 SPHERE_NAMES = ["radius", "speed", "hubble_parameter", "density", "density_parameter"]
-
-
-# ---- the validation scene -----------------------------------------------------------------------------------
-
-
-def _fibonacci_directions(n):
-    """n unit vectors spread evenly over the sphere (golden-angle spiral), shape (n, 3)."""
-    k = np.arange(n) + 0.5
-    z = 1.0 - 2.0 * k / n
-    phi = k * math.pi * (3.0 - math.sqrt(5.0))
-    rho = np.sqrt((1.0 - z) * (1.0 + z))
-    return np.stack([rho * np.cos(phi), rho * np.sin(phi), z], axis=-1)
-
-
-def expanding_sphere_problem(n_shells=8, *, inner_radius=1.0, outer_radius=4.0, duration=20.0, n_times=11):
-    """(NBodyProblem, analytic positions) for the notes' expanding sphere (XXIV) as a validation scene.
-
-    Code units, G = 1: a central mass gm = 1 at rest at the origin (body 0), and n_shells test particles
-    (bodies 1..n) at radii spaced evenly from inner_radius to outer_radius along directions spread over the
-    sphere, each moving radially outward at the zero-energy speed sqrt(2 / r). Radial orbits have h = 0,
-    which the N-body integrators handle. Shell i started at its own big bang, t0_i = sqrt(2 r_i**3 / 9) before
-    the integration starts, so at integration time tau its radius is (9 (t0_i + tau)**2 / 2)**(1/3) and its
-    Hubble parameter 2 / (3 (t0_i + tau)). Output times are n_times evenly spaced in [0, duration].
-
-    Returned positions have shape (n_times, n_shells + 1, 3). To read physical units, pick a length L and a
-    mass M: lengths scale by L, times by sqrt(L**3 / (G M)) and speeds by sqrt(G M / L).
-    """
-    from orbits.validate.problem import NBodyProblem  # the validation layer, loaded only for the scene
-
-    n = _count(n_shells, "n_shells", 1)
-    steps = _count(n_times, "n_times", 2)
-    for value, name in ((inner_radius, "inner_radius"), (outer_radius, "outer_radius"), (duration, "duration")):
-        _require_positive(np.asarray(value, dtype=float), name, "(code units)")
-    if outer_radius < inner_radius:
-        raise OrbitDomainError(f"outer_radius = {outer_radius!r} is below inner_radius = {inner_radius!r}")
-    radii = np.linspace(inner_radius, outer_radius, n)
-    directions = _fibonacci_directions(n)
-    times = np.linspace(0.0, duration, steps)
-    problem = NBodyProblem(
-        gm=np.concatenate(([1.0], np.zeros(n))),
-        positions=np.vstack([np.zeros(3), radii[:, None] * directions]),
-        velocities=np.vstack([np.zeros(3), np.sqrt(2.0 / radii)[:, None] * directions]),
-        n_active=1,
-        times=times,
-    )
-    t_big_bang = core.sphere_time(radii, 1.0)
-    shells = core.sphere_radius(t_big_bang + times[:, None], 1.0)[..., None] * directions
-    return problem, np.concatenate([np.zeros((steps, 1, 3)), shells], axis=1)
-
-
-def _count(value, name, minimum):
-    """An integer >= minimum (bool rejected), or OrbitDomainError."""
-    try:
-        count = operator.index(value)
-    except TypeError:
-        raise OrbitDomainError(f"{name} = {value!r} is not an integer") from None
-    if isinstance(value, bool) or count < minimum:
-        raise OrbitDomainError(f"{name} = {value!r} is outside the allowed range [{minimum}, inf) (an integer)")
-    return count

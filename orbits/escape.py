@@ -24,13 +24,13 @@ from functools import cached_property
 
 import numpy as np
 
-from orbits import units
-from orbits.binary import Binary, gravitational_parameter_of
+from orbits import inputs, units
+from orbits.binary import Binary
 from orbits.constants import BODIES, EARTH_MEAN_RADIUS, STANDARD_GRAVITY, Body, body
-from orbits.core import binary as binary_core
 from orbits.core import escape as escape_core
 from orbits.core import twobody
-from orbits.errors import OrbitDomainError
+from orbits.core.checks import require_positive
+from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
 
 
@@ -43,13 +43,13 @@ def _named(primary):
 
 def _length(value, name):
     result = units.to_si(value, units.M, name)
-    binary_core.require_positive(result, name, "m")
+    require_positive(result, name, "m")
     return result
 
 
 def _speed(value, name):
     result = units.to_si(value, units.M_PER_S, name)
-    binary_core.require_positive(result, name, "m / s")
+    require_positive(result, name, "m / s")
     return result
 
 
@@ -70,7 +70,7 @@ def escape_speed(primary, distance=None):
         r = np.asarray(named.radius)
     else:
         r = _length(distance, "distance r")
-    mu = np.asarray(named.gm) if named is not None else gravitational_parameter_of(primary, "primary mass M")
+    mu = np.asarray(named.gm) if named is not None else inputs.gravitational_parameter(primary, "primary mass M")
     return twobody.escape_speed(r, mu) << units.M_PER_S
 
 
@@ -91,7 +91,7 @@ class CosmicVelocities:
         """The notes' model from g (acceleration) and R (length); defaults: g0 = 9.80665 m/s2, R = 6371 km and
         Earth's circular heliocentric speed sqrt(G M_sun / a_earth) = 29.785 km/s (Standish mean a)."""
         g = np.asarray(STANDARD_GRAVITY) if g is None else units.to_si(g, units.M_PER_S / units.S, "surface gravity g")
-        binary_core.require_positive(g, "surface gravity g", "m / s2")
+        require_positive(g, "surface gravity g", "m / s2")
         radius = np.asarray(EARTH_MEAN_RADIUS) if radius is None else _length(radius, "radius R")
         speed = _orbital_speed(BODIES["Earth"]) if orbital_speed is None else _speed(orbital_speed, "orbital speed")
         return cls(g, radius, speed)
@@ -179,11 +179,11 @@ class SynchronousOrbit:
         """For a named body (its GM, sidereal rotation period and equatorial radius) or a mass or GM; `period`
         (time) and `radius` (length) override or supply the rotation period and the body's radius."""
         named = _named(primary)
-        mu = np.asarray(named.gm) if named is not None else gravitational_parameter_of(primary, "primary mass M")
+        mu = np.asarray(named.gm) if named is not None else inputs.gravitational_parameter(primary, "primary mass M")
         if period is None and named is None:
             raise TypeError("a mass or GM has no rotation: give period=..., e.g. period=23.93 * u.h")
         t = np.asarray(named.rotation_period) if period is None else units.to_si(period, units.S, "rotation period T")
-        binary_core.require_positive(t, "rotation period T", "s")
+        require_positive(t, "rotation period T", "s")
         size = None if named is None else np.asarray(named.radius)
         size = size if radius is None else _length(radius, "body radius R")
         return cls(mu, t, size)

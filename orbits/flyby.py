@@ -24,13 +24,13 @@ from functools import cached_property
 import astropy.units as u
 import numpy as np
 
-from orbits import units
-from orbits.binary import gravitational_parameter_of
+from orbits import inputs, units
 from orbits.constants import G
 from orbits.core import binary as binary_core
 from orbits.core import flyby as flyby_core
-from orbits.errors import OrbitDomainError
-from orbits.orbit import Orbit, gravitational_parameter
+from orbits.core.checks import require_positive
+from orbits.core.errors import OrbitDomainError
+from orbits.orbit import PRIMARY, Orbit
 from orbits.tables import quantity_table
 
 
@@ -40,16 +40,16 @@ def _impact_parameter(b, periapsis, v_inf, mu):
         raise TypeError("give exactly one of the impact parameter b and the closest approach periapsis")
     if b is not None:
         value = units.to_si(b, units.M, "impact parameter b")
-        binary_core.require_positive(value, "impact parameter b", "m")
+        require_positive(value, "impact parameter b", "m")
         return value
     value = units.to_si(periapsis, units.M, "closest approach periapsis")
-    binary_core.require_positive(value, "closest approach periapsis", "m")
+    require_positive(value, "closest approach periapsis", "m")
     return flyby_core.impact_parameter(value, v_inf, mu)
 
 
 def _speed_at_infinity(v_inf):
     value = units.to_si(v_inf, units.M_PER_S, "speed at infinity v_inf")
-    binary_core.require_positive(value, "speed at infinity v_inf", "m / s")
+    require_positive(value, "speed at infinity v_inf", "m / s")
     return value
 
 
@@ -73,11 +73,11 @@ class Flyby:
     def past(cls, primary, v_inf, b=None, *, periapsis=None, mass=None):
         """A body passing a fixed primary (name, Body, mass or GM) at v_inf (speed) with impact parameter b
         (length), or with the closest approach `periapsis` (length) (XXI.vi). `mass` (kg) enables E, L, U, K."""
-        mu = gravitational_parameter(primary)
+        mu = inputs.gravitational_parameter(primary, PRIMARY)
         speed = _speed_at_infinity(v_inf)
         impact = _impact_parameter(b, periapsis, speed, mu)
         shape = np.broadcast_shapes(np.shape(mu), speed.shape, impact.shape)
-        moving = None if mass is None else gravitational_parameter_of(mass, "moving body's mass m") / G
+        moving = None if mass is None else inputs.gravitational_parameter(mass, "moving body's mass m") / G
         fields = (np.broadcast_to(x, shape).astype(float) for x in (mu, speed, impact))
         return cls(*fields, mass=_broadcast(moving, shape))
 
@@ -85,7 +85,7 @@ class Flyby:
     def between(cls, m1, m2, v_inf, b=None, *, periapsis=None):
         """Two finite masses (names, Bodies, masses or GMs) meeting at relative speed v_inf with impact parameter b
         or closest approach `periapsis` (XXII.vi); the energies use the reduced mass."""
-        gm1, gm2 = gravitational_parameter_of(m1, "mass m1"), gravitational_parameter_of(m2, "mass m2")
+        gm1, gm2 = inputs.gravitational_parameter(m1, "mass m1"), inputs.gravitational_parameter(m2, "mass m2")
         speed = _speed_at_infinity(v_inf)
         impact = _impact_parameter(b, periapsis, speed, gm1 + gm2)
         shape = np.broadcast_shapes(gm1.shape, gm2.shape, speed.shape, impact.shape)
@@ -173,13 +173,13 @@ class Flyby:
     def speed_at(self, r):
         """v = sqrt(v_inf**2 + 2 mu / r) (m/s) at distance r (length) (XXI.vi; (m + M) sigma in XXII.vi)."""
         r_si = units.to_si(r, units.M, "distance r")
-        binary_core.require_positive(r_si, "distance r", "m")
+        require_positive(r_si, "distance r", "m")
         return flyby_core.speed_at_distance(r_si, self.v_inf, self.mu) << units.M_PER_S
 
     def potential_energy_at(self, r):
         """U = -mu m / r (J) at distance r (length): -G M m / r, or -G m1 m2 / r for two masses."""
         r_si = units.to_si(r, units.M, "distance r")
-        binary_core.require_positive(r_si, "distance r", "m")
+        require_positive(r_si, "distance r", "m")
         return -self.mu * self._require_mass("potential energy U") / r_si << units.J
 
     def kinetic_energy_at(self, r):

@@ -11,8 +11,7 @@ the barycentre, x from M towards m, z along the orbital angular momentum; the in
 origin, with the binary in the plane of inclination `inc` and ascending node `raan`, and m at the argument of
 latitude `phase` at t = 0.
 
-lagrange_test_particles_problem builds the matching N-body problem for rebound and heyoka (G = 1 code units)
-with what each test particle should do (LagrangeExpectation).
+The matching N-body problem for rebound and heyoka is built in orbits.validate.builders.
 """
 
 from dataclasses import dataclass
@@ -21,13 +20,11 @@ from functools import cached_property
 import astropy.units as u
 import numpy as np
 
-from orbits import units
-from orbits.binary import gravitational_parameter_of
+from orbits import inputs, units
 from orbits.constants import Body, body
 from orbits.core import lagrange
-from orbits.core.binary import require_positive
-from orbits.errors import OrbitDomainError
-from orbits.validate.problem import NBodyProblem
+from orbits.core.checks import require_positive
+from orbits.core.errors import OrbitDomainError
 
 POINTS = lagrange.POINTS
 PER_SECOND = 1 / u.s
@@ -68,8 +65,8 @@ class RestrictedThreeBody:
 
         mu = m / (M + m) must lie in (0, 1/2]: OrbitDomainError otherwise, naming the value.
         """
-        gm_1 = gravitational_parameter_of(primary, "primary mass M")
-        gm_2 = gravitational_parameter_of(secondary, "secondary mass m")
+        gm_1 = inputs.gravitational_parameter(primary, "primary mass M")
+        gm_2 = inputs.gravitational_parameter(secondary, "secondary mass m")
         lagrange.check_mass_ratio(gm_2 / (gm_1 + gm_2))
         distance = _separation(primary, secondary, separation)
         angles = [
@@ -243,73 +240,3 @@ POINT_NAMES = {
     "eigenvalues": "eigenvalues",
 }
 QUANTITY_NAMES = BINARY_NAMES + [f"{p}_{n}" for p in POINTS for n in POINT_NAMES]
-
-
-# ---- validation: test particles at the Lagrange points, in G = 1 code units ------------------------------------
-@dataclass(frozen=True, eq=False)
-class LagrangeExpectation:
-    """What the test particle `index` of a lagrange_test_particles_problem should do. Code units: r = 1,
-    G (M + m) = 1, so n = 1 and the binary's period is 2 pi.
-
-    `position` is the rotating-frame equilibrium; `offset` the initial displacement along the growing mode
-    (0 for linearly stable points, which start on the point); `growth_rate` the predicted e-folding rate
-    (0 if linearly stable); `jacobi_constant` that of the initial state, conserved exactly by the motion.
-    """
-
-    point: str
-    index: int
-    mass_ratio: float
-    position: np.ndarray
-    offset: float
-    growth_rate: float
-    jacobi_constant: float
-
-    def deviations(self, positions):
-        """|r_rot - position| at each output of integrated (K, N, 3) positions, the rotating frame being the one
-        the integrated primaries (bodies 0 and 1) define, so their own phase error does not count."""
-        particle, primary, secondary = positions[:, self.index], positions[:, 0], positions[:, 1]
-        r_rot = lagrange.rotating_coordinates(particle, primary, secondary, self.mass_ratio)
-        return np.linalg.norm(r_rot - self.position, axis=-1)
-
-    def jacobi_constants(self, positions, velocities):
-        """The particle's Jacobi constant at each output, from inertial (K, N, 3) states about the barycentre."""
-        return lagrange.jacobi_constant_inertial(
-            positions[:, self.index], velocities[:, self.index], positions[:, 0], positions[:, 1], self.mass_ratio
-        )
-
-
-def lagrange_test_particles_problem(mass_ratio, times, points=POINTS, offset=0.0):
-    """(NBodyProblem, [LagrangeExpectation]): a circular binary (G M = 1 - mu at (-mu, 0, 0), G m = mu at
-    (1 - mu, 0, 0), n = 1, period 2 pi) with one massless test particle per point of `points`, and what each
-    should do. Unstable points start `offset` (units of r) along their growing mode; stable ones on the point.
-    `times` are output times in code units."""
-    mu = float(lagrange.check_mass_ratio(mass_ratio))
-    r_rot, modes = lagrange.positions(mu), lagrange.growing_mode(mu)
-    rates = lagrange.growth_rates(mu)
-    positions = [[-mu, 0.0, 0.0], [1.0 - mu, 0.0, 0.0]]
-    velocities = [[0.0, -mu, 0.0], [0.0, 1.0 - mu, 0.0]]
-    expectations = []
-    for point in points:
-        k = POINTS.index(point)
-        r0, v0 = r_rot[k] + offset * modes[k, :3], offset * modes[k, 3:]
-        r_in, v_in = lagrange.rotating_to_inertial(r0, v0, 0.0)
-        positions.append(r_in)
-        velocities.append(v_in)
-        jacobi = float(lagrange.jacobi_constant(r0, v0, mu))
-        moved = offset if rates[k] > 0.0 else 0.0
-        index = len(positions) - 1
-        expectations.append(LagrangeExpectation(point, index, mu, r_rot[k], moved, float(rates[k]), jacobi))
-    gm = [1.0 - mu, mu] + [0.0] * len(expectations)
-    problem = NBodyProblem(gm=gm, positions=positions, velocities=velocities, n_active=2, times=times)
-    return problem, expectations
-
-
-def fitted_growth_rate(times, amplitudes, low=1e-9, high=1e-4):
-    """Least-squares slope of ln(amplitude) against time over the samples with low <= amplitude <= high:
-    the measured e-folding rate of an exponential departure (units of 1/time)."""
-    times, amplitudes = np.asarray(times, dtype=float), np.asarray(amplitudes, dtype=float)
-    window = (amplitudes >= low) & (amplitudes <= high)
-    if np.count_nonzero(window) < 3:
-        raise OrbitDomainError(f"fewer than 3 samples with {low} <= amplitude <= {high}: cannot fit a growth rate")
-    slope, _ = np.polyfit(times[window], np.log(amplitudes[window]), 1)
-    return float(slope)

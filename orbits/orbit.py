@@ -17,32 +17,15 @@ from functools import cached_property
 import astropy.units as u
 import numpy as np
 
-from orbits import units
-from orbits.constants import Body, G, body
+from orbits import inputs, units
+from orbits.constants import body
 from orbits.core import anomalies, elements, propagate, twobody
-from orbits.errors import OrbitDomainError
+from orbits.core.checks import require_positive
+from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
 
-
-def gravitational_parameter(primary):
-    """mu (m3/s2) of a primary given as a Body, a body name, a mass (kg) or a GM (m3/s2) Quantity."""
-    if isinstance(primary, str):
-        primary = body(primary)
-    if isinstance(primary, Body):
-        return np.asarray(primary.gm)
-    if isinstance(primary, u.Quantity) and primary.unit.is_equivalent(u.kg):
-        mu = G * units.to_si(primary, units.KG, "primary mass")
-    else:
-        mu = units.to_si(primary, units.M3_PER_S2, "primary gravitational parameter")
-    _require_positive(mu, "primary mass or gravitational parameter", "kg or m3 / s2")
-    return mu
-
-
-def _require_positive(x, name, unit):
-    if not np.isfinite(x).all():
-        raise OrbitDomainError(f"{name} = {float(np.asarray(x)[~np.isfinite(x)].flat[0])!r} {unit} is not finite")
-    if (x <= 0).any():
-        raise OrbitDomainError(f"{name} = {float(np.asarray(x)[x <= 0].flat[0])!r} {unit} must be positive")
+#: how a primary is named in error messages
+PRIMARY = "primary mass or gravitational parameter"
 
 
 def _shape(x):
@@ -61,41 +44,6 @@ def _check_shapes(**arrays):
     except ValueError:
         listing = ", ".join(f"{name} {_shape(x)}" for name, x in arrays.items())
         raise OrbitDomainError(f"argument shapes do not broadcast together: {listing}") from None
-
-
-def _semi_latus_rectum(a, e, p, q):
-    """p (m) from exactly one of a (not on the parabola), p or q, with the sign conventions checked."""
-    given = [name for name, value in (("a", a), ("p", p), ("q", q)) if value is not None]
-    if len(given) != 1:
-        raise TypeError(f"give exactly one size element of a, p, q; got {given or 'none'}")
-    if p is not None:
-        value = units.to_si(p, units.M, "semi-latus rectum p")
-        _require_positive(value, "semi-latus rectum p", "m")
-        return value.copy()  # to_si may return a view of the caller's Quantity; the Orbit keeps its own p
-    if q is not None:
-        value = units.to_si(q, units.M, "periapsis distance q")
-        _require_positive(value, "periapsis distance q", "m")
-        return value * (1.0 + e)
-    value = units.to_si(a, units.M, "semi-major axis a")
-    size = value * (1.0 - e) * (1.0 + e)
-    if not ((size > 0.0) & (size < np.inf)).all():  # a valid a gives 0 < size < inf: check in detail otherwise
-        _check_semi_major_axis(value, e)
-    return size
-
-
-def _check_semi_major_axis(value, e):
-    """Raise OrbitDomainError for the first non-finite a, for e = 1, or for an a of the wrong sign for its e
-    (a > 0 iff e < 1)."""
-    if not np.isfinite(value).all():
-        raise OrbitDomainError(f"semi-major axis a = {float(value[~np.isfinite(value)].flat[0])!r} m is not finite")
-    if (e == 1.0).any():
-        raise OrbitDomainError("parabolic orbit (e = 1) has infinite a: give q or p instead of a")
-    wrong = np.where(e < 1.0, value <= 0.0, value >= 0.0)
-    if wrong.any():
-        i = tuple(np.argwhere(np.broadcast_to(wrong, np.broadcast_shapes(value.shape, e.shape)))[0])
-        bad_a, bad_e = np.broadcast_to(value, wrong.shape)[i], np.broadcast_to(e, wrong.shape)[i]
-        rule = "a > 0 for a bound orbit (e < 1)" if bad_e < 1 else "a < 0 for a hyperbola (e > 1)"
-        raise OrbitDomainError(f"semi-major axis a = {float(bad_a)!r} m with e = {float(bad_e)!r}: need {rule}")
 
 
 @dataclass(frozen=True, eq=False)
@@ -132,12 +80,9 @@ class Orbit:
         mass=None,
     ):
         """Orbit from one size element (a, p or q), e, i, Omega, omega and the true anomaly nu."""
-        e = units.to_number(e, "eccentricity e")
+        e = inputs.eccentricity(e)
         _check_shapes(e=e, a=a, p=p, q=q, inc=inc, raan=raan, argp=argp, nu=nu)
-        if not np.isfinite(e).all() or (e < 0).any():
-            bad = e[~(np.isfinite(e) & (e >= 0))].flat[0]
-            raise OrbitDomainError(f"eccentricity e = {float(bad)!r} is outside [0, inf)")
-        size = _semi_latus_rectum(a, e + 0.0, p, q)
+        size = inputs.semi_latus_rectum(e + 0.0, a=a, p=p, q=q)
         angles = [
             units.to_si(x, units.RAD, name)
             for x, name in (
@@ -147,7 +92,7 @@ class Orbit:
                 (nu, "true anomaly nu"),
             )
         ]
-        mu = gravitational_parameter(primary)
+        mu = inputs.gravitational_parameter(primary, PRIMARY)
         r, _ = elements.elements_to_state(size, e + 0.0, *angles, mu)  # validates ranges and asymptotes
         shape = r.shape[:-1]
         # Wrapped before broadcasting: a scalar default (0 deg) is wrapped once, not once per orbit. Arrays
@@ -159,7 +104,7 @@ class Orbit:
     @classmethod
     def from_vectors(cls, primary, r, v, *, mass=None):
         """Orbit through the state r (length, shape (..., 3)) and v (speed, shape (..., 3))."""
-        mu = gravitational_parameter(primary)
+        mu = inputs.gravitational_parameter(primary, PRIMARY)
         r_si = units.to_si(r, units.M, "position r")
         v_si = units.to_si(v, units.M_PER_S, "velocity v")
         fields = elements.state_to_elements(r_si, v_si, mu)
@@ -170,6 +115,27 @@ class Orbit:
     def circular(cls, primary, radius, *, inc=0 * u.deg, raan=0 * u.deg, nu=0 * u.deg, mass=None):
         """Circular orbit of the given radius (e = 0, so nu is the argument of latitude)."""
         return cls.from_elements(primary, p=radius, e=0.0, inc=inc, raan=raan, nu=nu, mass=mass)
+
+    @classmethod
+    def from_body(cls, name: str) -> "Orbit":
+        """The catalogue body's J2000 mean orbit about its primary (orbits.constants), with the body's mass.
+
+        The mean anomaly of the catalogue is turned into the true anomaly with Kepler's equation (solved once).
+        """
+        target = body(name)
+        if target.orbit is None:
+            raise OrbitDomainError(f"{target.name} has no orbit in the catalogue; give its elements instead")
+        el = target.orbit
+        return cls.from_elements(
+            el.primary,
+            a=el.a << units.M,
+            e=el.e,
+            inc=el.inc << units.RAD,
+            raan=el.raan << units.RAD,
+            argp=el.argp << units.RAD,
+            nu=anomalies.true_from_mean(el.mean_anomaly, el.e) << units.RAD,
+            mass=target.mass << units.KG,
+        )
 
     # ---- shape ----------------------------------------------------------------------------------
     @property
@@ -268,7 +234,7 @@ class Orbit:
     def speed_at(self, r):
         """Vis-viva speed sqrt(mu (2/r - 1/a)) (m/s) at distance r (length) from the star."""
         r_si = units.to_si(r, units.M, "distance r")
-        _require_positive(r_si, "distance r", "m")
+        require_positive(r_si, "distance r", "m")
         with np.errstate(invalid="ignore"):
             v = twobody.speed_at_radius(r_si, self.p, self.e, self.mu)
         if not np.isfinite(v).all():
@@ -437,7 +403,7 @@ def _mass(mass, shape):
     if mass is None:
         return None
     value = units.to_si(mass, units.KG, "orbiting body mass m")
-    _require_positive(value, "orbiting body mass m", "kg")
+    require_positive(value, "orbiting body mass m", "kg")
     return np.broadcast_to(value, shape).astype(float)
 
 

@@ -241,7 +241,7 @@ def validation_residuals(report, ax=None):
 
 
 def work_precision(rows, columns=3):
-    """Error against wall time (log-log), one panel per problem and one line per method (orbits.precision rows).
+    """Error against wall time (log-log), one panel per problem and one line per method (orbits.tools.precision rows).
 
     The closed-form answer is a star; runs whose error is zero sit on the bottom edge at 1e-17.
     """

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from orbits.core import anomalies, elements, propagate, twobody
-from orbits.scene import SceneError
+from orbits.core.errors import SceneError
 
 CLOSED_FORM = "two-body closed form (universal variables)"
 

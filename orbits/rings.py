@@ -10,24 +10,21 @@ Maxwell's ring), with units.
 Closed forms come from orbits.core.rings (each body circles GM_eff = G m S_n / 4 + G M); the linear stability
 (growth rate of the most unstable mode, the break-up time of a ring seeded by float64 round-off, the central
 mass above which a ring of n >= 7 is stable) from the 4n x 4n rotating-frame linearisation.
-ring_problem builds the matching N-body problem for rebound and heyoka (G = 1 code units, r = 1, omega = 1).
+The matching N-body problem for rebound and heyoka is built in orbits.validate.builders.
 """
 
-import math
 from dataclasses import dataclass
 from functools import cached_property
 
 import astropy.units as u
 import numpy as np
 
-from orbits import units
-from orbits.binary import gravitational_parameter_of
+from orbits import inputs, units
 from orbits.constants import G
 from orbits.core import rings, twobody
-from orbits.core.binary import require_positive
-from orbits.errors import OrbitDomainError
+from orbits.core.checks import require_positive
+from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
-from orbits.validate.problem import NBodyProblem
 
 #: Relative perturbation that float64 round-off plants in a ring, and the shape deviation called break-up.
 ROUND_OFF_SEED = 1e-16
@@ -52,10 +49,10 @@ class Ring:
         TypeError for a non-integer or bool n; OrbitDomainError for n < 2 or a non-positive radius or mass.
         """
         n = rings.check_count(n)
-        gm = gravitational_parameter_of(mass, "ring body mass m")
+        gm = inputs.gravitational_parameter(mass, "ring body mass m")
         radius_si = units.to_si(radius, units.M, "ring radius r")
         require_positive(radius_si, "ring radius r", "m")
-        gm_central = 0.0 if central_mass is None else gravitational_parameter_of(central_mass, "central mass M")
+        gm_central = 0.0 if central_mass is None else inputs.gravitational_parameter(central_mass, "central mass M")
         fields = np.broadcast_arrays(gm, radius_si, gm_central)
         return cls(n, *(np.array(x, dtype=float) for x in fields))
 
@@ -207,74 +204,3 @@ QUANTITY_NAMES = [
     "breakup_time",
     "central_mass_threshold",
 ]
-
-
-# ---- validation: a ring integrated from its exact initial state, in G = 1 code units ------------------------------
-@dataclass(frozen=True, eq=False)
-class RingExpectation:
-    """What a ring_problem should do. Code units: r = 1, omega = 1 (period 2 pi). `first_body` is the index of
-    ring body 0 (1 when a central mass is body 0); `growth_rate` (0 if stable), `mode` (None if stable) and
-    `breakup_time` (inf if stable) are the linear predictions for a round-off seed of ROUND_OFF_SEED."""
-
-    n: int
-    first_body: int
-    growth_rate: float
-    mode: int | None
-    breakup_time: float
-
-    def shape_deviations(self, positions):
-        """Largest chord error |d_kl - 2 sin(pi |k - l| / n)| of the ring at each output of (K, N, 3) positions."""
-        return rings.shape_deviation(positions[:, self.first_body :], 1.0)
-
-    def measured_breakup_time(self, times, positions, level=BREAKUP_DEVIATION):
-        """First output time at which the shape deviation reaches `level`; inf if it never does."""
-        reached = np.flatnonzero(self.shape_deviations(positions) >= level)
-        return float(times[reached[0]]) if reached.size else math.inf
-
-
-def ring_problem(n, times, central_ratio=0.0, phase=0.0, extended=False):
-    """(NBodyProblem, RingExpectation): n bodies of G m = 1 / (beta + S_n / 4) on the unit circle at
-    omega = 1 (angle phase + 2 pi k / n), preceded by a central body of G M = beta G m when beta = M / m > 0;
-    `times` in code units. The state is exact to rounding, so round-off alone seeds any instability.
-
-    extended=True builds the state in long double (for heyoka's fp_type="long double"): the seed is then
-    long double round-off, ROUND_OFF_SEED scaled by the ratio of the two machine epsilons (about 5e-20), and
-    the predicted break-up later by ln(1e-16 / 5e-20) / rate."""
-    n = rings.check_count(n)
-    beta = float(central_ratio)
-    rate, mode = rings.growth_rate(n, beta)
-    if extended:
-        masses, positions, velocities = _long_double_ring(n, beta, phase)
-        seed = ROUND_OFF_SEED * float(np.finfo(np.longdouble).eps / np.finfo(np.float64).eps)
-        problem = NBodyProblem(gm=masses, positions=positions, velocities=velocities, n_active=masses.size,
-                               times=times)
-        breakup = float(rings.breakup_time(rate, seed, BREAKUP_DEVIATION))
-        return problem, RingExpectation(n, int(beta > 0.0), rate, mode, breakup)
-    gm = 1.0 / (beta + 0.25 * rings.csc_sum(n))
-    positions, velocities = rings.state_vectors(n, 1.0, 1.0, phase)
-    masses = np.full(n, gm)
-    if beta > 0.0:
-        positions, velocities = np.vstack([np.zeros(3), positions]), np.vstack([np.zeros(3), velocities])
-        masses = np.concatenate([[beta * gm], masses])
-    problem = NBodyProblem(gm=masses, positions=positions, velocities=velocities, n_active=masses.size, times=times)
-    breakup = float(rings.breakup_time(rate, ROUND_OFF_SEED, BREAKUP_DEVIATION))
-    return problem, RingExpectation(n, int(beta > 0.0), rate, mode, breakup)
-
-
-def _long_double_ring(n, beta, phase):
-    """(gm, positions, velocities) of ring_problem's state computed in long double (x87: 64-bit mantissa)."""
-    one = np.longdouble(1)
-    pi = 4 * np.arctan(one)
-    k = np.arange(n, dtype=np.longdouble)
-    theta = np.longdouble(phase) + 2 * pi * k / n
-    csc = np.sort(1 / np.sin(pi * np.arange(1, n, dtype=np.longdouble) / n))
-    gm = one / (np.longdouble(beta) + np.sum(csc) / 4)
-    zeros = np.zeros(n, dtype=np.longdouble)
-    positions = np.stack([np.cos(theta), np.sin(theta), zeros], axis=-1)
-    velocities = np.stack([-np.sin(theta), np.cos(theta), zeros], axis=-1)
-    masses = np.full(n, gm)
-    if beta > 0.0:
-        origin = np.zeros((1, 3), dtype=np.longdouble)
-        positions, velocities = np.vstack([origin, positions]), np.vstack([origin, velocities])
-        masses = np.concatenate([[np.longdouble(beta) * gm], masses])
-    return masses, positions, velocities

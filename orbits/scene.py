@@ -30,6 +30,7 @@ An `orbit` gives the body's state relative to an earlier-listed primary, as the 
 with mu = G (M_primary + m_body) (exact for an isolated pair); use exactly one of a, p, q.
 """
 
+import contextlib
 import json
 import tomllib
 from dataclasses import dataclass, field
@@ -38,18 +39,15 @@ from pathlib import Path
 import astropy.units as u
 import numpy as np
 
-from orbits.constants import BODIES, G
+from orbits import inputs
+from orbits.constants import BODIES
 from orbits.core import elements, twobody
-from orbits.errors import OrbitsError
+from orbits.core.errors import OrbitsError, SceneError
 
 ASKS = ("positions", "conserved", "period", "closest_approach")
 DEFAULT_TOLERANCE = {"positions": 1e-10, "energy": 1e-11, "angular_momentum": 1e-11, "lrl": 1e-10,
                      "period": 1e-10, "closest_approach": 1e-10}
 BUILTIN_DIR = Path(__file__).parent / "scenes"
-
-
-class SceneError(OrbitsError, ValueError):
-    """A scene file or dictionary is invalid; the message names the source, the field and what is allowed."""
 
 
 @dataclass(frozen=True)
@@ -119,8 +117,8 @@ def builtin_names():
     return sorted(path.stem for path in BUILTIN_DIR.glob("*.toml"))
 
 
-def load(name_or_path):
-    """Scene from a built-in name, or from a .toml / .json file."""
+def read(name_or_path) -> tuple[dict, str]:
+    """(parsed dictionary, source path) of a built-in scene name or a .toml / .json file, read once."""
     path = Path(name_or_path)
     if not path.suffix and (BUILTIN_DIR / f"{name_or_path}.toml").exists():
         path = BUILTIN_DIR / f"{name_or_path}.toml"
@@ -131,7 +129,12 @@ def load(name_or_path):
         data = json.loads(text) if path.suffix == ".json" else tomllib.loads(text)
     except (json.JSONDecodeError, tomllib.TOMLDecodeError) as err:
         raise SceneError(f"{path}: not valid {'JSON' if path.suffix == '.json' else 'TOML'}: {err}") from None
-    return from_dict(data, source=str(path))
+    return data, str(path)
+
+
+def load(name_or_path) -> "Scene":
+    """Data scene from a built-in name, or from a .toml / .json file (model scenes: orbits.validate.scenes.load)."""
+    return from_dict(*read(name_or_path))
 
 
 def from_dict(data, source="<scene>"):
@@ -178,29 +181,26 @@ class _Context:
     def string(self, data, key, where=None):
         return self.get(data, key, str, where)
 
-    def quantity(self, text, unit, where):
-        try:
-            value = u.Quantity(text) if isinstance(text, str) else None
-        except (TypeError, ValueError):
-            value = None
-        if value is None or not value.unit.is_equivalent(unit) or value.unit == u.one and unit != u.one:
-            self.fail(where, f"{text!r} must be a string like '1.5 {unit}' with units convertible to {unit}")
-        result = value.to_value(unit)
-        if not np.all(np.isfinite(result)):
-            self.fail(where, f"{text!r} is not finite")
-        return result
+    def quantity(self, text, kind, where, bare_unit=None):
+        """The SI value (float) of a quantity string of the given kind (orbits.inputs.KINDS)."""
+        with self.field(where):
+            value = inputs.parse_quantity(text, kind, where, bare_unit)
+        return float(value.to_value(inputs.KINDS[kind][0]))
 
-    def vector(self, text, unit, where):
-        if not isinstance(text, str):
-            self.fail(where, f"{text!r} must be a string 'X,Y,Z UNIT'")
-        numbers, _, unit_text = text.strip().partition(" ")
+    def vector(self, text, kind, where):
+        """The SI value (3,) of a vector string 'X,Y,Z UNIT' of the given kind."""
+        with self.field(where):
+            value = inputs.parse_vector(text, kind, where)
+        return value.to_value(inputs.KINDS[kind][0])
+
+    @contextlib.contextmanager
+    def field(self, where):
+        """Turn the input rules' errors inside the block into a SceneError naming the source and the field."""
         try:
-            components = np.array([float(x) for x in numbers.split(",")])
-        except ValueError:
-            components = np.zeros(0)
-        if components.shape != (3,) or not np.all(np.isfinite(components)):
-            self.fail(where, f"{text!r} must be three finite comma-separated numbers and a unit, e.g. '1,0,0 km'")
-        return components * self.quantity(f"1 {unit_text}", unit, where)
+            yield
+        except (OrbitsError, TypeError, u.UnitsError) as err:
+            message = str(err).removeprefix(f"{where}: ")
+            self.fail(where, message)
 
     def number(self, data, key, where, default=None, low=-np.inf):
         value = data.get(key, default)
@@ -213,18 +213,16 @@ def _gm(ctx, spec, where):
     given = [k for k in ("body", "gm", "mass") if k in spec]
     if len(given) != 1:
         ctx.fail(where, f"give exactly one of body, gm, mass; got {given or 'none'}")
-    if "body" in spec:
-        match = [b for b in BODIES.values() if b.name.lower() == str(spec["body"]).lower()]
-        if not match:
+    key = given[0]
+    if key == "body":
+        named = inputs.find_body(spec["body"])
+        if named is None:
             ctx.fail(f"{where}.body", f"unknown body {spec['body']!r}; known: {', '.join(BODIES)}")
-        return match[0].gm
-    if "gm" in spec:
-        value = ctx.quantity(spec["gm"], u.m**3 / u.s**2, f"{where}.gm")
-    else:
-        value = G * ctx.quantity(spec["mass"], u.kg, f"{where}.mass")
-    if not value > 0:
-        ctx.fail(where, f"GM = {value!r} m3 / s2 must be positive")
-    return float(value)
+        return named.gm
+    kind = "gravitational parameter" if key == "gm" else "mass"
+    with ctx.field(f"{where}.{key}"):
+        value = inputs.parse_quantity(spec[key], kind, f"{where}.{key}")
+        return float(inputs.gravitational_parameter(value, f"{where}.{key}"))
 
 
 def _bodies(ctx, entries):
@@ -258,8 +256,8 @@ def _state(ctx, spec, where, name, gm, test_particle, built, names):
     if "orbit" in spec and ("position" in spec or "velocity" in spec):
         ctx.fail(where, "give either an orbit table or position/velocity, not both")
     if "orbit" not in spec:
-        r = ctx.vector(spec.get("position", "0,0,0 m"), u.m, f"{where}.position")
-        v = ctx.vector(spec.get("velocity", "0,0,0 m/s"), u.m / u.s, f"{where}.velocity")
+        r = ctx.vector(spec.get("position", "0,0,0 m"), "length", f"{where}.position")
+        v = ctx.vector(spec.get("velocity", "0,0,0 m/s"), "speed", f"{where}.velocity")
         return BodySpec(name, gm, r, v, test_particle)
     orbit = spec["orbit"]
     ow = f"{where}.orbit"
@@ -273,7 +271,7 @@ def _state(ctx, spec, where, name, gm, test_particle, built, names):
         ctx.fail(f"{ow}.primary", f"{primary_name!r} is a test particle; a primary must be massive")
     e = ctx.number(orbit, "e", f"{ow}.e", default=0.0, low=0.0)
     p = _semi_latus_rectum(ctx, orbit, e, ow)
-    angles = [ctx.quantity(orbit.get(k, "0 deg"), u.rad, f"{ow}.{k}") for k in ("inc", "raan", "argp", "nu")]
+    angles = [ctx.quantity(orbit.get(k, "0 deg"), "angle", f"{ow}.{k}") for k in ("inc", "raan", "argp", "nu")]
     if not 0 <= angles[0] <= np.pi:
         ctx.fail(f"{ow}.inc", f"{orbit.get('inc')!r} must lie in [0, 180] deg")
     if e >= 1 and 1 + e * np.cos(angles[3]) <= 0:
@@ -285,27 +283,20 @@ def _state(ctx, spec, where, name, gm, test_particle, built, names):
 
 
 def _semi_latus_rectum(ctx, orbit, e, where):
-    given = [k for k in ("a", "p", "q") if k in orbit]
-    if len(given) != 1:
-        ctx.fail(where, f"give exactly one size element of a, p, q; got {given or 'none'}")
-    key = given[0]
-    value = ctx.quantity(orbit[key], u.m, f"{where}.{key}")
-    if key == "a":
-        if e == 1:
-            ctx.fail(f"{where}.a", "a parabola (e = 1) has no finite a; give q or p")
-        if (e < 1) != (value > 0):
-            ctx.fail(f"{where}.a", f"{orbit['a']!r} with e = {e}: need a > 0 for e < 1 and a < 0 for e > 1")
-        return value * (1 - e) * (1 + e)
-    if not value > 0:
-        ctx.fail(f"{where}.{key}", f"{orbit[key]!r} must be positive")
-    return value if key == "p" else value * (1 + e)
+    sizes = {k: orbit[k] for k in ("a", "p", "q") if k in orbit}
+    if len(sizes) != 1:
+        ctx.fail(where, f"give exactly one size element of a, p, q; got {list(sizes) or 'none'}")
+    key = next(iter(sizes))
+    with ctx.field(f"{where}.{key}"):
+        value = inputs.parse_quantity(sizes[key], "length", f"{where}.{key}")
+        return float(inputs.semi_latus_rectum(np.float64(e), **{key: value}))
 
 
 def _times(ctx, spec, bodies):
     if "times" in spec:
         if not isinstance(spec["times"], list) or not spec["times"]:
             ctx.fail("time.times", "must be a non-empty list of times like '1 d'")
-        times = np.array([ctx.quantity(t, u.s, f"time.times[{i}]") for i, t in enumerate(spec["times"])])
+        times = np.array([ctx.quantity(t, "time", f"time.times[{i}]") for i, t in enumerate(spec["times"])])
     else:
         span = _span(ctx, spec, bodies)
         outputs = spec.get("outputs", 100)
@@ -321,7 +312,7 @@ def _span(ctx, spec, bodies):
     if ("periods" in spec) == ("span" in spec):
         ctx.fail("time", "give exactly one of periods, span (or a list of times)")
     if "span" in spec:
-        span = ctx.quantity(spec["span"], u.s, "time.span")
+        span = ctx.quantity(spec["span"], "time", "time.span")
         if not span > 0:
             ctx.fail("time.span", f"{spec['span']!r} must be positive")
         return span

@@ -1,6 +1,6 @@
 """Quantity tables shared by the domain objects: {snake_case name: Quantity}, `only` selecting names."""
 
-from orbits.errors import OrbitDomainError
+from orbits.core.errors import OrbitDomainError
 
 
 def check_names(names, allowed):

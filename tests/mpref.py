@@ -1,5 +1,14 @@
-"""The tests' short name for the mpmath oracle, orbits.reference (see that module)."""
+"""The tests' short name for the mpmath oracle, orbits.tools.reference (see that module)."""
 
-from orbits.reference import barker_D, kepler_E, kepler_H, propagate, rel_error, true_from_E, true_from_H, ulp_error
+from orbits.tools.reference import (
+    barker_D,
+    kepler_E,
+    kepler_H,
+    propagate,
+    rel_error,
+    true_from_E,
+    true_from_H,
+    ulp_error,
+)
 
 __all__ = ["barker_D", "kepler_E", "kepler_H", "propagate", "rel_error", "true_from_E", "true_from_H", "ulp_error"]

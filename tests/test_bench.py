@@ -1,4 +1,4 @@
-"""Tests of the benchmark harness (orbits.bench) on tiny sizes; no timing assertions."""
+"""Tests of the benchmark harness (orbits.tools.bench) on tiny sizes; no timing assertions."""
 
 import importlib.util
 import json
@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 from mpmath import mp
 
-from orbits import bench
+from orbits.tools import bench
 
 METHODS = [
     "orbits",

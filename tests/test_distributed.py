@@ -6,10 +6,12 @@ import pytest
 da = pytest.importorskip("dask.array")
 pytest.importorskip("distributed")
 
-from orbits import distributed, scene  # noqa: E402
+from orbits import scene  # noqa: E402
 from orbits.core import elements  # noqa: E402
 from orbits.core.propagate import propagate  # noqa: E402
+from orbits.tools import distributed  # noqa: E402
 from orbits.validate import models  # noqa: E402
+from orbits.validate import scenes as scenes_module  # noqa: E402
 from orbits.validate.run import validate  # noqa: E402
 
 MU = 3.986004418e14
@@ -58,7 +60,7 @@ def comparable(report):
 
 @pytest.mark.parametrize("processes", [False, True])
 def test_sweep_on_a_local_cluster_gives_the_sequential_report(processes):
-    scenes = [scene.load(name) for name in ("circular", "flyby")] + [models.load_any(models.builtin_names()[0])]
+    scenes = [scene.load(name) for name in ("circular", "flyby")] + [scenes_module.load(models.builtin_names()[0])]
     expected = comparable(validate(scenes))
     seen = []
     with distributed.sweep_client(workers=2, processes=processes) as client:

@@ -4,8 +4,8 @@ and the sweep sees accuracy improve with each knob."""
 import numpy as np
 import pytest
 
-from orbits import precision
 from orbits.core import elements
+from orbits.tools import precision
 
 
 def test_kepler_reference_and_closed_form_agree_to_rounding():

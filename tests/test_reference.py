@@ -6,7 +6,7 @@ import mpmath
 import pytest
 from mpmath import mp, mpf
 
-import orbits.reference as mpref
+import orbits.tools.reference as mpref
 
 TINY = mpf(10) ** -45
 ONE_MINUS = 1 - 2**-53  # largest float below 1

@@ -32,7 +32,7 @@ def kepler(
     fmt: FormatOption = Format.table,
 ):
     """Kepler solvers: throughput and worst error of orbits and its peers, measured in one run."""
-    from orbits.bench import bench_kepler, format_rows, rows_to_json
+    from orbits.tools.bench import bench_kepler, format_rows, rows_to_json
 
     rows = bench_kepler(n_easy=easy, n_hard=hard, n_hyp=hyperbolic, n_ref=reference, repeats=repeats)
     _emit(rows_to_json(rows), format_rows(rows), fmt, output)
@@ -46,7 +46,7 @@ def propagate(
     fmt: FormatOption = Format.table,
 ):
     """Two-body propagation: throughput and worst position and velocity error of orbits and its peers."""
-    from orbits.bench import bench_propagate, format_propagate, rows_to_json
+    from orbits.tools.bench import bench_propagate, format_propagate, rows_to_json
 
     rows = bench_propagate(n=states, n_ref=reference, repeats=repeats)
     _emit(rows_to_json(rows), format_propagate(rows), fmt, output)
@@ -59,7 +59,7 @@ def api(
     fmt: FormatOption = Format.table,
 ):
     """Unit-aware API: time per call of orbits.Orbit against the float64 core on the same inputs."""
-    from orbits.bench import bench_api, format_api, rows_to_json
+    from orbits.tools.bench import bench_api, format_api, rows_to_json
 
     rows = bench_api(sizes=_sizes(sizes), repeats=repeats)
     _emit(rows_to_json(rows), format_api(rows), fmt, output)
@@ -78,7 +78,7 @@ def cli(
     fmt: FormatOption = Format.table,
 ):
     """Command-line cold start: median wall time of fresh `orbits` processes."""
-    from orbits.bench import bench_cli, format_cli, rows_to_json
+    from orbits.tools.bench import bench_cli, format_cli, rows_to_json
 
     rows = bench_cli(runs=runs)
     _emit(rows_to_json(rows), format_cli(rows), fmt, output)
@@ -90,7 +90,7 @@ def validate(
     fmt: FormatOption = Format.table,
 ):
     """Validation: where the time of `orbits validate` goes, scene by scene and stage by stage."""
-    from orbits.bench import bench_validate, format_validate, rows_to_json
+    from orbits.tools.bench import bench_validate, format_validate, rows_to_json
 
     rows = bench_validate(sweep=sweep)
     _emit(rows_to_json(rows), format_validate(rows), fmt, output)
@@ -102,7 +102,7 @@ def all_(
     fmt: FormatOption = Format.table,
 ):
     """Every benchmark above in one run: one table each, one JSON object {benchmark: rows}."""
-    from orbits.bench import bench_all, format_report, report_to_json
+    from orbits.tools.bench import bench_all, format_report, report_to_json
 
     options = {}
     if quick:

@@ -37,19 +37,20 @@ def command(
     plot: PlotOption = None,
 ):
     """Masses, relative orbit, each star's orbit about the centre of mass, energy and angular momentum (XXII)."""
-    from orbits_cli import params, render
+    from orbits import inputs
+    from orbits_cli import render
 
     result = build(m1, m2, a, p, q, period, e, inc, raan, argp, nu)
     if plot:
         from orbits.plot import binary_plane
 
         save_plot(lambda: binary_plane(result), plot)
-    render.emit(f"Binary of {m1} and {m2}", result.quantities(params.names(only)), fmt.value)
+    render.emit(f"Binary of {m1} and {m2}", result.quantities(inputs.names(only)), fmt.value)
 
 
 def build(m1, m2, a, p, q, period, e, inc, raan, argp, nu):
     """The Binary described by the options; BadParameter when no size (or more than one) is given."""
-    from orbits import Binary
+    from orbits import Binary, inputs
     from orbits_cli import params
 
     sizes = {"a": a, "p": p, "q": q, "period": period}
@@ -57,7 +58,7 @@ def build(m1, m2, a, p, q, period, e, inc, raan, argp, nu):
     if len(given) != 1:
         raise typer.BadParameter(f"give exactly one size of --a, --p, --q, --period; got {given or 'none'}")
     kind = "time" if given[0] == "period" else "length"
-    size = {given[0]: params.quantity(sizes[given[0]], kind, f"--{given[0]}")}
+    size = {given[0]: inputs.parse_quantity(sizes[given[0]], kind, f"--{given[0]}")}
     return Binary.from_elements(
         mass_or_body(m1, "--m1"),
         mass_or_body(m2, "--m2"),
@@ -69,9 +70,9 @@ def build(m1, m2, a, p, q, period, e, inc, raan, argp, nu):
 
 def mass_or_body(text, option):
     """A body (name), mass or GM parsed from `text`; BadParameter naming `option` otherwise."""
-    from orbits_cli import params
+    from orbits import OrbitDomainError, inputs
 
     try:
-        return params.primary(text)
-    except typer.BadParameter as err:
-        raise typer.BadParameter(f"{option}: {err.message.removeprefix('primary: ')}") from None
+        return inputs.parse_primary(text)
+    except OrbitDomainError as err:
+        raise OrbitDomainError(f"{option}: {str(err).removeprefix('primary: ')}") from None

@@ -39,10 +39,11 @@ def command(
     Einstein-de Sitter with the notes' H = 0.5e-10 / yr by default (XXIV.iv: age 1.33e10 yr). Give --Om alone
     (or --Ol alone) for a flat universe; give two of --Om, --Ol, --Ok and the third follows from the sum 1.
     """
-    from orbits_cli import params, render
+    from orbits import inputs
+    from orbits_cli import render
 
     cosmology = build(h0, om, ol, orad, ok)
-    table = cosmology.quantities(**epoch(z, t), only=params.names(only))
+    table = cosmology.quantities(**epoch(z, t), only=inputs.names(only))
     if plot:
         import astropy.units as u
 
@@ -65,34 +66,22 @@ def build(h0, om, ol, orad, ok):
 
 
 def hubble_constant(text):
-    """H0 Quantity from "VALUE UNIT" with units of 1 / time (km/s/Mpc reads without astropy's slash warning)."""
-    import warnings
+    """H0 Quantity from "VALUE UNIT" with units of 1 / time ("70 km/s/Mpc", "0.07 / Gyr")."""
+    from orbits import inputs
 
-    import astropy.units as u
-
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", u.UnitsWarning)
-            value = u.Quantity(text)
-    except (TypeError, ValueError):
-        raise typer.BadParameter(f"--H0: cannot read {text!r} as a quantity; write e.g. '70 km/s/Mpc'") from None
-    if value.unit == u.one:
-        raise typer.BadParameter(f"--H0: {text!r} has no unit; write e.g. '{text} km/s/Mpc' or '{text} / yr'")
-    if not value.unit.is_equivalent(u.s**-1):
-        raise typer.BadParameter(f"--H0: {text!r} is a {value.unit.physical_type}, not a rate (1 / time)")
-    return value
+    return inputs.parse_quantity(text, "rate", "--H0")
 
 
 def epoch(z, t):
     """{"z": redshifts} or {"t": time} from the options (neither: today)."""
     import numpy as np
 
-    from orbits_cli import params
+    from orbits import inputs
 
     if z is not None and t is not None:
         raise typer.BadParameter("give --z (a redshift) or --t (a time since the big bang), not both")
     if t is not None:
-        return {"t": params.quantity(t, "time", "--t")}
+        return {"t": inputs.parse_quantity(t, "time", "--t")}
     if z is None:
         return {}
     try:

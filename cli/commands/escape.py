@@ -28,11 +28,11 @@ def speed(
     """Escape speed sqrt(2 G M / r) at a distance from a body's centre (at its surface by default)."""
     import astropy.units as u
 
-    from orbits import body, escape_speed
-    from orbits_cli import params, render
+    from orbits import body, escape_speed, inputs
+    from orbits_cli import render
 
     center = mass_or_body(primary, "BODY")
-    r = None if distance is None else params.quantity(distance, "length", "--distance")
+    r = None if distance is None else inputs.parse_quantity(distance, "length", "--distance")
     v = escape_speed(center, r)
     shown = r if r is not None else body(primary).radius * u.m
     result = {"distance": shown.to(u.km), "escape_speed": v.to(u.km / u.s)}
@@ -52,8 +52,8 @@ def cosmic(
     fmt: FormatOption = Format.table,
 ):
     """First, second and third cosmic velocities (XXI.ix): sqrt(g R), sqrt(2 g R) and the patched-conic third."""
-    from orbits import CosmicVelocities
-    from orbits_cli import params, render
+    from orbits import CosmicVelocities, inputs
+    from orbits_cli import render
 
     if planet is not None:
         if any(x is not None for x in (g, radius, orbital_speed)):
@@ -62,11 +62,11 @@ def cosmic(
     else:
         result = CosmicVelocities.from_surface_gravity(
             None if g is None else _acceleration(g),
-            None if radius is None else params.quantity(radius, "length", "--radius"),
-            None if orbital_speed is None else params.quantity(orbital_speed, "speed", "--orbital-speed"),
+            None if radius is None else inputs.parse_quantity(radius, "length", "--radius"),
+            None if orbital_speed is None else inputs.parse_quantity(orbital_speed, "speed", "--orbital-speed"),
         )
         title = "Cosmic velocities (the notes' model: v1 = sqrt(g R), v2 = sqrt(2 g R))"
-    render.emit(title, result.quantities(params.names(only)), fmt.value)
+    render.emit(title, result.quantities(inputs.names(only)), fmt.value)
 
 
 def geo(
@@ -77,15 +77,15 @@ def geo(
     fmt: FormatOption = Format.table,
 ):
     """Synchronous orbit of a rotating body (XXI.x): geosynchronous / geostationary radius and altitude for Earth."""
-    from orbits import SynchronousOrbit
-    from orbits_cli import params, render
+    from orbits import SynchronousOrbit, inputs
+    from orbits_cli import render
 
     result = SynchronousOrbit.of(
         mass_or_body(primary, "BODY"),
-        None if period is None else params.quantity(period, "time", "--period"),
-        None if radius is None else params.quantity(radius, "length", "--radius"),
+        None if period is None else inputs.parse_quantity(period, "time", "--period"),
+        None if radius is None else inputs.parse_quantity(radius, "length", "--radius"),
     )
-    render.emit(f"Synchronous orbit of {primary}", result.quantities(params.names(only)), fmt.value)
+    render.emit(f"Synchronous orbit of {primary}", result.quantities(inputs.names(only)), fmt.value)
 
 
 def elongation(
@@ -105,24 +105,19 @@ def elongation(
 
 
 def _acceleration(text):
-    """The --g option as an acceleration Quantity; BadParameter for a bare number or another physical type."""
-    from orbits_cli import params
+    """The --g option as an acceleration Quantity (a bare number has no unit and is refused)."""
+    from orbits import inputs
 
-    try:
-        float(text)
-    except ValueError:
-        return params.quantity(text, "acceleration", "--g")
-    raise typer.BadParameter(f"--g: {text!r} has no unit; write e.g. '{text} m/s2'")
+    return inputs.parse_quantity(text, "acceleration", "--g")
 
 
 def _radius_or_body(text, option):
     """A catalogued body's name, or a length parsed from `text`."""
-    from orbits.constants import BODIES
-    from orbits_cli import params
+    from orbits import inputs
 
-    if text.lower() in (name.lower() for name in BODIES):
+    if inputs.find_body(text) is not None:
         return text
-    return params.quantity(text, "length", option)
+    return inputs.parse_quantity(text, "length", option)
 
 
 app.command("speed")(reports_errors(speed))

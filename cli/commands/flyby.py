@@ -26,31 +26,31 @@ def command(
     plot: PlotOption = None,
 ):
     """Closest approach, speed there, eccentricity, semi-major axis and deflection of a flyby (XXI.vi, XXII.vi)."""
-    from orbits_cli import params, render
+    from orbits import inputs
+    from orbits_cli import render
 
     result, title = build(primary, v_inf, b, periapsis, mass, secondary)
     if plot:
         from orbits.plot import flyby_plane
 
         save_plot(lambda: flyby_plane(result), plot)
-    render.emit(title, result.quantities(params.names(only)), fmt.value)
+    render.emit(title, result.quantities(inputs.names(only)), fmt.value)
 
 
 def build(primary, v_inf, b, periapsis, mass, secondary):
     """(Flyby, title) from the options; BadParameter for inconsistent combinations."""
-    from orbits import Flyby
-    from orbits_cli import params
+    from orbits import Flyby, inputs
 
     if (b is None) == (periapsis is None):
         raise typer.BadParameter("give exactly one of --b (impact parameter) and --periapsis (closest approach)")
     if mass is not None and secondary is not None:
         raise typer.BadParameter("give --mass (fixed primary, XXI.vi) or --secondary (two moving masses), not both")
     size = (
-        {"b": params.quantity(b, "length", "--b")}
+        {"b": inputs.parse_quantity(b, "length", "--b")}
         if b is not None
-        else {"periapsis": params.quantity(periapsis, "length", "--periapsis")}
+        else {"periapsis": inputs.parse_quantity(periapsis, "length", "--periapsis")}
     )
-    speed = params.quantity(v_inf, "speed", "--v-inf")
+    speed = inputs.parse_quantity(v_inf, "speed", "--v-inf")
     center = mass_or_body(primary, "--primary")
     if secondary is not None:
         return Flyby.between(center, mass_or_body(secondary, "--secondary"), speed, **size), "Flyby of two masses"

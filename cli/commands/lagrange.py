@@ -23,20 +23,20 @@ def command(
 
     growth_rate is 0 for a linearly stable point; eigenvalues are (re, im) pairs in 1/s.
     """
-    from orbits_cli import params, render
+    from orbits import inputs
+    from orbits_cli import render
 
     system = build(primary, secondary, r)
     mu = float(system.mass_ratio.value)
     title = f"Lagrange points of {primary} and {secondary}, mu = {mu:.10g} (rotating frame, origin at the barycentre)"
-    render.emit(title, system.quantities(params.names(only), points=params.names(points)), fmt.value)
+    render.emit(title, system.quantities(inputs.names(only), points=inputs.names(points)), fmt.value)
 
 
 def build(primary, secondary, r):
     """The RestrictedThreeBody of the two bodies at separation r (None: the catalogued mean distance)."""
-    from orbits import RestrictedThreeBody
-    from orbits_cli import params
+    from orbits import RestrictedThreeBody, inputs
 
-    separation = None if r is None else params.quantity(r, "length", "--r")
+    separation = None if r is None else inputs.parse_quantity(r, "length", "--r")
     return RestrictedThreeBody.from_primaries(
         mass_or_body(primary, "PRIMARY"), mass_or_body(secondary, "SECONDARY"), separation
     )

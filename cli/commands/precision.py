@@ -21,8 +21,8 @@ def command(
     import dataclasses
     import json
 
-    from orbits import precision
     from orbits.io import write_atomic
+    from orbits.tools import precision
     from orbits_cli.render import precision_tables
 
     chosen = [p for p in precision.problems(long=not quick) if problem is None or problem in p.name]

@@ -20,14 +20,14 @@ def command(
 ):
     """Angular velocity, period, speed, U, K, E, L of a ring (XXIII) and its linear stability: growth rate,
     break-up time from float64 round-off, and the central mass that makes a ring of n >= 7 stable."""
-    from orbits import Ring
-    from orbits_cli import params, render
+    from orbits import Ring, inputs
+    from orbits_cli import render
 
     ring = Ring.from_masses(
         n,
         mass_or_body(m, "--m"),
-        params.quantity(r, "length", "--r"),
+        inputs.parse_quantity(r, "length", "--r"),
         central_mass=None if central_mass is None else mass_or_body(central_mass, "--central-mass"),
     )
     title = f"Ring of {n} bodies" + ("" if central_mass is None else f" about {central_mass}")
-    render.emit(title, ring.quantities(params.names(only)), fmt.value)
+    render.emit(title, ring.quantities(inputs.names(only)), fmt.value)

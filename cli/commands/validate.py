@@ -27,16 +27,14 @@ def command(
     import json
     import sys
 
-    from orbits import scene as scene_module
     from orbits.io import write_atomic
-    from orbits.validate import backends, models
-    from orbits.validate.run import validate
+    from orbits.validate import available, builtin_names, load, validate
 
-    names = scenes or scene_module.builtin_names() + models.builtin_names()
-    loaded = [models.load_any(name) for name in names]  # every scene is checked before anything runs
+    names = scenes or builtin_names()
+    loaded = [load(name) for name in names]  # every scene is checked before anything runs
     chosen = [b.strip() for b in backend.split(",") if b.strip()]
     for name in chosen:
-        if not backends.available(name):
+        if not available(name):
             raise typer.BadParameter(f"--backend: {name} is not installed (pip install {name})")
     if sweep or scheduler:
         validate = _sweeper(scheduler)
@@ -64,7 +62,7 @@ def _sweeper(address):
         import distributed  # noqa: F401
     except ImportError:
         raise typer.BadParameter("--sweep needs dask: pip install 'orbits[dask]'") from None
-    from orbits.distributed import sweep_client, validate_sweep
+    from orbits.tools.distributed import sweep_client, validate_sweep
 
     def run(scenes, backend_names, progress=None):
         with sweep_client(address) as client:

@@ -1,10 +1,12 @@
-"""Safeguarded root finding shared by the Kepler solvers and the universal-variable propagator."""
+"""Safeguarded root finding, vectorised over arrays: Halley for the Kepler solvers and the universal-variable
+propagator, Newton (rtsafe) for the Friedmann scale factor. Both keep a bracket and bisect when a step leaves it."""
 
 import numpy as np
 
-from orbits.errors import ConvergenceError
+from orbits.core.errors import ConvergenceError
 
 MAX_ITERATIONS = 60
+NEWTON_MAX_ITERATIONS = 100
 
 
 def halley_in_bracket(x, lo, hi, residual, what, inputs):
@@ -44,3 +46,36 @@ def halley_in_bracket(x, lo, hi, residual, what, inputs):
     with np.errstate(all="ignore"):
         polished = x - f / df
     return np.where(np.isfinite(polished) & (f != 0), polished, x)
+
+
+def newton_in_bracket(y, lo, hi, residual):
+    """Newton's method for an increasing function of y inside [lo, hi], safeguarded as in rtsafe: a step that
+    leaves the bracket or fails to halve the previous one is replaced by bisection.
+
+    residual(y, rows) returns (f, f') at y for those rows. Stops after the step taken from a point where
+    |f| <= 2**-40 (f is a relative residual, so quadratic convergence then leaves y within rounding of the
+    root), or when the bracket has shrunk to rounding (near a turnaround, where f' grows without bound).
+    """
+    active = np.ones(y.shape, dtype=bool)
+    last_step = hi - lo
+    for _ in range(NEWTON_MAX_ITERATIONS):
+        rows = np.flatnonzero(active)
+        if rows.size == 0:
+            return y
+        f, slope = residual(y[rows], rows)
+        lo[rows] = np.where(f <= 0, y[rows], lo[rows])
+        hi[rows] = np.where(f >= 0, y[rows], hi[rows])
+        with np.errstate(all="ignore"):
+            step = -f / slope
+        newton = np.isfinite(slope) & np.isfinite(step) & (np.abs(step) <= 0.5 * last_step[rows])
+        newton &= (y[rows] + step >= lo[rows]) & (y[rows] + step <= hi[rows])
+        new = np.where(newton, y[rows] + np.where(newton, step, 0.0), 0.5 * (lo[rows] + hi[rows]))
+        last_step[rows] = np.abs(new - y[rows])
+        y[rows] = new
+        collapsed = hi[rows] - lo[rows] <= 2.0**-52 * np.maximum(1.0, np.abs(new))
+        active[rows] = ~((newton & (np.abs(f) <= 2.0**-40)) | (f == 0) | collapsed)
+    i = np.flatnonzero(active)[0]
+    raise ConvergenceError(
+        f"scale factor a(t): Newton's method in ln a did not converge in {NEWTON_MAX_ITERATIONS} iterations; "
+        f"last ln a = {float(y[i])!r}, bracket [{float(lo[i])!r}, {float(hi[i])!r}]"
+    )

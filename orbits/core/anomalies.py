@@ -10,7 +10,8 @@ per element from e.
 
 import numpy as np
 
-from orbits.core._checks import check_finite
+from orbits.core.checks import check_finite
+from orbits.core.errors import OrbitDomainError
 from orbits.core.kepler import (
     eccentric_anomaly,
     hyperbolic_anomaly,
@@ -18,7 +19,6 @@ from orbits.core.kepler import (
     sinh_minus_x,
     x_minus_sin,
 )
-from orbits.errors import OrbitDomainError
 
 
 def _as_arrays(*values):

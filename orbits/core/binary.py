@@ -20,18 +20,9 @@ import numpy as np
 from orbits.core import _dd
 from orbits.core import propagate as kepler_propagate
 from orbits.core.elements import wrap_pi, wrap_two_pi
-from orbits.errors import OrbitDomainError
+from orbits.core.errors import OrbitDomainError
 
 FOUR_PI_SQUARED = 4.0 * np.pi**2
-
-
-def require_positive(x, name, unit):
-    """Raise OrbitDomainError unless every x is finite and > 0; the message names x, its value, (0, inf) and unit."""
-    x = np.asarray(x, dtype=float)
-    bad = ~(np.isfinite(x) & (x > 0))
-    if np.any(bad):
-        value = float(x[bad].flat[0])
-        raise OrbitDomainError(f"{name} = {value!r} {unit} is outside the allowed range (0, inf) {unit}")
 
 
 def require_bound(e, quantity):

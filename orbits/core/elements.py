@@ -16,8 +16,8 @@ Angle conventions (orientation R = R3(Omega) R1(i) R3(omega), as in Vallado and 
 
 import numpy as np
 
-from orbits.core._checks import check_finite
-from orbits.errors import DegenerateOrbitError, OrbitDomainError
+from orbits.core.checks import check_finite
+from orbits.core.errors import DegenerateOrbitError, OrbitDomainError
 
 TWO_PI = 2.0 * np.pi
 

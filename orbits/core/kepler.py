@@ -30,10 +30,10 @@ initialising numba (see orbits.core._fast).
 import numpy as np
 
 from orbits.core import _fast
-from orbits.core._checks import check_eccentricity, check_finite
 from orbits.core._dd import two_product, two_sum
 from orbits.core._roots import halley_in_bracket
-from orbits.errors import OrbitDomainError
+from orbits.core.checks import check_eccentricity, check_finite
+from orbits.core.errors import OrbitDomainError
 
 # 2 pi as an unevaluated sum of three doubles (checked against mpmath in the tests).
 TWO_PI_1 = 6.283185307179586

@@ -20,9 +20,9 @@ below mu ~ 1e-32 rho < 2**-52 and x_L1, x_L2 round onto the secondary: use the o
 
 import numpy as np
 
-from orbits.core._checks import check_finite
 from orbits.core._roots import halley_in_bracket
-from orbits.errors import OrbitDomainError
+from orbits.core.checks import check_finite
+from orbits.core.errors import OrbitDomainError
 
 POINTS = ("L1", "L2", "L3", "L4", "L5")
 

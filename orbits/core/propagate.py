@@ -17,17 +17,17 @@ regularised here.
 Speed: with numba installed the same algorithm runs compiled, one state at a time
 (orbits/core/_fast_propagate.py); this NumPy version runs otherwise (ORBITS_JIT=0) and re-runs any
 batch the kernel flags, so that invalid input raises the same messages. Measured figures are in the
-docstring of orbits.bench.bench_propagate and in the README's Benchmarks section.
+docstring of orbits.tools.bench.bench_propagate and in the README's Benchmarks section.
 """
 
 import numpy as np
 
 from orbits.core import _dd, _fast
-from orbits.core._checks import check_finite
 from orbits.core._roots import halley_in_bracket
+from orbits.core.checks import check_finite
 from orbits.core.elements import check_state
+from orbits.core.errors import DegenerateOrbitError
 from orbits.core.kepler import TWO_PI_1, TWO_PI_2, sinh_minus_x, x_minus_sin
-from orbits.errors import DegenerateOrbitError
 
 
 def _stumpff_coefficients(first):

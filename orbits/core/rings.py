@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from orbits.errors import OrbitDomainError
+from orbits.core.errors import OrbitDomainError
 
 #: Growth rates at or below this fraction of the largest |eigenvalue| (at least 1 omega) count as neutral: the
 #: round-off level of the eigenvalues near a collision of two frequencies. Since the growth rises as the square

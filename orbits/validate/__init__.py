@@ -1,0 +1,19 @@
+"""Numerical cross-checks: every scene predicted analytically and integrated with rebound and heyoka.
+
+    >>> from orbits.validate import load, validate
+    >>> report = validate([load("circular")])           # doctest: +SKIP
+    >>> report.passed                                   # doctest: +SKIP
+    True
+
+The public entry points are `load` (a scene of either kind, by name or file), `builtin_names`, `validate` and
+`validate_scene`, `available` (is a backend installed) and the report records. The adapters (_rebound, _heyoka)
+are the only modules that import rebound and heyoka, inside their integrate functions.
+"""
+
+from orbits.validate.backends import BACKENDS, available
+from orbits.validate.plan import Measurement
+from orbits.validate.run import Check, SceneReport, ValidationReport, validate, validate_scene
+from orbits.validate.scenes import builtin_names, load
+
+__all__ = ["BACKENDS", "Check", "Measurement", "SceneReport", "ValidationReport", "available", "builtin_names",
+           "load", "validate", "validate_scene"]

@@ -23,8 +23,8 @@ import time
 
 import numpy as np
 
-from orbits.errors import OrbitDomainError
-from orbits.validate.problem import NBodyProblem, NBodyResult
+from orbits.core.errors import OrbitDomainError
+from orbits.nbody import NBodyProblem, NBodyResult
 
 COMPACT_MODE_MIN_BODIES = 4
 

@@ -17,8 +17,8 @@ import time
 
 import numpy as np
 
-from orbits.errors import OrbitDomainError
-from orbits.validate.problem import NBodyProblem, NBodyResult
+from orbits.core.errors import OrbitDomainError
+from orbits.nbody import NBodyProblem, NBodyResult
 
 INTEGRATORS = ("ias15", "whfast", "bs")
 

@@ -1,30 +1,33 @@
 """Registry of the validation backends: what each offers, whether it is installed, and a uniform entry point.
 
-Nothing here imports rebound or heyoka; an adapter module is imported only when ``integrate`` runs it.
+Each backend is registered with its adapter's integrate function, imported here like any other name (editors and
+the layering test follow it). The adapters import rebound and heyoka inside integrate, so loading this registry
+loads neither library.
 """
 
 from __future__ import annotations
 
-import importlib
 import importlib.util
+from collections.abc import Callable
 from dataclasses import dataclass
 
-from orbits.errors import OrbitDomainError
-from orbits.validate.problem import NBodyProblem, NBodyResult
+from orbits.core.errors import OrbitDomainError
+from orbits.nbody import NBodyProblem, NBodyResult
+from orbits.validate import _heyoka, _rebound
 
 
 @dataclass(frozen=True)
 class BackendInfo:
     """Static description of one backend.
 
-    ``entry_point`` is "module:function" of the adapter; ``package`` is the third-party module it needs.
+    ``integrate`` is the adapter's entry point; ``package`` is the third-party module it needs.
     ``supports_extended_precision`` states what the installed library build can do (heyoka 7.13.2 ships
     long double and real128 integrators); the adapters themselves always integrate in float64.
     """
 
     name: str
     package: str
-    entry_point: str
+    integrate: Callable[..., NBodyResult]
     integrators: tuple[str, ...]
     supports_test_particles: bool
     supports_extended_precision: bool
@@ -34,15 +37,15 @@ BACKENDS: dict[str, BackendInfo] = {
     "rebound": BackendInfo(
         name="rebound",
         package="rebound",
-        entry_point="orbits.validate._rebound:integrate",
-        integrators=("ias15", "whfast", "bs"),
+        integrate=_rebound.integrate,
+        integrators=_rebound.INTEGRATORS,
         supports_test_particles=True,
         supports_extended_precision=False,
     ),
     "heyoka": BackendInfo(
         name="heyoka",
         package="heyoka",
-        entry_point="orbits.validate._heyoka:integrate",
+        integrate=_heyoka.integrate,
         integrators=("taylor_adaptive",),
         supports_test_particles=True,
         supports_extended_precision=True,
@@ -70,5 +73,4 @@ def integrate(name: str, problem: NBodyProblem, **settings) -> NBodyResult:
         raise ModuleNotFoundError(
             f"backend {name!r} needs the {info.package!r} package, which is not installed (pip install {info.package})"
         )
-    module_name, function_name = info.entry_point.split(":")
-    return getattr(importlib.import_module(module_name), function_name)(problem, **settings)
+    return info.integrate(problem, **settings)

@@ -1,22 +1,27 @@
-"""Model scenes: validation problems built by the domain models (no two-body closed form needed).
+"""Model scenes: validation problems built from the models' closed forms (no two-body closed form needed).
 
 A model scene is an NBodyProblem in code units plus what the model predicts: positions at the output
-times and, optionally, model-specific checks (a measured quantity against its prediction). The builders
-live with the models (e.g. orbits.cosmology.expanding_sphere_problem); this module registers them under
-scene names, so `orbits validate` runs them beside the data scenes of orbits/scenes/, and a TOML/JSON file
-can ask for one with `model = "<name>"` and a `[parameters]` table passed to the builder.
+times and, optionally, model-specific Measurements (a measured quantity against its prediction). The
+problems are built in orbits.validate.builders; this module registers them under scene names, so
+`orbits validate` runs them beside the data scenes of orbits/scenes/, and a TOML/JSON file can ask for one
+with `model = "<name>"` and a `[parameters]` table passed to the builder.
 """
 
-import json
 import time
-import tomllib
+from collections.abc import Callable
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 
-from orbits import scene as data_scenes
-from orbits.scene import SceneError
+from orbits.core.errors import SceneError
+from orbits.nbody import NBodyProblem
+from orbits.validate.builders import (
+    expanding_sphere_problem,
+    fitted_growth_rate,
+    lagrange_test_particles_problem,
+    ring_problem,
+)
+from orbits.validate.plan import CODE, Measurement, Plan, Trajectory, plan
 
 
 @dataclass(frozen=True, eq=False)
@@ -24,24 +29,41 @@ class ModelScene:
     """A validation problem in code units with the model's predictions.
 
     `expected` holds (K, N, 3) positions at problem.times (or None); position errors are quoted relative to
-    `length`. `checks(times, positions, velocities)` returns extra Check-like tuples
-    (quantity, unit, predicted, measured, tolerance, kind) for each backend's trajectory.
+    `length`. `checks(times, positions, velocities)` returns the model's Measurements on one backend's trajectory.
     """
 
     name: str
     description: str
-    problem: object
+    problem: NBodyProblem
     expected: np.ndarray | None
     length: float
     tolerance: dict
     predict_seconds: float = 0.0
-    checks: object = None
+    checks: Callable[[np.ndarray, np.ndarray, np.ndarray], list[Measurement]] | None = None
+
+
+@plan.register
+def _plan_model_scene(model: ModelScene) -> Plan:
+    """The Plan of a model scene: its problem as built, residuals against `expected`, its own measurements."""
+    residuals = None
+    if model.expected is not None:
+        def residuals(trajectory: Trajectory) -> np.ndarray:
+            return np.max(np.linalg.norm(trajectory.positions - model.expected, axis=-1), axis=-1) / model.length
+
+    def measure(trajectory: Trajectory) -> list[Measurement]:
+        if model.checks is None:
+            return []
+        return model.checks(trajectory.times, trajectory.positions, trajectory.velocities)
+
+    return Plan(
+        name=model.name, description=model.description, problem=model.problem, code_units=CODE,
+        predict_seconds=model.predict_seconds, residual_times=model.problem.times, residuals=residuals,
+        measure=measure, positions_tolerance=model.tolerance.get("positions", 0.0),
+    )
 
 
 def _expanding_universe(n_shells=8, duration=20.0, outputs=40):
     """The notes' sphere of test shells (XXIV) expanding at the zero-energy speed about a unit mass."""
-    from orbits.cosmology import expanding_sphere_problem
-
     start = time.perf_counter()
     problem, expected = expanding_sphere_problem(n_shells, duration=duration, n_times=outputs + 1)
     seconds = time.perf_counter() - start
@@ -68,8 +90,9 @@ def _sphere_checks(problem):
         hubble = np.max(np.abs((v / r) * (1.5 * (big_bang + times[:, None])) - 1))  # |H / (2 / (3t)) - 1|
         energy = np.max(np.abs(0.5 * v * v - 1.0 / r) / (0.5 * v * v + 1.0 / r))
         return [
-            ("Hubble parameter: max |(v/r) / (2/(3t)) - 1|", "", 0.0, float(hubble), 1e-12, "relative deviation"),
-            ("shell energy v**2/2 - GM/r (zero)", "", 0.0, float(energy), 1e-12, "relative deviation"),
+            Measurement("Hubble parameter: max |(v/r) / (2/(3t)) - 1|", "", 0.0, float(hubble), 1e-12,
+                        "relative drift"),
+            Measurement("shell energy v**2/2 - GM/r (zero)", "", 0.0, float(energy), 1e-12, "relative drift"),
         ]
 
     return checks
@@ -84,8 +107,6 @@ def _earth_moon_mass_ratio():
 
 def _lagrange_stable(periods=100, outputs=400):
     """Test particles on the Earth-Moon L4 and L5 points (linearly stable: mu < Routh's 0.0385)."""
-    from orbits.lagrange import lagrange_test_particles_problem
-
     mu = _earth_moon_mass_ratio()
     start = time.perf_counter()
     times = np.linspace(0.0, periods * 2 * np.pi, outputs + 1)[1:]
@@ -95,10 +116,10 @@ def _lagrange_stable(periods=100, outputs=400):
     def checks(times, positions, velocities):
         rows = []
         for e in expectations:
-            rows.append((f"{e.point}: max distance from the point (rotating frame)", "r", 0.0,
-                         float(np.max(e.deviations(positions))), 1e-11, "absolute drift"))
-            rows.append((f"{e.point}: Jacobi constant", "", e.jacobi_constant, _jacobi_drift(e, positions, velocities),
-                         1e-12, "relative drift"))
+            rows.append(Measurement(f"{e.point}: max distance from the point (rotating frame)", "r", 0.0,
+                                    float(np.max(e.deviations(positions))), 1e-11, "absolute drift"))
+            rows.append(Measurement(f"{e.point}: Jacobi constant", "", e.jacobi_constant,
+                                    _jacobi_drift(e, positions, velocities), 1e-12, "relative drift"))
         return rows
 
     return ModelScene("lagrange_L4_L5", f"Test particles at the Earth-Moon L4 and L5 points (mu = {mu:.6g}) for "
@@ -108,8 +129,6 @@ def _lagrange_stable(periods=100, outputs=400):
 def _lagrange_unstable(mass_ratio=None, points=("L1", "L2", "L3"), offset=1e-10, outputs=600):
     """Test particles `offset` off unstable points along the growing mode, until 1e-4: the fitted e-folding
     rate against the eigenvalue of the linearised motion."""
-    from orbits.lagrange import fitted_growth_rate, lagrange_test_particles_problem
-
     mu = _earth_moon_mass_ratio() if mass_ratio is None else float(mass_ratio)
     start = time.perf_counter()
     _, probes = lagrange_test_particles_problem(mu, [1.0], list(points), offset)
@@ -125,10 +144,10 @@ def _lagrange_unstable(mass_ratio=None, points=("L1", "L2", "L3"), offset=1e-10,
                 rate = fitted_growth_rate(times, e.deviations(positions))
             except ValueError:
                 rate = float("nan")  # too few samples in the fitting window: reported as a failure
-            rows.append((f"{e.point}: e-folding rate vs eigenvalue", "1 / time unit", e.growth_rate, rate, 0.03,
-                         "relative error"))
-            rows.append((f"{e.point}: Jacobi constant", "", e.jacobi_constant, _jacobi_drift(e, positions, velocities),
-                         1e-12, "relative drift"))
+            rows.append(Measurement(f"{e.point}: e-folding rate vs eigenvalue", "1 / time unit", e.growth_rate,
+                                    rate, 0.03, "relative error"))
+            rows.append(Measurement(f"{e.point}: Jacobi constant", "", e.jacobi_constant,
+                                    _jacobi_drift(e, positions, velocities), 1e-12, "relative drift"))
         return rows
 
     label = "Earth-Moon" if mass_ratio is None else f"mu = {mu:g}"
@@ -145,8 +164,6 @@ def _jacobi_drift(expectation, positions, velocities):
 def _ring(n=5, outputs=400):
     """n equal masses on a circle (no central mass, unstable for n >= 3): round-off grows to a 1e-3 break-up
     at the time the linearised motion predicts."""
-    from orbits.rings import ring_problem
-
     start = time.perf_counter()
     _, probe = ring_problem(n, [1.0])
     times = np.linspace(0.0, 3.0 * probe.breakup_time, outputs + 1)[1:]
@@ -158,9 +175,9 @@ def _ring(n=5, outputs=400):
         early = times <= expected.breakup_time / 3
         shape = float(np.max(expected.shape_deviations(positions[early])))
         return [
-            ("break-up time: |ln(measured / predicted)|", "", 0.0, float(abs(np.log(ratio))), float(np.log(3.0)),
-             "absolute drift"),
-            ("shape deviation before a third of the break-up time", "r", 0.0, shape, 1e-9, "absolute drift"),
+            Measurement("break-up time: |ln(measured / predicted)|", "", 0.0, float(abs(np.log(ratio))),
+                        float(np.log(3.0)), "absolute drift"),
+            Measurement("shape deviation before a third of the break-up time", "r", 0.0, shape, 1e-9, "absolute drift"),
         ]
 
     return ModelScene(f"ring_{n}", f"A ring of {n} equal masses (XXIII): round-off (1e-16) grows at the predicted "
@@ -204,17 +221,6 @@ def build(name, parameters=None, source="<scene>"):
         raise SceneError(f"{source}: parameters: {err}") from None
 
 
-def load_any(name_or_path):
-    """A data Scene or a ModelScene from a built-in name or a .toml/.json file (which may name a model)."""
-    if str(name_or_path) in MODELS:
-        return build(str(name_or_path))
-    path = Path(name_or_path)
-    if path.suffix in (".toml", ".json") and path.exists():
-        text = path.read_text()
-        try:
-            data = json.loads(text) if path.suffix == ".json" else tomllib.loads(text)
-        except (json.JSONDecodeError, tomllib.TOMLDecodeError) as err:
-            raise SceneError(f"{path}: not valid {path.suffix[1:].upper()}: {err}") from None
-        if "model" in data:
-            return build(data["model"], data.get("parameters", {}), source=str(path))
-    return data_scenes.load(name_or_path)
+def from_dict(data: dict, source: str = "<scene>") -> ModelScene:
+    """The model scene a parsed scene file names with `model = "<name>"` and an optional `[parameters]` table."""
+    return build(data["model"], data.get("parameters", {}), source=source)

@@ -18,8 +18,8 @@ import orbits.binary
 from orbits import BODIES, Binary, Orbit, OrbitDomainError
 from orbits.constants import G
 from orbits.core import twobody
+from orbits.nbody import NBodyProblem
 from orbits.validate.backends import integrate
-from orbits.validate.problem import NBodyProblem
 
 GM = u.m**3 / u.s**2
 GM1, GM2 = 1.0, 0.3

@@ -19,8 +19,8 @@ import pytest
 import orbits.flyby
 from orbits import BODIES, Flyby, OrbitDomainError
 from orbits.constants import G
+from orbits.nbody import NBodyProblem
 from orbits.validate.backends import integrate
-from orbits.validate.problem import NBodyProblem
 
 GM = u.m**3 / u.s**2
 FAR = 1e8  # impact parameters: where the outgoing and reversed incoming velocities are read

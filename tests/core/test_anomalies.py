@@ -10,7 +10,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from orbits.core import anomalies
-from orbits.errors import OrbitDomainError
+from orbits.core.errors import OrbitDomainError
 
 
 @given(E=st.floats(min_value=-math.pi, max_value=math.pi), e=st.floats(min_value=0, max_value=1 - 2**-53))

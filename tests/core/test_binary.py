@@ -14,8 +14,8 @@ import mpref
 import numpy as np
 import pytest
 
-from orbits.core import binary, elements, twobody
-from orbits.errors import OrbitDomainError
+from orbits.core import binary, checks, elements, twobody
+from orbits.core.errors import OrbitDomainError
 
 DPS = 50
 RATIOS = [1e-15, 1e-8, 0.012300037, 0.3, 1.0, 2.5, 7.3e3]
@@ -198,8 +198,8 @@ def test_a_vanishing_companion_reduces_to_the_fixed_star_of_section_xxi(e):
 
 def test_require_positive_and_bound_name_quantity_value_range_and_unit():
     with pytest.raises(OrbitDomainError, match=r"mass m1 = -2.0 kg is outside the allowed range \(0, inf\) kg"):
-        binary.require_positive(np.array([1.0, -2.0]), "mass m1", "kg")
+        checks.require_positive(np.array([1.0, -2.0]), "mass m1", "kg")
     with pytest.raises(OrbitDomainError, match=r"mass m2 = nan kg"):
-        binary.require_positive(math.nan, "mass m2", "kg")
+        checks.require_positive(math.nan, "mass m2", "kg")
     with pytest.raises(OrbitDomainError, match=r"a period needs a bound orbit: eccentricity e = 1.0 .*\[0, 1\)"):
         binary.require_bound(1.0, "a period")

@@ -15,9 +15,9 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from orbits.core import cosmology
-from orbits.core.cosmology import Friedmann
-from orbits.errors import OrbitDomainError
+from orbits.core import friedmann, sphere
+from orbits.core.errors import OrbitDomainError
+from orbits.core.friedmann import Friedmann
 
 EDS_ULPS = 4  # EDGE 58 / issue 9: EdS comoving distance, age and lookback time
 SPHERE_ULPS = 2
@@ -42,7 +42,7 @@ def worst_rel(values, references):
 def test_notes_age_for_h_half_e_minus_10_per_year():
     """XXIV.iv: H = 2 / (3 t) = 0.5e-10 / yr gives t = 1.33e10 yr (ERRATA #84: 1.3333e10 yr)."""
     year = 365.25 * 86400.0
-    age = cosmology.age_from_hubble(0.5e-10 / year) / year
+    age = sphere.age_from_hubble(0.5e-10 / year) / year
     assert math.isclose(age, 4e10 / 3, rel_tol=4e-16)
     assert round(age / 1e10, 2) == 1.33
 
@@ -54,37 +54,37 @@ def test_sphere_radius_and_speed_within_2_ulp(gm):
         g = mpmath.mpf(gm)
         r_ref = [mpmath.cbrt(9 * g * mpmath.mpf(t) ** 2 / 2) for t in times]
         v_ref = [mpmath.cbrt(4 * g / (3 * mpmath.mpf(t))) for t in times]
-    assert worst_ulps(cosmology.sphere_radius(times, gm), r_ref) <= SPHERE_ULPS
-    assert worst_ulps(cosmology.sphere_speed(times, gm), v_ref) <= SPHERE_ULPS
+    assert worst_ulps(sphere.sphere_radius(times, gm), r_ref) <= SPHERE_ULPS
+    assert worst_ulps(sphere.sphere_speed(times, gm), v_ref) <= SPHERE_ULPS
 
 
 def test_sphere_obeys_zero_energy_and_hubbles_law():
     """v = sqrt(2 G M / r) (XXIV.ii), H = v / r = 2 / (3 t) (XXIV.iv), and r(t(r)) = r."""
     gm, t = 2.5e20, np.geomspace(1e3, 1e17, 30)
-    r, v = cosmology.sphere_radius(t, gm), cosmology.sphere_speed(t, gm)
+    r, v = sphere.sphere_radius(t, gm), sphere.sphere_speed(t, gm)
     np.testing.assert_allclose(v, np.sqrt(2 * gm / r), rtol=4e-16)
-    np.testing.assert_allclose(v / r, cosmology.sphere_hubble_parameter(t), rtol=4e-16)
-    np.testing.assert_allclose(cosmology.sphere_hubble_parameter(t), 2 / (3 * t), rtol=0)
-    np.testing.assert_allclose(cosmology.sphere_radius(cosmology.sphere_time(r, gm), gm), r, rtol=4e-16)
+    np.testing.assert_allclose(v / r, sphere.sphere_hubble_parameter(t), rtol=4e-16)
+    np.testing.assert_allclose(sphere.sphere_hubble_parameter(t), 2 / (3 * t), rtol=0)
+    np.testing.assert_allclose(sphere.sphere_radius(sphere.sphere_time(r, gm), gm), r, rtol=4e-16)
 
 
 def test_sphere_density_is_critical():
     """M / (4 pi r**3 / 3) = 1 / (6 pi G t**2) = 3 H**2 / (8 pi G): the zero-energy sphere is exactly critical."""
     gm, g, t = 7.0e21, 6.6743e-11, np.geomspace(1e5, 1e17, 13)
-    r = cosmology.sphere_radius(t, gm)
+    r = sphere.sphere_radius(t, gm)
     mean = 3 * (gm / g) / (4 * np.pi * r**3)
-    np.testing.assert_allclose(cosmology.sphere_density(t, g), mean, rtol=1e-15)
-    critical = cosmology.critical_density(cosmology.sphere_hubble_parameter(t), g)
-    np.testing.assert_allclose(cosmology.sphere_density(t, g), critical, rtol=4e-16)
+    np.testing.assert_allclose(sphere.sphere_density(t, g), mean, rtol=1e-15)
+    critical = sphere.critical_density(sphere.sphere_hubble_parameter(t), g)
+    np.testing.assert_allclose(sphere.sphere_density(t, g), critical, rtol=4e-16)
 
 
 @pytest.mark.parametrize(
     "call, fragment",
     [
-        (lambda: cosmology.sphere_radius(-1.0, 1.0), "outside [0, inf) s"),
-        (lambda: cosmology.sphere_speed(0.0, 1.0), "outside (0, inf) s: v and H are infinite"),
-        (lambda: cosmology.sphere_hubble_parameter(np.nan), "t = nan s is not a number"),
-        (lambda: cosmology.sphere_density(-2.0, 1.0), "t = -2.0 s is outside"),
+        (lambda: sphere.sphere_radius(-1.0, 1.0), "outside [0, inf) s"),
+        (lambda: sphere.sphere_speed(0.0, 1.0), "outside (0, inf) s: v and H are infinite"),
+        (lambda: sphere.sphere_hubble_parameter(np.nan), "t = nan s is not a number"),
+        (lambda: sphere.sphere_density(-2.0, 1.0), "t = -2.0 s is outside"),
     ],
 )
 def test_sphere_rejects_times_before_the_big_bang(call, fragment):
@@ -189,7 +189,7 @@ def test_eds_scale_factor_closed_form_and_round_trip():
     ],
 )
 def test_method_is_chosen_once_at_construction(densities, method):
-    assert Friedmann(*densities).method == method and method in cosmology.METHODS
+    assert Friedmann(*densities).method == method and method in friedmann.METHODS
 
 
 @pytest.mark.parametrize(

@@ -9,8 +9,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from orbits.core import elements
+from orbits.core.errors import DegenerateOrbitError, OrbitDomainError
 from orbits.core.propagate import propagate
-from orbits.errors import DegenerateOrbitError, OrbitDomainError
 
 
 def angle_diff(a, b):

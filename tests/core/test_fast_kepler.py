@@ -16,8 +16,8 @@ import numpy as np
 import pytest
 
 from orbits.core import _fast, kepler
-from orbits.errors import OrbitDomainError
-from orbits.reference import kepler_E_ulps, kepler_H_ulps
+from orbits.core.errors import OrbitDomainError
+from orbits.tools.reference import kepler_E_ulps, kepler_H_ulps
 
 pytest.importorskip("numba")
 

@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 from orbits.core import _fast, elements
+from orbits.core.errors import DegenerateOrbitError, OrbitDomainError
 from orbits.core.propagate import propagate
-from orbits.errors import DegenerateOrbitError, OrbitDomainError
 
 pytest.importorskip("numba")
 

@@ -10,7 +10,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from orbits.core import kepler
-from orbits.errors import OrbitDomainError
+from orbits.core.errors import OrbitDomainError
 
 ELLIPTIC_ULPS = 4
 HYPERBOLIC_ULPS = 4

@@ -15,7 +15,7 @@ import pytest
 from mpmath import mp, mpf
 
 from orbits.core import lagrange
-from orbits.errors import OrbitDomainError
+from orbits.core.errors import OrbitDomainError
 
 SUN_EARTH = 3.0034893488507934e-06  # GM_Earth / (GM_Sun + GM_Earth), IAU 2015 nominal values
 EARTH_MOON = 0.012150584269940356

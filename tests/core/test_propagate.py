@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 from orbits.core import elements
+from orbits.core.errors import DegenerateOrbitError, OrbitDomainError
 from orbits.core.propagate import propagate, stumpff
-from orbits.errors import DegenerateOrbitError, OrbitDomainError
 
 MU_EARTH = 3.986004418e14
 

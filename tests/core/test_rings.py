@@ -9,7 +9,7 @@ import pytest
 from mpmath import mp, mpf
 
 from orbits.core import rings
-from orbits.errors import OrbitDomainError
+from orbits.core.errors import OrbitDomainError
 
 
 def csc_sum_euler_maclaurin(n, terms=12):

@@ -8,11 +8,12 @@ import mpmath
 import numpy as np
 import pytest
 
-from orbits import Binary, Cosmology, Orbit, Ring, escape_speed, reference
+from orbits import Binary, Cosmology, Orbit, Ring, escape_speed
 from orbits.constants import G
 from orbits.core import anomalies, elements, kepler, lagrange, rings
+from orbits.core.errors import DegenerateOrbitError, OrbitDomainError
 from orbits.core.propagate import propagate
-from orbits.errors import DegenerateOrbitError, OrbitDomainError
+from orbits.tools import reference
 
 NAN, INF = float("nan"), float("inf")
 
@@ -439,7 +440,7 @@ def test_row24_iteration_cap_raises_with_the_inputs_and_the_bracket(monkeypatch)
     """Row 24: a solver that runs out of iterations raises ConvergenceError naming its inputs, last iterate
     and bracket; it never returns its last iterate silently. The cap is lowered to 2 to provoke it."""
     from orbits.core import _roots
-    from orbits.errors import ConvergenceError
+    from orbits.core.errors import ConvergenceError
 
     monkeypatch.setattr(_roots, "MAX_ITERATIONS", 2)
 

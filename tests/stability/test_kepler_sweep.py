@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from orbits import reference
 from orbits.core import kepler
+from orbits.tools import reference
 
 BOUND_ULPS = 4
 

@@ -4,11 +4,11 @@ of their errors. Spans are 1e4 periods times ORBITS_SLOW_SCALE (CI default 0.05:
 import numpy as np
 import pytest
 
-from orbits import precision
 from orbits.core import elements
 from orbits.core.propagate import propagate
+from orbits.nbody import NBodyProblem
+from orbits.tools import precision
 from orbits.validate import backends
-from orbits.validate.problem import NBodyProblem
 
 pytestmark = pytest.mark.slow
 

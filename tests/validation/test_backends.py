@@ -10,9 +10,9 @@ import mpmath
 import numpy as np
 import pytest
 
-from orbits.errors import OrbitDomainError
+from orbits.core.errors import OrbitDomainError
+from orbits.nbody import NBodyProblem
 from orbits.validate import _heyoka, _rebound, backends
-from orbits.validate.problem import NBodyProblem
 
 TWO_PI = 2.0 * math.pi
 DT = TWO_PI / 100.0

@@ -9,10 +9,10 @@ Measured: positions within 1e-15 relative (heyoka, tol 1e-16) and 4e-16 (IAS15, 
 import numpy as np
 import pytest
 
-from orbits.core.cosmology import sphere_time
-from orbits.cosmology import expanding_sphere_problem
-from orbits.errors import OrbitDomainError
+from orbits.core.errors import OrbitDomainError
+from orbits.core.sphere import sphere_time
 from orbits.validate import backends
+from orbits.validate.builders import expanding_sphere_problem
 
 CONFIGS = {
     "heyoka": ("heyoka", {"tol": 1e-16, "high_accuracy": True}),

@@ -14,9 +14,8 @@ import numpy as np
 import pytest
 
 from orbits.core import lagrange as lagrange_core
-from orbits.lagrange import fitted_growth_rate, lagrange_test_particles_problem
-from orbits.rings import ring_problem
 from orbits.validate import backends
+from orbits.validate.builders import fitted_growth_rate, lagrange_test_particles_problem, ring_problem
 
 EARTH_MOON = 0.012150584269940356
 SETTINGS = {"rebound": {"integrator": "ias15", "epsilon": 1e-9}, "heyoka": {"tol": 1e-16, "high_accuracy": True}}

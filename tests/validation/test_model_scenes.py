@@ -2,8 +2,8 @@
 
 import pytest
 
-from orbits.scene import SceneError
-from orbits.validate import models, run
+from orbits.core.errors import SceneError
+from orbits.validate import models, run, scenes
 
 
 def test_expanding_universe_agrees_with_both_backends():
@@ -27,7 +27,7 @@ def test_lagrange_and_ring_scenes_agree_with_both_backends(name):
 def test_a_file_can_ask_for_a_model_with_parameters(tmp_path):
     path = tmp_path / "universe.toml"
     path.write_text('model = "expanding_universe"\n[parameters]\nn_shells = 3\nduration = 5.0\noutputs = 10\n')
-    scene = models.load_any(path)
+    scene = scenes.load(path)
     assert scene.problem.n_bodies == 4 and scene.problem.times.size == 10
 
 
@@ -40,9 +40,9 @@ def test_bad_model_files_name_the_problem(tmp_path, text, fragment):
     path = tmp_path / "bad.toml"
     path.write_text(text)
     with pytest.raises(SceneError, match=fragment):
-        models.load_any(path)
+        scenes.load(path)
 
 
 def test_data_scenes_still_load_through_the_same_door():
-    assert models.load_any("flyby").name == "flyby"
+    assert scenes.load("flyby").name == "flyby"
     assert "expanding_universe" in models.builtin_names()

@@ -7,8 +7,8 @@ predicted for a long-double seed (5e-20), 1.16-1.20 times later than the float64
 import numpy as np
 import pytest
 
-from orbits.rings import ring_problem
 from orbits.validate import backends
+from orbits.validate.builders import ring_problem
 
 pytestmark = pytest.mark.skipif(not backends.available("heyoka"), reason="heyoka is not installed")
 

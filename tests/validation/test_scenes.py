@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from orbits import predict, scene
-from orbits.scene import SceneError
+from orbits.core.errors import SceneError
 from orbits.validate import backends, run
 
 BUILTIN = scene.builtin_names()

@@ -1,10 +1,6 @@
-"""Section XXIV of the notes (the expanding universe) and the Friedmann models around it.
+"""The Friedmann models around section XXIV of the notes (the expanding universe).
 
 Float64 arrays in SI units (t in s, r in m, gm = G M in m**3/s**2, H in 1/s) that broadcast.
-
-XXIV, Newtonian Einstein-de Sitter (ERRATA #82-84): a shell enclosing the mass M of a uniform, pressureless
-sphere moves outward at the zero-energy speed v = sqrt(2 G M / r), so r(t) = (9 G M t**2 / 2)**(1/3),
-v(t) = (4 G M / (3 t))**(1/3) and H = v / r = 2 / (3 t), with t measured from the big bang.
 
 Friedmann: E(z) = H(z) / H0 = sqrt(Omega_r x**4 + Omega_m x**3 + Omega_k x**2 + Omega_Lambda), x = 1 + z.
 Friedmann picks its method once, at construction: a closed form when one exists (a single component,
@@ -26,69 +22,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from orbits.core._checks import check_finite
 from orbits.core._dd import two_product, two_sum
-from orbits.errors import ConvergenceError, OrbitDomainError
-
-# ---- XXIV: the Newtonian expanding sphere --------------------------------------------------------------
-
-
-def _check_time(t, allow_zero):
-    """Raise OrbitDomainError for t < 0 (before the big bang), NaN, or t = 0 where the quantity is infinite."""
-    t = np.asarray(t, dtype=float)
-    if np.any(np.isnan(t)):
-        raise OrbitDomainError("time since the big bang t = nan s is not a number; allowed [0, inf) s")
-    bad = (t < 0) if allow_zero else (t <= 0)
-    if np.any(bad):
-        value = float(t[bad].flat[0])
-        allowed = "[0, inf) s" if allow_zero else "(0, inf) s: v and H are infinite at the big bang"
-        raise OrbitDomainError(f"time since the big bang t = {value!r} s is outside {allowed}")
-    return t
-
-
-def sphere_radius(t, gm):
-    """r = (9 G M t**2 / 2)**(1/3) (m) of the shell enclosing G M = gm (m3/s2), t (s) after the big bang.
-
-    XXIV.iii, box 5. Accuracy: within 2 ulp (tests/core/test_cosmology.py).
-    """
-    t = _check_time(t, allow_zero=True)
-    return np.cbrt((4.5 * gm) * t * t)
-
-
-def sphere_speed(t, gm):
-    """v = (4 G M / (3 t))**(1/3) (m/s) of that shell at t > 0 (s); XXIV.iv, box 6."""
-    t = _check_time(t, allow_zero=False)
-    return np.cbrt(gm / (0.75 * t))
-
-
-def sphere_hubble_parameter(t):
-    """H = v / r = 2 / (3 t) (1/s) at t > 0 (s) after the big bang; XXIV.iv (Hubble's law v = H r)."""
-    t = _check_time(t, allow_zero=False)
-    return 2.0 / (3.0 * t)
-
-
-def sphere_time(r, gm):
-    """t = sqrt(2 r**3 / (9 G M)) = r sqrt(2 r / (9 G M)) (s) at which the shell reaches r (m); inverse of box 5."""
-    return r * np.sqrt((r + r) / (9.0 * gm))
-
-
-def age_from_hubble(hubble):
-    """Einstein-de Sitter age t = 2 / (3 H) (s) for the Hubble parameter H (1/s); XXIV.iv (1.33e10 yr)."""
-    return 2.0 / (3.0 * hubble)
-
-
-def critical_density(hubble, g):
-    """rho_c = 3 H**2 / (8 pi G) (kg/m3): the density of a flat universe expanding at H (1/s)."""
-    return 3.0 * hubble * hubble / (8.0 * np.pi * g)
-
-
-def sphere_density(t, g):
-    """rho = M / (4 pi r**3 / 3) = 1 / (6 pi G t**2) (kg/m3) of the uniform sphere at t > 0 (s); equals rho_c."""
-    t = _check_time(t, allow_zero=False)
-    return 1.0 / (6.0 * np.pi * g * t * t)
-
-
-# ---- Friedmann models ----------------------------------------------------------------------------------
+from orbits.core._roots import newton_in_bracket
+from orbits.core.checks import check_finite
+from orbits.core.errors import OrbitDomainError
+from orbits.core.quadrature import tanh_sinh
 
 #: Exponent k of E = x**k for each single-component universe (x = 1 + z).
 SINGLE_COMPONENT = {"radiation_only": 2.0, "matter_only": 1.5, "curvature_only": 1.0, "lambda_only": 0.0}
@@ -266,7 +204,7 @@ class Friedmann:
         if math.isinf(self.max_scale_factor):
             return math.inf
         top = np.array([math.log(self.max_scale_factor)])
-        return self.present_age + float(_tanh_sinh(lambda y, d, hi: self._inverse_e_future(y, d), np.zeros(1), top)[0])
+        return self.present_age + float(tanh_sinh(lambda y, d, hi: self._inverse_e_future(y, d), np.zeros(1), top)[0])
 
     # ---- domain checks ----------------------------------------------------------------------------------
     def _redshift(self, z):
@@ -320,7 +258,7 @@ class Friedmann:
             with np.errstate(divide="ignore", invalid="ignore"):
                 return np.where(a > 0, self._power_over_sqrt_p(a, j), 0.0)
 
-        return _tanh_sinh(integrand, np.zeros_like(a_hi), a_hi)
+        return tanh_sinh(integrand, np.zeros_like(a_hi), a_hi)
 
     def _past(self, j, y_lo):
         """int_{y_lo}^0 a**(j+1) dy / sqrt(P(a)), a = e**y, for finite y_lo < 0 (1-D)."""
@@ -329,7 +267,7 @@ class Friedmann:
             a = np.exp(y)
             return self._power_over_sqrt_p(a, j + 1)
 
-        return _tanh_sinh(integrand, y_lo, np.zeros_like(y_lo))
+        return tanh_sinh(integrand, y_lo, np.zeros_like(y_lo))
 
     def _future(self, j, y_hi):
         """int_0^{y_hi} a**(j-1) dy / E(a), a = e**y, for 0 < y_hi <= ln a_max (1-D)."""
@@ -338,7 +276,7 @@ class Friedmann:
         def integrand(y, d, hi):
             return np.exp((j - 1) * y) * self._inverse_e_future(y, (top - hi) + d)
 
-        return _tanh_sinh(integrand, np.zeros_like(y_hi), y_hi)
+        return tanh_sinh(integrand, np.zeros_like(y_hi), y_hi)
 
     def _quadrature_age(self, z):
         """t(z) H0 by quadrature, any valid z."""
@@ -408,7 +346,7 @@ class Friedmann:
             with np.errstate(divide="ignore"):
                 return np.log(age / target[i]), self._log_slope(y, age)
 
-        y = _newton_in_bracket(start, lo[rows], hi[rows], residual)
+        y = newton_in_bracket(start, lo[rows], hi[rows], residual)
         # ln a carries only |y| ulp(1) of a's precision: a last Newton step is applied to a itself.
         f, slope = residual(y, np.arange(y.size))
         with np.errstate(all="ignore"):
@@ -700,105 +638,3 @@ def _flat_scale_factor(tau, omega_m, omega_l):
     large = w > 20.0
     small = ratio * np.cbrt(np.sinh(np.where(large, 0.0, w))) ** 2
     return np.where(large, ratio * np.exp((2.0 / 3.0) * (w - math.log(2.0))), small)
-
-
-# ---- tanh-sinh quadrature and Newton's method ----------------------------------------------------------
-
-_TS_STEP = 0.5  # level-0 step in the tanh-sinh variable s
-_TS_S_MAX = 4.5  # nodes s in [-4.5, 4.5] reach exp(-pi sinh 4.5) ~ 1e-61 of the width from each end
-_TS_LEVELS = 8  # finest step 0.5 / 2**7 (2305 nodes)
-_TS_MIN_LEVEL = 3
-_TS_TOLERANCE = 2.0**-36  # successive levels agree to this: the error then is ~ its square (double exponential)
-_TS_CHUNK = 2048  # elements integrated at once (bounds memory)
-_NEWTON_ITERATIONS = 100
-
-
-@functools.cache
-def _ts_level(level):
-    """Nodes of one tanh-sinh level: (s < 0 mask, fraction q of the width to the nearer end, weight).
-
-    x = lo + width q near lo (s < 0) or hi - width q near hi; dx = width pi cosh(s) q (1 - q) ds, with
-    q = e / (1 + e), e = exp(-pi sinh|s|), computed without cancellation at both ends.
-    """
-    h = _TS_STEP / 2**level
-    n = round(_TS_S_MAX / h)
-    s = np.arange(-n, n + 1) * h if level == 0 else np.arange(-n + 1, n, 2) * h
-    e = np.exp(-np.pi * np.sinh(np.abs(s)))
-    q = e / (1.0 + e)
-    return s < 0, q, np.pi * np.cosh(s) * q * (1.0 - q)
-
-
-def _tanh_sinh(integrand, lo, hi):
-    """int_lo^hi integrand(x, d, hi) dx for 1-D arrays of finite lo <= hi; d = hi - x, exact near hi.
-
-    Levels halve the step until two successive estimates agree to 2**-36 relative (double-exponential
-    convergence then leaves an error near the square of that). Raises ConvergenceError otherwise.
-    """
-    lo, hi = np.broadcast_arrays(np.asarray(lo, dtype=float), np.asarray(hi, dtype=float))
-    out = np.zeros(lo.shape)
-    for start in range(0, lo.size, _TS_CHUNK):
-        rows = slice(start, start + _TS_CHUNK)
-        out[rows] = _tanh_sinh_chunk(integrand, lo[rows], hi[rows])
-    return out
-
-
-def _tanh_sinh_chunk(integrand, lo, hi):
-    width = hi - lo
-    total = np.zeros(lo.shape)
-    estimate = np.zeros(lo.shape)
-    active = width > 0
-    for level in range(_TS_LEVELS):
-        rows = np.flatnonzero(active)
-        if rows.size == 0:
-            return estimate
-        low_side, q, weight = _ts_level(level)
-        w = width[rows, None]
-        x = np.where(low_side, lo[rows, None] + w * q, hi[rows, None] - w * q)
-        d = np.where(low_side, w * (1.0 - q), w * q)
-        with np.errstate(under="ignore"):
-            total[rows] += np.sum(weight * integrand(x, d, hi[rows, None]), axis=-1)
-        new = width[rows] * total[rows] * (_TS_STEP / 2**level)
-        settled = np.abs(new - estimate[rows]) <= _TS_TOLERANCE * np.abs(new)
-        estimate[rows] = new
-        if level >= _TS_MIN_LEVEL:
-            active[rows[settled]] = False
-    if np.any(active):
-        i = np.flatnonzero(active)[0]
-        raise ConvergenceError(
-            f"tanh-sinh quadrature over [{float(lo[i])!r}, {float(hi[i])!r}] did not converge in {_TS_LEVELS} levels "
-            f"(last estimate {float(estimate[i])!r}); the model may be too close to a loitering universe"
-        )
-    return estimate
-
-
-def _newton_in_bracket(y, lo, hi, residual):
-    """Newton's method for an increasing function of y inside [lo, hi], safeguarded as in rtsafe: a step that
-    leaves the bracket or fails to halve the previous one is replaced by bisection.
-
-    residual(y, rows) returns (f, f') at y for those rows. Stops after the step taken from a point where
-    |f| <= 2**-40 (f is a relative residual, so quadratic convergence then leaves y within rounding of the
-    root), or when the bracket has shrunk to rounding (near a turnaround, where f' grows without bound).
-    """
-    active = np.ones(y.shape, dtype=bool)
-    last_step = hi - lo
-    for _ in range(_NEWTON_ITERATIONS):
-        rows = np.flatnonzero(active)
-        if rows.size == 0:
-            return y
-        f, slope = residual(y[rows], rows)
-        lo[rows] = np.where(f <= 0, y[rows], lo[rows])
-        hi[rows] = np.where(f >= 0, y[rows], hi[rows])
-        with np.errstate(all="ignore"):
-            step = -f / slope
-        newton = np.isfinite(slope) & np.isfinite(step) & (np.abs(step) <= 0.5 * last_step[rows])
-        newton &= (y[rows] + step >= lo[rows]) & (y[rows] + step <= hi[rows])
-        new = np.where(newton, y[rows] + np.where(newton, step, 0.0), 0.5 * (lo[rows] + hi[rows]))
-        last_step[rows] = np.abs(new - y[rows])
-        y[rows] = new
-        collapsed = hi[rows] - lo[rows] <= 2.0**-52 * np.maximum(1.0, np.abs(new))
-        active[rows] = ~((newton & (np.abs(f) <= 2.0**-40)) | (f == 0) | collapsed)
-    i = np.flatnonzero(active)[0]
-    raise ConvergenceError(
-        f"scale factor a(t): Newton's method in ln a did not converge in {_NEWTON_ITERATIONS} iterations; "
-        f"last ln a = {float(y[i])!r}, bracket [{float(lo[i])!r}, {float(hi[i])!r}]"
-    )

@@ -14,7 +14,7 @@ by ``import orbits``.
 Pointing it at a real cluster: start ``dask scheduler`` on one machine and ``dask worker tcp://HOST:8786``
 on the others (each with orbits installed), then pass ``address="tcp://HOST:8786"`` (or
 ``orbits validate --sweep --scheduler tcp://HOST:8786``). Measured on this 2-core machine: see
-orbits.bench.bench_validate and the README's Dask section.
+orbits.tools.bench.bench_validate and the README's Dask section.
 """
 
 import contextlib
@@ -22,7 +22,7 @@ import contextlib
 import numpy as np
 
 #: LocalCluster default: two single-threaded workers. They are threads of this process by default:
-#: measured on the built-in scenes (orbits.bench.bench_validate), a sweep on 2 worker threads took
+#: measured on the built-in scenes (orbits.tools.bench.bench_validate), a sweep on 2 worker threads took
 #: 0.44 s (0.28 s of it starting the cluster) against 4.5 s on 2 worker processes (2.1 s to start them,
 #: then each imports orbits and compiles its heyoka integrators again) and 0.13 s sequentially. Processes
 #: pay off for sweeps of many long scenes; pass processes=True, or use a real cluster.

@@ -1,8 +1,12 @@
-"""Input checks shared by the numeric core: each error names the quantity, value and allowed range."""
+"""Input rules on float64 arrays, the one home of finiteness and positivity: every layer above calls these.
+
+Each error is an OrbitDomainError naming the quantity, its first offending value, the allowed range and the unit.
+The unit-aware rules (quantities, strings, primaries, size elements) build on these in orbits.inputs.
+"""
 
 import numpy as np
 
-from orbits.errors import OrbitDomainError
+from orbits.core.errors import OrbitDomainError
 
 
 def check_finite(x, name, unit):
@@ -24,4 +28,17 @@ def check_eccentricity(e, low, high, low_open, high_open, conic, hint=""):
         raise OrbitDomainError(
             f"eccentricity e = {float(value)!r} is outside {lo_br}{low}, {high}{hi_br}, "
             f"where the {conic} Kepler equation is defined{hint}"
+        )
+
+
+def require_positive(x, name, unit):
+    """Raise OrbitDomainError unless every x is finite and > 0; the message names x, its value, (0, inf) and unit."""
+    x = np.asarray(x, dtype=float)
+    bad = ~(np.isfinite(x) & (x > 0))
+    if np.any(bad):
+        value = float(x[bad].flat[0])
+        if not np.isfinite(value):
+            raise OrbitDomainError(f"{name} = {value!r} {unit} is not finite: it must be positive, in (0, inf) {unit}")
+        raise OrbitDomainError(
+            f"{name} = {value!r} {unit} is outside the allowed range (0, inf) {unit}: it must be positive"
         )

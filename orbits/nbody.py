@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from orbits.errors import OrbitDomainError
+from orbits.core.errors import OrbitDomainError
 
 
 def _frozen_float_array(name: str, value, shape: tuple[int, ...] | None = None) -> np.ndarray:

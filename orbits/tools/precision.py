@@ -7,7 +7,7 @@ close hyperbolic flyby (e = 1.5, from -0.8 to +0.8 of the asymptotic true anomal
 the Earth-Moon system (mu = 0.012150585609624, 100 periods).
 
 The error of a run is max over bodies of |r - r_ref| / 1 at the time the run actually reached (steps x
-dt for WHFast), where r_ref comes from orbits.reference (mpmath at >= 60 digits) for the Kepler, flyby
+dt for WHFast), where r_ref comes from orbits.tools.reference (mpmath at >= 60 digits) for the Kepler, flyby
 and binary problems, and from the exact rigid rotation, evaluated in mpmath, for the L4 problem. It is
 never another integrator. Wall times count integration only; compile and setup times are reported apart.
 """
@@ -20,11 +20,11 @@ from dataclasses import dataclass, field
 import mpmath
 import numpy as np
 
-from orbits import reference
 from orbits.core import anomalies, elements
 from orbits.core.propagate import propagate
+from orbits.nbody import NBodyProblem
+from orbits.tools import reference
 from orbits.validate import backends
-from orbits.validate.problem import NBodyProblem
 
 EARTH_MOON_MU = 0.012150585609624  # m / (M + m), JPL DE430 GM values
 EXTRA_TURN = 0.37  # runs end 0.37 period past the round number: a whole number of periods would return the

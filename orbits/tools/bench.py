@@ -5,7 +5,7 @@
   the NumPy fallback), heyoka's kepE cfunc (one thread and every core), rebound.M_to_E, a plain NumPy
   Newton solver, exoplanet-core and pykep.
 - bench_propagate: two-body propagation of elliptic and mixed-conic states, throughput and worst
-  relative position and velocity error against mpmath (orbits.reference), for orbits, heyoka's
+  relative position and velocity error against mpmath (orbits.tools.reference), for orbits, heyoka's
   lagrange_prop cfunc, a plain NumPy f-and-g + Newton baseline, pykep and hapsira.
 - bench_api: the unit-aware API (orbits.Orbit) against the float64 core on the same inputs.
 - bench_cli: cold start of the command line, as the median of repeated fresh processes.
@@ -538,8 +538,8 @@ def _conic_states(name, rng, e):
 
 
 def _propagation_references(states, n_ref):
-    """[(r, v)] as mpf lists from orbits.reference.propagate for the first n_ref states."""
-    from orbits.reference import propagate
+    """[(r, v)] as mpf lists from orbits.tools.reference.propagate for the first n_ref states."""
+    from orbits.tools.reference import propagate
 
     return [propagate(states.r0[i], states.v0[i], MU_EARTH, states.dt[i]) for i in range(min(n_ref, states.dt.size))]
 
@@ -711,7 +711,7 @@ def _best_time(call, repeats):
 
 def bench_propagate(n=1_000_000, n_ref=200, seed=0, repeats=3):
     """Time and check every available two-body propagator on the "elliptic" and "mixed" sets (see
-    _propagation_sets). Errors are relative to |r| and |v| of the mpmath reference (orbits.reference);
+    _propagation_sets). Errors are relative to |r| and |v| of the mpmath reference (orbits.tools.reference);
     timings exclude preparing the inputs in the form each library takes.
     Returns one PropagateRow per (method, data set)."""
     loaded = _load(_PROPAGATORS)
@@ -903,12 +903,9 @@ def bench_validate(scenes=None, backend_names=("rebound", "heyoka"), sweep=True)
     """Time `orbits validate` stage by stage on the built-in data and model scenes (or `scenes`):
     sequentially in this process, scene by scene, then (sweep=True, dask installed) as validate_sweep
     on a 2-worker LocalCluster of threads and of processes, whole runs only (cluster start-up included)."""
-    from orbits import scene as scene_module
-    from orbits.validate import models
-    from orbits.validate.run import validate
+    from orbits.validate import builtin_names, load, validate
 
-    names = scene_module.builtin_names() + models.builtin_names()
-    scenes = scenes or [models.load_any(name) for name in names]
+    scenes = scenes or [load(name) for name in builtin_names()]
     rows = []
     start_all = time.perf_counter()
     for scene in scenes:
@@ -923,7 +920,7 @@ def bench_validate(scenes=None, backend_names=("rebound", "heyoka"), sweep=True)
 
 def _sweep_rows(scenes, backend_names):
     try:
-        from orbits import distributed
+        from orbits.tools import distributed
     except ImportError:
         return []
     rows = []

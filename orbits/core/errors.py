@@ -1,0 +1,26 @@
+"""Every exception orbits raises on purpose, in one module at the bottom of the house.
+
+The numeric core raises them, so they live in the core and import nothing; the unit-aware library, the
+scene loader, the validation layer and the command line all raise these same types. Every message names
+the quantity, its value, the allowed range and the unit.
+"""
+
+
+class OrbitsError(Exception):
+    """Base class of every error orbits raises on purpose."""
+
+
+class OrbitDomainError(OrbitsError, ValueError):
+    """A value lies outside the range where the requested quantity is defined (the input rules' error)."""
+
+
+class DegenerateOrbitError(OrbitDomainError):
+    """The orbit has no well-defined plane or orientation (radial orbit, h = 0)."""
+
+
+class ConvergenceError(OrbitsError, RuntimeError):
+    """An iterative solver hit its iteration cap; the message carries the inputs and last iterate."""
+
+
+class SceneError(OrbitsError, ValueError):
+    """A scene file or dictionary is invalid; the message names the source, the field and what is allowed."""

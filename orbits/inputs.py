@@ -1,0 +1,190 @@
+"""Input rules, in one home: what the API, the scene loader and the command line accept, and the one error.
+
+Every rule raises OrbitDomainError (a ValueError) whose message names the quantity, the value, what is allowed
+and the unit; a bare number where a dimensional Quantity is expected is a TypeError (orbits.units.to_si).
+The rules on plain float arrays (finiteness, positivity) live one floor down, in orbits.core.checks.
+
+- Quantity strings: "VALUE UNIT" ("7000 km", "1 AU", "3.986e14 m3 / s2"), checked against a kind of quantity
+  ("length", "speed", ...); vectors "X,Y,Z UNIT"; angles, where a bare number means degrees.
+- Primaries: a catalogue body (or its name, any case), a mass or a GM, to G M in m**3/s**2.
+- Size elements: exactly one of a, p, q with e, to the semi-latus rectum p in m.
+"""
+
+import warnings
+
+import astropy.units as u
+import numpy as np
+
+from orbits import units
+from orbits.constants import BODIES, Body, G, body
+from orbits.core.checks import check_finite, require_positive
+from orbits.core.errors import OrbitDomainError
+
+#: the SI unit of each kind of quantity a string may hold, and a unit to suggest when the unit is missing
+KINDS = {
+    "length": (units.M, "km"),
+    "mass": (units.KG, "kg"),
+    "time": (units.S, "s"),
+    "angle": (units.RAD, "deg"),
+    "speed": (units.M_PER_S, "km/s"),
+    "acceleration": (units.M / units.S**2, "m/s2"),
+    "gravitational parameter": (units.M3_PER_S2, "m3 / s2"),
+    "rate": (units.S**-1, "km / s / Mpc"),
+    "dimensionless": (u.one, ""),
+}
+
+
+def _kind(kind: str):
+    try:
+        return KINDS[kind]
+    except KeyError:
+        raise ValueError(f"unknown kind of quantity {kind!r}; known: {', '.join(KINDS)}") from None
+
+
+def parse_quantity(text: str, kind: str, name: str, bare_unit: u.UnitBase | None = None) -> u.Quantity:
+    """Quantity read from "VALUE UNIT" and checked to be a finite `kind` ("length", "speed", ... see KINDS).
+
+    A bare number takes `bare_unit` when one is given (angles: degrees) and is an error otherwise; a
+    dimensionless kind takes plain numbers only.
+    """
+    si, example = _kind(kind)
+    if not isinstance(text, str):
+        raise OrbitDomainError(f"{name} = {text!r} must be a string like '1.5 {example or 1}'")
+    try:
+        with warnings.catch_warnings():  # "km/s/Mpc" reads as km / (s Mpc), as meant; astropy warns of the slashes
+            warnings.simplefilter("ignore", u.UnitsWarning)
+            value = u.Quantity(text)
+    except (TypeError, ValueError):
+        raise OrbitDomainError(f"{name}: cannot read {text!r} as a quantity; write e.g. '7000 km'") from None
+    if value.unit == u.one and si != u.one:
+        if bare_unit is None:
+            raise OrbitDomainError(f"{name}: {text!r} has no unit; write e.g. '{text} {example}'")
+        value = value.value * bare_unit
+    if not value.unit.is_equivalent(si):
+        if si == u.one:
+            raise OrbitDomainError(f"{name}: {text!r} must be a plain number")
+        raise OrbitDomainError(f"{name}: {text!r} is a {value.unit.physical_type}, not a {kind}")
+    check_finite(value.value, name, value.unit.to_string())
+    return value
+
+
+def parse_angle(text: str, name: str) -> u.Quantity:
+    """Angle from "30 deg" or "0.5 rad"; a bare number is read as degrees (the calculator's convention)."""
+    return parse_quantity(text, "angle", name, bare_unit=u.deg)
+
+
+def parse_vector(text: str, kind: str, name: str) -> u.Quantity:
+    """3-vector Quantity from "X,Y,Z UNIT" (e.g. "7000,0,0 km"), finite and of the given kind."""
+    if not isinstance(text, str):
+        raise OrbitDomainError(f"{name} = {text!r} must be a string 'X,Y,Z UNIT', e.g. '7000,0,0 km'")
+    numbers, _, unit_text = text.strip().partition(" ")
+    try:
+        values = np.array([float(x) for x in numbers.split(",")])
+    except ValueError:
+        raise OrbitDomainError(f"{name}: cannot read {text!r}; write e.g. '7000,0,0 km'") from None
+    if values.shape != (3,):
+        raise OrbitDomainError(f"{name}: {text!r} needs three comma-separated components, e.g. '7000,0,0 km'")
+    check_finite(values, name, unit_text)
+    return parse_quantity(f"1 {unit_text}", kind, name) * values
+
+
+def parse_primary(text: str) -> Body | u.Quantity:
+    """A primary from a string: a catalogue body name (any case), a mass ("5.97e24 kg") or a GM ("3.986e14 m3 / s2")."""
+    named = find_body(text)
+    if named is not None:
+        return named
+    try:
+        value = u.Quantity(text)
+    except (TypeError, ValueError):
+        raise OrbitDomainError(
+            f"primary: {text!r} is neither a known body ({', '.join(BODIES)}) nor a mass or GM with units"
+        ) from None
+    if not (value.unit.is_equivalent(units.KG) or value.unit.is_equivalent(units.M3_PER_S2)):
+        raise OrbitDomainError(f"primary: {text!r} must be a mass (kg) or a GM (m3 / s2)")
+    return value
+
+
+def find_body(name: str) -> Body | None:
+    """The catalogue body called `name` (any case), or None."""
+    try:
+        return body(name)
+    except KeyError:
+        return None
+
+
+def gravitational_parameter(value, name: str = "primary mass M") -> np.ndarray:
+    """G M (m3/s2) of a mass given as a Body, a body name, a mass (kg) or a GM (m3/s2) Quantity; finite, > 0."""
+    if isinstance(value, str):
+        value = body(value)
+    if isinstance(value, Body):
+        return np.asarray(value.gm, dtype=float)
+    if isinstance(value, u.Quantity) and value.unit.is_equivalent(units.M3_PER_S2):
+        gm = units.to_si(value, units.M3_PER_S2, name)
+        require_positive(gm, name, "m3 / s2")
+        return gm
+    mass = units.to_si(value, units.KG, name)
+    require_positive(mass, name, "kg")
+    return G * mass
+
+
+def positive(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
+    """float64 array of a Quantity in `unit` (SI), checked finite and > 0."""
+    si = units.to_si(value, unit, name)
+    require_positive(si, name, unit.to_string())
+    return si
+
+
+def semi_latus_rectum(e: np.ndarray, a=None, p=None, q=None) -> np.ndarray:
+    """p (m) from e and exactly one size element: a (length, not on the parabola), p or q.
+
+    p as given, p = q (1 + e), or p = a (1 - e) (1 + e), with a > 0 for ellipses and a < 0 for hyperbolas.
+    """
+    given = [name for name, value in (("a", a), ("p", p), ("q", q)) if value is not None]
+    if len(given) != 1:
+        raise TypeError(f"give exactly one size element of a, p, q; got {given or 'none'}")
+    if p is not None:
+        return positive(p, units.M, "semi-latus rectum p").copy()  # to_si may return a view of the caller's data
+    if q is not None:
+        return positive(q, units.M, "periapsis distance q") * (1.0 + e)
+    value = units.to_si(a, units.M, "semi-major axis a")
+    size = value * (1.0 - e) * (1.0 + e)
+    if not ((size > 0.0) & (size < np.inf)).all():  # a valid a gives 0 < size < inf: check in detail otherwise
+        _check_semi_major_axis(value, e)
+    return size
+
+
+def _check_semi_major_axis(value, e):
+    """Raise OrbitDomainError for the first non-finite a, for e = 1, or for an a of the wrong sign for its e
+    (a > 0 iff e < 1)."""
+    check_finite(value, "semi-major axis a", "m")
+    e = np.asarray(e, dtype=float)
+    if (e == 1.0).any():
+        raise OrbitDomainError("a parabola (e = 1) has no finite a: give q or p instead of a")
+    wrong = np.where(e < 1.0, value <= 0.0, value >= 0.0)
+    if wrong.any():
+        i = tuple(np.argwhere(np.broadcast_to(wrong, np.broadcast_shapes(value.shape, e.shape)))[0])
+        bad_a, bad_e = np.broadcast_to(value, wrong.shape)[i], np.broadcast_to(e, wrong.shape)[i]
+        rule = "a > 0 for a bound orbit (e < 1)" if bad_e < 1 else "a < 0 for a hyperbola (e > 1)"
+        raise OrbitDomainError(
+            f"semi-major axis a = {float(bad_a)!r} m with e = {float(bad_e)!r}: need {rule} "
+            f"(need a > 0 for e < 1 and a < 0 for e > 1)"
+        )
+
+
+def eccentricity(e) -> np.ndarray:
+    """float64 array of eccentricities (plain numbers or dimensionless Quantities), each finite and >= 0."""
+    e = units.to_number(e, "eccentricity e")
+    if not np.isfinite(e).all() or (e < 0).any():
+        bad = e[~(np.isfinite(e) & (e >= 0))].flat[0]
+        raise OrbitDomainError(f"eccentricity e = {float(bad)!r} is outside [0, inf)")
+    return e
+
+
+def names(text: str | None) -> list[str] | None:
+    """Comma-separated names ("period,semi_major_axis") as a list; None for None; an error if none is given."""
+    if text is None:
+        return None
+    listed = [n.strip() for n in text.split(",") if n.strip()]
+    if not listed:
+        raise OrbitDomainError(f"names = {text!r}: give at least one comma-separated name")
+    return listed

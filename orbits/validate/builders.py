@@ -1,0 +1,216 @@
+"""N-body problems built from the models' closed forms, for the model scenes of `orbits validate`.
+
+Each builder returns an NBodyProblem in G = 1 code units and what the model predicts the integration should do
+(an Expectation record, or the analytic positions). The domain objects (RestrictedThreeBody, Ring,
+ExpandingSphere) answer in closed form; these builders set the same physics up for rebound and heyoka.
+"""
+
+import math
+import operator
+from dataclasses import dataclass
+
+import numpy as np
+
+from orbits.core import lagrange, rings, sphere
+from orbits.core.checks import require_positive
+from orbits.core.errors import OrbitDomainError
+from orbits.nbody import NBodyProblem
+from orbits.rings import BREAKUP_DEVIATION, ROUND_OFF_SEED
+
+POINTS = lagrange.POINTS
+
+
+# ---- test particles at the Lagrange points ---------------------------------------------------------------------
+@dataclass(frozen=True, eq=False)
+class LagrangeExpectation:
+    """What the test particle `index` of a lagrange_test_particles_problem should do. Code units: r = 1,
+    G (M + m) = 1, so n = 1 and the binary's period is 2 pi.
+
+    `position` is the rotating-frame equilibrium; `offset` the initial displacement along the growing mode
+    (0 for linearly stable points, which start on the point); `growth_rate` the predicted e-folding rate
+    (0 if linearly stable); `jacobi_constant` that of the initial state, conserved exactly by the motion.
+    """
+
+    point: str
+    index: int
+    mass_ratio: float
+    position: np.ndarray
+    offset: float
+    growth_rate: float
+    jacobi_constant: float
+
+    def deviations(self, positions):
+        """|r_rot - position| at each output of integrated (K, N, 3) positions, the rotating frame being the one
+        the integrated primaries (bodies 0 and 1) define, so their own phase error does not count."""
+        particle, primary, secondary = positions[:, self.index], positions[:, 0], positions[:, 1]
+        r_rot = lagrange.rotating_coordinates(particle, primary, secondary, self.mass_ratio)
+        return np.linalg.norm(r_rot - self.position, axis=-1)
+
+    def jacobi_constants(self, positions, velocities):
+        """The particle's Jacobi constant at each output, from inertial (K, N, 3) states about the barycentre."""
+        return lagrange.jacobi_constant_inertial(
+            positions[:, self.index], velocities[:, self.index], positions[:, 0], positions[:, 1], self.mass_ratio
+        )
+
+
+def lagrange_test_particles_problem(mass_ratio, times, points=POINTS, offset=0.0):
+    """(NBodyProblem, [LagrangeExpectation]): a circular binary (G M = 1 - mu at (-mu, 0, 0), G m = mu at
+    (1 - mu, 0, 0), n = 1, period 2 pi) with one massless test particle per point of `points`, and what each
+    should do. Unstable points start `offset` (units of r) along their growing mode; stable ones on the point.
+    `times` are output times in code units."""
+    mu = float(lagrange.check_mass_ratio(mass_ratio))
+    r_rot, modes = lagrange.positions(mu), lagrange.growing_mode(mu)
+    rates = lagrange.growth_rates(mu)
+    positions = [[-mu, 0.0, 0.0], [1.0 - mu, 0.0, 0.0]]
+    velocities = [[0.0, -mu, 0.0], [0.0, 1.0 - mu, 0.0]]
+    expectations = []
+    for point in points:
+        k = POINTS.index(point)
+        r0, v0 = r_rot[k] + offset * modes[k, :3], offset * modes[k, 3:]
+        r_in, v_in = lagrange.rotating_to_inertial(r0, v0, 0.0)
+        positions.append(r_in)
+        velocities.append(v_in)
+        jacobi = float(lagrange.jacobi_constant(r0, v0, mu))
+        moved = offset if rates[k] > 0.0 else 0.0
+        index = len(positions) - 1
+        expectations.append(LagrangeExpectation(point, index, mu, r_rot[k], moved, float(rates[k]), jacobi))
+    gm = [1.0 - mu, mu] + [0.0] * len(expectations)
+    problem = NBodyProblem(gm=gm, positions=positions, velocities=velocities, n_active=2, times=times)
+    return problem, expectations
+
+
+def fitted_growth_rate(times, amplitudes, low=1e-9, high=1e-4):
+    """Least-squares slope of ln(amplitude) against time over the samples with low <= amplitude <= high:
+    the measured e-folding rate of an exponential departure (units of 1/time)."""
+    times, amplitudes = np.asarray(times, dtype=float), np.asarray(amplitudes, dtype=float)
+    window = (amplitudes >= low) & (amplitudes <= high)
+    if np.count_nonzero(window) < 3:
+        raise OrbitDomainError(f"fewer than 3 samples with {low} <= amplitude <= {high}: cannot fit a growth rate")
+    slope, _ = np.polyfit(times[window], np.log(amplitudes[window]), 1)
+    return float(slope)
+
+
+# ---- a ring integrated from its exact initial state ---------------------------------------------------------
+@dataclass(frozen=True, eq=False)
+class RingExpectation:
+    """What a ring_problem should do. Code units: r = 1, omega = 1 (period 2 pi). `first_body` is the index of
+    ring body 0 (1 when a central mass is body 0); `growth_rate` (0 if stable), `mode` (None if stable) and
+    `breakup_time` (inf if stable) are the linear predictions for a round-off seed of ROUND_OFF_SEED."""
+
+    n: int
+    first_body: int
+    growth_rate: float
+    mode: int | None
+    breakup_time: float
+
+    def shape_deviations(self, positions):
+        """Largest chord error |d_kl - 2 sin(pi |k - l| / n)| of the ring at each output of (K, N, 3) positions."""
+        return rings.shape_deviation(positions[:, self.first_body :], 1.0)
+
+    def measured_breakup_time(self, times, positions, level=BREAKUP_DEVIATION):
+        """First output time at which the shape deviation reaches `level`; inf if it never does."""
+        reached = np.flatnonzero(self.shape_deviations(positions) >= level)
+        return float(times[reached[0]]) if reached.size else math.inf
+
+
+def ring_problem(n, times, central_ratio=0.0, phase=0.0, extended=False):
+    """(NBodyProblem, RingExpectation): n bodies of G m = 1 / (beta + S_n / 4) on the unit circle at
+    omega = 1 (angle phase + 2 pi k / n), preceded by a central body of G M = beta G m when beta = M / m > 0;
+    `times` in code units. The state is exact to rounding, so round-off alone seeds any instability.
+
+    extended=True builds the state in long double (for heyoka's fp_type="long double"): the seed is then
+    long double round-off, ROUND_OFF_SEED scaled by the ratio of the two machine epsilons (about 5e-20), and
+    the predicted break-up later by ln(1e-16 / 5e-20) / rate."""
+    n = rings.check_count(n)
+    beta = float(central_ratio)
+    rate, mode = rings.growth_rate(n, beta)
+    if extended:
+        masses, positions, velocities = _long_double_ring(n, beta, phase)
+        seed = ROUND_OFF_SEED * float(np.finfo(np.longdouble).eps / np.finfo(np.float64).eps)
+        problem = NBodyProblem(gm=masses, positions=positions, velocities=velocities, n_active=masses.size,
+                               times=times)
+        breakup = float(rings.breakup_time(rate, seed, BREAKUP_DEVIATION))
+        return problem, RingExpectation(n, int(beta > 0.0), rate, mode, breakup)
+    gm = 1.0 / (beta + 0.25 * rings.csc_sum(n))
+    positions, velocities = rings.state_vectors(n, 1.0, 1.0, phase)
+    masses = np.full(n, gm)
+    if beta > 0.0:
+        positions, velocities = np.vstack([np.zeros(3), positions]), np.vstack([np.zeros(3), velocities])
+        masses = np.concatenate([[beta * gm], masses])
+    problem = NBodyProblem(gm=masses, positions=positions, velocities=velocities, n_active=masses.size, times=times)
+    breakup = float(rings.breakup_time(rate, ROUND_OFF_SEED, BREAKUP_DEVIATION))
+    return problem, RingExpectation(n, int(beta > 0.0), rate, mode, breakup)
+
+
+def _long_double_ring(n, beta, phase):
+    """(gm, positions, velocities) of ring_problem's state computed in long double (x87: 64-bit mantissa)."""
+    one = np.longdouble(1)
+    pi = 4 * np.arctan(one)
+    k = np.arange(n, dtype=np.longdouble)
+    theta = np.longdouble(phase) + 2 * pi * k / n
+    csc = np.sort(1 / np.sin(pi * np.arange(1, n, dtype=np.longdouble) / n))
+    gm = one / (np.longdouble(beta) + np.sum(csc) / 4)
+    zeros = np.zeros(n, dtype=np.longdouble)
+    positions = np.stack([np.cos(theta), np.sin(theta), zeros], axis=-1)
+    velocities = np.stack([-np.sin(theta), np.cos(theta), zeros], axis=-1)
+    masses = np.full(n, gm)
+    if beta > 0.0:
+        origin = np.zeros((1, 3), dtype=np.longdouble)
+        positions, velocities = np.vstack([origin, positions]), np.vstack([origin, velocities])
+        masses = np.concatenate([[np.longdouble(beta) * gm], masses])
+    return masses, positions, velocities
+
+
+# ---- the notes' expanding sphere (XXIV) ----------------------------------------------------------------------
+def _fibonacci_directions(n):
+    """n unit vectors spread evenly over the sphere (golden-angle spiral), shape (n, 3)."""
+    k = np.arange(n) + 0.5
+    z = 1.0 - 2.0 * k / n
+    phi = k * math.pi * (3.0 - math.sqrt(5.0))
+    rho = np.sqrt((1.0 - z) * (1.0 + z))
+    return np.stack([rho * np.cos(phi), rho * np.sin(phi), z], axis=-1)
+
+
+def expanding_sphere_problem(n_shells=8, *, inner_radius=1.0, outer_radius=4.0, duration=20.0, n_times=11):
+    """(NBodyProblem, analytic positions) for the notes' expanding sphere (XXIV) as a validation scene.
+
+    Code units, G = 1: a central mass gm = 1 at rest at the origin (body 0), and n_shells test particles
+    (bodies 1..n) at radii spaced evenly from inner_radius to outer_radius along directions spread over the
+    sphere, each moving radially outward at the zero-energy speed sqrt(2 / r). Radial orbits have h = 0,
+    which the N-body integrators handle. Shell i started at its own big bang, t0_i = sqrt(2 r_i**3 / 9) before
+    the integration starts, so at integration time tau its radius is (9 (t0_i + tau)**2 / 2)**(1/3) and its
+    Hubble parameter 2 / (3 (t0_i + tau)). Output times are n_times evenly spaced in [0, duration].
+
+    Returned positions have shape (n_times, n_shells + 1, 3). To read physical units, pick a length L and a
+    mass M: lengths scale by L, times by sqrt(L**3 / (G M)) and speeds by sqrt(G M / L).
+    """
+    n = _count(n_shells, "n_shells", 1)
+    steps = _count(n_times, "n_times", 2)
+    for value, name in ((inner_radius, "inner_radius"), (outer_radius, "outer_radius"), (duration, "duration")):
+        require_positive(np.asarray(value, dtype=float), name, "(code units)")
+    if outer_radius < inner_radius:
+        raise OrbitDomainError(f"outer_radius = {outer_radius!r} is below inner_radius = {inner_radius!r}")
+    radii = np.linspace(inner_radius, outer_radius, n)
+    directions = _fibonacci_directions(n)
+    times = np.linspace(0.0, duration, steps)
+    problem = NBodyProblem(
+        gm=np.concatenate(([1.0], np.zeros(n))),
+        positions=np.vstack([np.zeros(3), radii[:, None] * directions]),
+        velocities=np.vstack([np.zeros(3), np.sqrt(2.0 / radii)[:, None] * directions]),
+        n_active=1,
+        times=times,
+    )
+    t_big_bang = sphere.sphere_time(radii, 1.0)
+    shells = sphere.sphere_radius(t_big_bang + times[:, None], 1.0)[..., None] * directions
+    return problem, np.concatenate([np.zeros((steps, 1, 3)), shells], axis=1)
+
+
+def _count(value, name, minimum):
+    """An integer >= minimum (bool rejected), or OrbitDomainError."""
+    try:
+        count = operator.index(value)
+    except TypeError:
+        raise OrbitDomainError(f"{name} = {value!r} is not an integer") from None
+    if isinstance(value, bool) or count < minimum:
+        raise OrbitDomainError(f"{name} = {value!r} is outside the allowed range [{minimum}, inf) (an integer)")
+    return count

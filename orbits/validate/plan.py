@@ -1,0 +1,110 @@
+"""What every scene hands to the validation run: one interface for data scenes and model scenes.
+
+A scene of either kind is turned into a Plan by `plan(scene)`, a single-dispatch function: each kind registers
+its own planner where it is defined (orbits.validate.scenes for data scenes, orbits.validate.models for model
+scenes). The run then treats every plan alike: integrate `problem` with each backend, convert the states back
+with `code_units`, compute the position residuals once, and gather each backend's Measurements into Checks.
+"""
+
+import functools
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from orbits.nbody import NBodyProblem, NBodyResult
+
+#: how a check's error is formed from its measured value: |measured - predicted| / |predicted| ("relative error"),
+#: or the measured value itself, which is already a drift from an initial value ("relative drift", "absolute drift")
+KINDS = ("relative error", "relative drift", "absolute drift")
+
+
+@dataclass(frozen=True)
+class CodeUnits:
+    """Scale factors from the scene's units to G = 1 code units: length (m), GM (m3/s2), time (s), speed (m/s)."""
+
+    length: float
+    gm: float
+
+    @property
+    def time(self) -> float:
+        """Time unit sqrt(length**3 / gm) (s)."""
+        return float(np.sqrt(self.length**3 / self.gm))
+
+    @property
+    def speed(self) -> float:
+        """Speed unit length / time (m/s)."""
+        return self.length / self.time
+
+    def trajectory(self, result: NBodyResult) -> "Trajectory":
+        """The states of an NBodyResult in the scene's units."""
+        return Trajectory(result.times * self.time, result.positions * self.length, result.velocities * self.speed)
+
+
+#: model scenes are posed in code units already
+CODE = CodeUnits(1.0, 1.0)
+
+
+@dataclass(frozen=True, eq=False)
+class Trajectory:
+    """States from one backend in the scene's units: times (K,), positions and velocities (K, N, 3)."""
+
+    times: np.ndarray
+    positions: np.ndarray
+    velocities: np.ndarray
+
+
+@dataclass(frozen=True)
+class Measurement:
+    """One quantity measured on one backend's trajectory, with its prediction and how it is judged.
+
+    `predicted` is the analytic value (a "relative error" check) or the drift of the closed-form states (None if
+    the scene has none); `measured` is the backend's value, or its drift for the two drift kinds.
+    """
+
+    quantity: str
+    unit: str
+    predicted: float | None
+    measured: float
+    tolerance: float
+    kind: str
+
+    def __post_init__(self) -> None:
+        if self.kind not in KINDS:
+            raise ValueError(f"kind = {self.kind!r}; allowed: {', '.join(KINDS)}")
+
+    @property
+    def error(self) -> float:
+        """|measured - predicted| / |predicted| for a relative error; the measured drift otherwise."""
+        if self.kind == "relative error":
+            return abs(self.measured - self.predicted) / abs(self.predicted)
+        return self.measured
+
+
+@dataclass(frozen=True, eq=False)
+class Plan:
+    """Everything the run needs to validate one scene.
+
+    `problem` is posed in code units; `residuals(trajectory)` gives the (K,) position error at `residual_times`
+    relative to the scene's length scale (None when positions are not predicted); `measure(trajectory)` gives the
+    scene's other Measurements, in the same order for every backend.
+    """
+
+    name: str
+    description: str
+    problem: NBodyProblem
+    code_units: CodeUnits
+    predict_seconds: float
+    residual_times: np.ndarray
+    residuals: Callable[[Trajectory], np.ndarray] | None
+    measure: Callable[[Trajectory], list[Measurement]]
+    positions_tolerance: float
+
+
+@functools.singledispatch
+def plan(scene) -> Plan:
+    """The Plan of a scene; each scene kind registers its planner with `@plan.register`."""
+    raise TypeError(
+        f"cannot validate a {type(scene).__name__}: pass a scene from orbits.validate.scenes.load "
+        f"(a data scene or a model scene)"
+    )
