@@ -2,10 +2,18 @@
 
 import functools
 import sys
+from collections.abc import Callable
 from enum import StrEnum
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated, ParamSpec, TypeVar
 
 import typer
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+_P = ParamSpec("_P")
+_R = TypeVar("_R")
 
 
 class Format(StrEnum):
@@ -33,7 +41,7 @@ PlotOption = Annotated[
 ]
 
 
-def save_plot(draw, path):
+def save_plot(draw: "Callable[[], tuple[Figure, Axes]]", path: str) -> None:
     """Draw with `draw()` -> (fig, ax) on a non-interactive backend and save to `path` atomically."""
     try:
         import matplotlib
@@ -46,14 +54,14 @@ def save_plot(draw, path):
     save(fig, path)
 
 
-def reports_errors(command):
+def reports_errors(command: Callable[_P, _R]) -> Callable[_P, _R]:
     """Turn the library's input errors into one line on stderr and exit status 2."""
 
     @functools.wraps(command)
     def wrapper(*args, **kwargs):
         import astropy.units as u
 
-        from orbits.core.errors import OrbitsError
+        from orbits import OrbitsError
 
         try:
             return command(*args, **kwargs)

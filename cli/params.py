@@ -1,9 +1,14 @@
 """Command-line spellings of the library's input rules (orbits.inputs): the options' names, nothing more."""
 
+from typing import TYPE_CHECKING
+
 from orbits.inputs import parse_angle
 
+if TYPE_CHECKING:
+    from astropy.units import Quantity
 
-def orientation(inc, raan, argp, nu):
+
+def orientation(inc: str, raan: str, argp: str, nu: str) -> "dict[str, Quantity]":
     """{inc, raan, argp, nu} as angle Quantities from the shared element options (bare numbers are degrees)."""
     return {
         "inc": parse_angle(inc, "--inc"),

@@ -1,14 +1,19 @@
 """Rendering of calculator results: a rich table, or JSON mapping each name to {"value", "unit"}."""
 
 import json
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
 
+if TYPE_CHECKING:
+    from astropy.units import Quantity
 
-def to_json(quantities):
+
+def to_json(quantities: "Mapping[str, Quantity]") -> str:
     """JSON text {name: {"value": number or nested list, "unit": str}}."""
     out = {}
     for name, q in quantities.items():
@@ -24,7 +29,7 @@ def _format(value):
     return np.array2string(value, precision=16, max_line_width=100)
 
 
-def table(title, quantities):
+def table(title: str, quantities: "Mapping[str, Quantity]") -> None:
     """Print a two-column table of quantities with their units."""
     grid = Table(title=title)
     grid.add_column("quantity", style="cyan")
@@ -35,7 +40,7 @@ def table(title, quantities):
     Console().print(grid)
 
 
-def emit(title, quantities, fmt):
+def emit(title: str, quantities: "Mapping[str, Quantity]", fmt: str) -> None:
     """Print quantities in the chosen format ("table" or "json")."""
     if fmt == "json":
         print(to_json(quantities))
@@ -53,7 +58,7 @@ def _wide_console():
     return console if console.is_terminal else Console(width=140)
 
 
-def validation_report(data):
+def validation_report(data: dict[str, Any]) -> None:
     """Print a validation report (the dict of ValidationReport.to_dict) as one table per scene."""
     console = _wide_console()
     for scene in data["scenes"]:
@@ -90,7 +95,7 @@ def validation_report(data):
     console.print(f"\n{verdict} ({len(data['scenes'])} scenes)")
 
 
-def precision_tables(data):
+def precision_tables(data: dict[str, Any]) -> None:
     """Print the work-precision summary: per problem, each method's best error and its fastest run at target."""
     console = _wide_console()
     grid = Table(title=f"work-precision: best error, and the fastest run reaching {data['target']:.0e}")

@@ -25,7 +25,7 @@ _HOMES = {
     "max_elongation": "orbits.escape",
     "Cosmology": "orbits.cosmology",
     "ExpandingSphere": "orbits.cosmology",
-    "anomalies": "orbits.anomalies",
+    "anomalies": "orbits.kepler",
     "BODIES": "orbits.constants",
     "G": "orbits.constants",
     "Body": "orbits.constants",

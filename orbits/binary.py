@@ -18,6 +18,7 @@ co-vertex speed is the corrected sigma_b of ERRATA #68. As m2 / m1 -> 0, star 2 
 about a fixed star: within 2e-15 at m2 / m1 = 1e-15 (tests/core/test_binary.py, tests/api/test_binary_api.py).
 """
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -25,7 +26,7 @@ import astropy.units as u
 import numpy as np
 
 from orbits import inputs, units
-from orbits.constants import G
+from orbits.constants import Body, G
 from orbits.core import binary as binary_core
 from orbits.core import twobody
 from orbits.core.checks import require_positive
@@ -56,7 +57,7 @@ class Star(Orbit):
     """
 
     @cached_property
-    def kepler_constant(self):
+    def kepler_constant(self) -> u.Quantity:
         """a**3 / T**2 = G m_j**3 / ((m1 + m2)**2 4 pi**2) (m3/s2), Kepler's third law for this star (XXII.iii)."""
         return binary_core.kepler_constant(self.mu) << units.M3_PER_S2
 
@@ -80,21 +81,21 @@ class Binary:
     @classmethod
     def from_elements(
         cls,
-        m1,
-        m2,
-        a=None,
-        e=0.0,
+        m1: Body | str | u.Quantity,
+        m2: Body | str | u.Quantity,
+        a: u.Quantity | None = None,
+        e: float | np.ndarray | u.Quantity = 0.0,
         *,
-        p=None,
-        q=None,
-        period=None,
-        inc=0 * u.deg,
-        raan=0 * u.deg,
-        argp=0 * u.deg,
-        nu=0 * u.deg,
-        com_r=None,
-        com_v=None,
-    ):
+        p: u.Quantity | None = None,
+        q: u.Quantity | None = None,
+        period: u.Quantity | None = None,
+        inc: u.Quantity = 0 * u.deg,
+        raan: u.Quantity = 0 * u.deg,
+        argp: u.Quantity = 0 * u.deg,
+        nu: u.Quantity = 0 * u.deg,
+        com_r: u.Quantity | None = None,
+        com_v: u.Quantity | None = None,
+    ) -> "Binary":
         """Binary from the masses (body names, masses or GMs) and the relative orbit r2 - r1.
 
         Give one size of the relative orbit: a = a1 + a2 (the notes' a + q = (m + M) alpha), p, q (periapsis
@@ -119,12 +120,31 @@ class Binary:
         return cls._assemble(gm1, gm2, relative, com_r, com_v)
 
     @classmethod
-    def circular(cls, m1, m2, separation, *, inc=0 * u.deg, raan=0 * u.deg, nu=0 * u.deg, com_r=None, com_v=None):
+    def circular(
+        cls,
+        m1: Body | str | u.Quantity,
+        m2: Body | str | u.Quantity,
+        separation: u.Quantity,
+        *,
+        inc: u.Quantity = 0 * u.deg,
+        raan: u.Quantity = 0 * u.deg,
+        nu: u.Quantity = 0 * u.deg,
+        com_r: u.Quantity | None = None,
+        com_v: u.Quantity | None = None,
+    ) -> "Binary":
         """Circular binary (XXII.v): stars at separation m2 r / (m1 + m2) and m1 r / (m1 + m2) from the CM."""
         return cls.from_elements(m1, m2, p=separation, e=0.0, inc=inc, raan=raan, nu=nu, com_r=com_r, com_v=com_v)
 
     @classmethod
-    def from_vectors(cls, m1, m2, r1, v1, r2, v2):
+    def from_vectors(
+        cls,
+        m1: Body | str | u.Quantity,
+        m2: Body | str | u.Quantity,
+        r1: u.Quantity,
+        v1: u.Quantity,
+        r2: u.Quantity,
+        v2: u.Quantity,
+    ) -> "Binary":
         """Binary from both stars' positions (length) and velocities (speed), shape (..., 3), in any inertial frame."""
         gm1, gm2 = inputs.gravitational_parameter(m1, "mass m1"), inputs.gravitational_parameter(m2, "mass m2")
         r1, r2 = units.to_si(r1, units.M, "position r1"), units.to_si(r2, units.M, "position r2")
@@ -152,7 +172,7 @@ class Binary:
 
     # ---- shape and masses (XXII.i) --------------------------------------------------------------
     @property
-    def shape(self):
+    def shape(self) -> tuple[int, ...]:
         """Batch shape of the binaries held."""
         return self.relative.shape
 
@@ -161,43 +181,43 @@ class Binary:
         return binary_core.mass_fractions(self.gm1, self.gm2)
 
     @cached_property
-    def mass1(self):
+    def mass1(self) -> u.Quantity:
         """m1 = G m1 / G (kg), the notes' M."""
         return self.gm1 / G << units.KG
 
     @cached_property
-    def mass2(self):
+    def mass2(self) -> u.Quantity:
         """m2 = G m2 / G (kg), the notes' m."""
         return self.gm2 / G << units.KG
 
     @cached_property
-    def total_mass(self):
+    def total_mass(self) -> u.Quantity:
         """m1 + m2 (kg)."""
         return (self.gm1 + self.gm2) / G << units.KG
 
     @cached_property
-    def reduced_mass(self):
+    def reduced_mass(self) -> u.Quantity:
         """m1 m2 / (m1 + m2) (kg): correctly rounded in G m units (double-double), then divided by G (<= 1 ulp)."""
         return binary_core.reduced_mass(self.gm1, self.gm2) / G << units.KG
 
     @cached_property
-    def mass_fraction(self):
+    def mass_fraction(self) -> u.Quantity:
         """mu = m2 / (m1 + m2) (dimensionless), the notes' m / (M + m), correctly rounded (double-double)."""
         return self._fractions[1] << u.one
 
     @cached_property
-    def gravitational_parameter(self):
+    def gravitational_parameter(self) -> u.Quantity:
         """G (m1 + m2) (m3/s2), the parameter of the relative orbit."""
         return self.relative.mu << units.M3_PER_S2
 
     # ---- the stars ------------------------------------------------------------------------------
     @cached_property
-    def star1(self):
+    def star1(self) -> Star:
         """Star 1's orbit about the CM (the notes' M, semi-major axis q = m2 a / (m1 + m2))."""
         return self._star(self.gm2, self._fractions[1], self.gm1, opposite=True)
 
     @cached_property
-    def star2(self):
+    def star2(self) -> Star:
         """Star 2's orbit about the CM (the notes' m, semi-major axis a = m1 a_rel / (m1 + m2))."""
         return self._star(self.gm1, self._fractions[0], self.gm2, opposite=False)
 
@@ -209,80 +229,80 @@ class Binary:
 
     # ---- the pair (XXII.ii-v, vii) --------------------------------------------------------------
     @cached_property
-    def eccentricity(self):
+    def eccentricity(self) -> u.Quantity:
         """e (dimensionless), common to the relative orbit and both stars' orbits (XXII.i; e = gamma / alpha,
         ERRATA #64)."""
         return self.relative.eccentricity
 
     @cached_property
-    def period(self):
+    def period(self) -> u.Quantity:
         """T = 2 pi sqrt(a**3 / (G (m1 + m2))) (s), ellipses only: all three forms of Kepler's third law agree."""
         return self.relative.period
 
     @cached_property
-    def mean_motion(self):
+    def mean_motion(self) -> u.Quantity:
         """n = 2 pi / T = sqrt(G (m1 + m2) / a**3) (rad/s)."""
         return self.relative.mean_motion
 
     @cached_property
-    def covertex_times(self):
+    def covertex_times(self) -> tuple[u.Quantity, u.Quantity]:
         """(T1, T2) (s): co-vertex to co-vertex through periapsis T (1/2 - e/pi) and through apoapsis, the same for
         both stars (XXII.vii), ellipses only."""
         return self.relative.covertex_times
 
     @cached_property
-    def time_since_periapsis(self):
+    def time_since_periapsis(self) -> u.Quantity:
         """t - T_periapsis (s) of the pair (both stars pass their periapses together)."""
         return self.relative.time_since_periapsis
 
     @cached_property
-    def kepler_constant(self):
+    def kepler_constant(self) -> u.Quantity:
         """(a1 + a2)**3 / T**2 = G (m1 + m2) / (4 pi**2) (m3/s2), Kepler's third law for the relative orbit."""
         return binary_core.kepler_constant(self.relative.mu) << units.M3_PER_S2
 
     @cached_property
-    def energy(self):
+    def energy(self) -> u.Quantity:
         """E = -G m1 m2 / (2 a) (J), the binding energy (XXII.iv: -G m M / (2 (m + M) alpha))."""
         return self.relative.energy
 
     @cached_property
-    def angular_momentum(self):
+    def angular_momentum(self) -> u.Quantity:
         """L = m1 m2 sqrt(G p / (m1 + m2)) (kg m2/s) about the CM (XXII.iv)."""
         return self.relative.angular_momentum
 
     @cached_property
-    def joining_line_areal_velocity(self):
+    def joining_line_areal_velocity(self) -> u.Quantity:
         """Area swept by the line joining the stars per unit time, L / (2 mu_red) = sqrt(G (m1 + m2) p) / 2 (m2/s)
         (XXII.ii corrected by ERRATA #58)."""
         return self.relative.areal_velocity
 
     @cached_property
-    def separation(self):
+    def separation(self) -> u.Quantity:
         """|r2 - r1| (m) now."""
         return self.relative.radius
 
     @cached_property
-    def relative_speed(self):
+    def relative_speed(self) -> u.Quantity:
         """|v2 - v1| (m/s) now: vis-viva with G (m1 + m2) (the notes' (m + M) sigma)."""
         return self.relative.speed
 
     @cached_property
-    def angular_velocity(self):
+    def angular_velocity(self) -> u.Quantity:
         """Rate of turn of the joining line h / r**2 (rad/s) now; sqrt(G (m1 + m2) / r**3) on a circle (XXII.v)."""
         h = twobody.specific_angular_momentum(self.relative.p, self.relative.mu)
         return h / self.separation.to_value(units.M) ** 2 << units.RAD_PER_S
 
     @cached_property
-    def potential_energy(self):
+    def potential_energy(self) -> u.Quantity:
         """U = -G m1 m2 / r (J) now."""
         return self.relative.potential_energy
 
     @cached_property
-    def kinetic_energy(self):
+    def kinetic_energy(self) -> u.Quantity:
         """K = m1 v1**2 / 2 + m2 v2**2 / 2 = mu_red |v2 - v1|**2 / 2 (J) now, in the CM frame."""
         return self.relative.kinetic_energy
 
-    def speeds_at(self, separation):
+    def speeds_at(self, separation: u.Quantity) -> tuple[u.Quantity, u.Quantity]:
         """(v1, v2) (m/s): the stars' speeds in the CM frame when they are `separation` (length) apart.
 
         v_i = m_j / (m1 + m2) sqrt(G (m1 + m2) (2 / r - 1 / a)) (XXII.iv's M sigma and m sigma, ERRATA #67).
@@ -291,7 +311,7 @@ class Binary:
         x1, x2 = self._fractions
         return x2 * relative, x1 * relative
 
-    def escape_speed(self, distance):
+    def escape_speed(self, distance: u.Quantity) -> u.Quantity:
         """sqrt(2 G (m1 + m2) / r) (m/s) at distance r (length) from the CM, the pair seen as one point mass.
 
         Exact to 1 ulp for that model. The pair's quadrupole changes v**2 by at most m1 m2 / (m1 + m2)**2 (d / r)**2
@@ -304,16 +324,18 @@ class Binary:
 
     # ---- state vectors --------------------------------------------------------------------------
     @cached_property
-    def center_of_mass(self):
+    def center_of_mass(self) -> u.Quantity:
         """Position of the CM (m) at the epoch, shape (..., 3)."""
         return self.com_r << units.M
 
     @cached_property
-    def center_of_mass_velocity(self):
+    def center_of_mass_velocity(self) -> u.Quantity:
         """Velocity of the CM (m/s), shape (..., 3)."""
         return self.com_v << units.M_PER_S
 
-    def propagate(self, dt, *, barycentric=False):
+    def propagate(
+        self, dt: u.Quantity, *, barycentric: bool = False
+    ) -> tuple[u.Quantity, u.Quantity, u.Quantity, u.Quantity]:
         """(r1, v1, r2, v2) of both stars a time dt (time Quantity, broadcasting) after the epoch.
 
         In the frame of com_r and com_v (the CM moving uniformly), or in the CM frame with barycentric=True.
@@ -333,12 +355,12 @@ class Binary:
         return r1 << units.M, v1 << units.M_PER_S, r2 << units.M, v2 << units.M_PER_S
 
     @cached_property
-    def states(self):
+    def states(self) -> tuple[u.Quantity, u.Quantity, u.Quantity, u.Quantity]:
         """(r1, v1, r2, v2) of both stars at the epoch, in the frame of com_r and com_v."""
         return self.propagate(0 * u.s)
 
     # ---- tables ---------------------------------------------------------------------------------
-    def quantities(self, only=None):
+    def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} of the section XXII quantities (or `only` those).
 
         Names are the pair's own (BINARY_NAMES), `relative_<name>` for the relative orbit and `star1_<name>`,

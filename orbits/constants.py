@@ -57,7 +57,7 @@ class Body:
     orbit: MeanElements | None = None
 
     @property
-    def mass(self):
+    def mass(self) -> float:
         """M = GM / G (kg)."""
         return self.gm / G
 
@@ -130,7 +130,7 @@ BODIES = {
 }
 
 
-def body(name):
+def body(name: str) -> Body:
     """The named body (case-insensitive); KeyError listing the known names otherwise."""
     for key, value in BODIES.items():
         if key.lower() == str(name).lower():

@@ -17,7 +17,7 @@
 Cosmology stores H0 (1/s) and today's density parameters as floats; like astropy.cosmology it multiplies the
 dimensionless E(z) and its integrals by one scale, t_H = 1 / H0 or d_H = c / H0, and it chooses its method
 (closed form or quadrature, orbits.core.friedmann.Friedmann) once, at construction. astropy.cosmology itself
-is never imported (it costs ~0.7 s); the tests use it as an independent reference.
+is never imported (its import is heavy); the tests use it as an independent reference.
 
 ExpandingSphere is the notes' Newtonian model: a shell enclosing G M moves at the zero-energy speed
 sqrt(2 G M / r), so r(t) = (9 G M t**2 / 2)**(1/3), v(t) = (4 G M / (3 t))**(1/3), H = 2 / (3 t); its mean
@@ -25,6 +25,7 @@ density is exactly critical (Omega = 1), which is why it agrees with Cosmology.e
 The matching N-body problem for rebound and heyoka is built in orbits.validate.builders.
 """
 
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from functools import cached_property
 
@@ -32,7 +33,7 @@ import astropy.units as u
 import numpy as np
 
 from orbits import inputs, units
-from orbits.constants import SPEED_OF_LIGHT, G
+from orbits.constants import SPEED_OF_LIGHT, Body, G
 from orbits.core import friedmann, sphere
 from orbits.core.checks import require_positive
 from orbits.core.errors import OrbitDomainError
@@ -97,17 +98,24 @@ class Cosmology:
 
     # ---- constructors -------------------------------------------------------------------------
     @classmethod
-    def einstein_de_sitter(cls, H0):
+    def einstein_de_sitter(cls, H0: u.Quantity) -> "Cosmology":
         """Flat, matter only (Omega_m = 1): the relativistic twin of the notes' Newtonian sphere (XXIV)."""
         return cls(float(_hubble(H0)), 1.0)
 
     @classmethod
-    def de_sitter(cls, H0):
+    def de_sitter(cls, H0: u.Quantity) -> "Cosmology":
         """Flat, cosmological constant only (Omega_Lambda = 1): E = 1 and no big bang."""
         return cls(float(_hubble(H0)), 0.0, omega_l=1.0)
 
     @classmethod
-    def from_densities(cls, H0, Om0=None, Ol0=None, Or0=None, Ok0=None):
+    def from_densities(
+        cls,
+        H0: u.Quantity,
+        Om0: float | u.Quantity | None = None,
+        Ol0: float | u.Quantity | None = None,
+        Or0: float | u.Quantity | None = None,
+        Ok0: float | u.Quantity | None = None,
+    ) -> "Cosmology":
         """Any Friedmann universe. Or0 defaults to 0. Of Om0, Ol0 and Ok0 give two and the third follows from
         Om0 + Or0 + Ok0 + Ol0 = 1; give only Om0 or only Ol0 for a flat universe (Ok0 = 0); or give all three,
         which must then sum to 1 with Or0 (within 1e-12)."""
@@ -115,22 +123,22 @@ class Cosmology:
 
     # ---- scales -------------------------------------------------------------------------------
     @cached_property
-    def method(self):
+    def method(self) -> str:
         """How distances and times are computed, chosen at construction (orbits.core.friedmann.METHODS)."""
         return self.model.method
 
     @cached_property
-    def hubble_constant(self):
+    def hubble_constant(self) -> u.Quantity:
         """H0 (1/s)."""
         return self.h0 << PER_S
 
     @cached_property
-    def hubble_time(self):
+    def hubble_time(self) -> u.Quantity:
         """t_H = 1 / H0 (s)."""
         return self._t_h << units.S
 
     @cached_property
-    def hubble_distance(self):
+    def hubble_distance(self) -> u.Quantity:
         """d_H = c / H0 (m)."""
         return self._d_h << units.M
 
@@ -143,47 +151,52 @@ class Cosmology:
         return SPEED_OF_LIGHT / self.h0
 
     # ---- quantities at a redshift -------------------------------------------------------------
-    def hubble_parameter(self, z=0.0):
+    def hubble_parameter(self, z: float | np.ndarray | u.Quantity = 0.0) -> u.Quantity:
         """H(z) = H0 E(z) (1/s), E**2 = Omega_r x**4 + Omega_m x**3 + Omega_k x**2 + Omega_Lambda, x = 1 + z."""
         return self.h0 * self.model.efunc(_redshift(z)) << PER_S
 
-    def age(self, z=0.0):
+    def age(self, z: float | np.ndarray | u.Quantity = 0.0) -> u.Quantity:
         """t(z) (s) since the big bang: (2/3) / H0 (1 + z)**-1.5 for Einstein-de Sitter (XXIV.iv); inf for de Sitter."""
         return self.model.age(_redshift(z), self._t_h) << units.S
 
-    def lookback_time(self, z):
+    def lookback_time(self, z: float | np.ndarray | u.Quantity) -> u.Quantity:
         """t0 - t(z) (s): how long ago light left redshift z."""
         return self.model.lookback_time(_redshift(z), self._t_h) << units.S
 
-    def comoving_distance(self, z):
+    def comoving_distance(self, z: float | np.ndarray | u.Quantity) -> u.Quantity:
         """Line-of-sight comoving distance D_C = (c / H0) int_0^z dz' / E(z') (m); 2 c / H0 at z = inf for EdS."""
         return self.model.comoving_distance(_redshift(z), self._d_h) << units.M
 
-    def critical_density(self, z=0.0):
+    def critical_density(self, z: float | np.ndarray | u.Quantity = 0.0) -> u.Quantity:
         """rho_c(z) = 3 H(z)**2 / (8 pi G) (kg/m3); inf beyond the float64 range."""
         with np.errstate(over="ignore"):
             return sphere.critical_density(self.hubble_parameter(z).to_value(PER_S), G) << KG_PER_M3
 
-    def density_parameter(self, z=0.0):
+    def density_parameter(self, z: float | np.ndarray | u.Quantity = 0.0) -> u.Quantity:
         """Omega_m(z) = rho_m(z) / rho_c(z) (dimensionless): 1 at every z for Einstein-de Sitter."""
         return self.model.matter_density_parameter(_redshift(z)) << u.one
 
-    def recession_speed(self, distance, z=0.0):
+    def recession_speed(self, distance: u.Quantity, z: float | np.ndarray | u.Quantity = 0.0) -> u.Quantity:
         """Hubble's law v = H(z) r (m/s) for a proper distance r (length) at redshift z (XXIV.iv)."""
         r = units.to_si(distance, units.M, "distance r")
         return r * self.hubble_parameter(z).to_value(PER_S) << units.M_PER_S
 
     # ---- quantities at a time -----------------------------------------------------------------
-    def scale_factor(self, t):
+    def scale_factor(self, t: u.Quantity) -> u.Quantity:
         """a(t) (dimensionless) at time t (time) after the big bang; (1.5 H0 t)**(2/3) for Einstein-de Sitter."""
         return self.model.scale_factor(_cosmic_time(t), self._t_h) << u.one
 
-    def redshift(self, t):
+    def redshift(self, t: u.Quantity) -> u.Quantity:
         """z = 1 / a(t) - 1 (dimensionless) of light emitted at time t (time) after the big bang."""
         return _redshift_of(self.scale_factor(t))
 
     # ---- tables -------------------------------------------------------------------------------
-    def quantities(self, z=None, t=None, only=None):
+    def quantities(
+        self,
+        z: float | np.ndarray | u.Quantity | None = None,
+        t: u.Quantity | None = None,
+        only: Iterable[str] | None = None,
+    ) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} at redshift z or at time t after the big bang (default: today, z = 0),
         or `only` those names (QUANTITY_NAMES)."""
         names = QUANTITY_NAMES if only is None else list(only)
@@ -258,12 +271,12 @@ class ExpandingSphere:
     gm: np.ndarray
 
     @classmethod
-    def from_mass(cls, mass):
+    def from_mass(cls, mass: Body | str | u.Quantity) -> "ExpandingSphere":
         """The shell enclosing mass M (a mass in kg, or G M in m3/s2)."""
         return cls(inputs.gravitational_parameter(mass, "enclosed mass M"))
 
     @classmethod
-    def from_hubble(cls, hubble, radius):
+    def from_hubble(cls, hubble: u.Quantity, radius: u.Quantity) -> "ExpandingSphere":
         """The shell at `radius` (length) when the Hubble parameter is H (1/time): v = H r = sqrt(2 G M / r)
         gives G M = H**2 r**3 / 2."""
         h = _hubble(hubble, "Hubble parameter H")
@@ -274,19 +287,19 @@ class ExpandingSphere:
     def _time(self, t):
         return units.to_si(t, units.S, "time since the big bang t")
 
-    def radius(self, t):
+    def radius(self, t: u.Quantity) -> u.Quantity:
         """r(t) = (9 G M t**2 / 2)**(1/3) (m) at time t (time) after the big bang (XXIV.iii)."""
         return sphere.sphere_radius(self._time(t), self.gm) << units.M
 
-    def speed(self, t):
+    def speed(self, t: u.Quantity) -> u.Quantity:
         """v(t) = (4 G M / (3 t))**(1/3) (m/s), t > 0 (XXIV.iv)."""
         return sphere.sphere_speed(self._time(t), self.gm) << units.M_PER_S
 
-    def hubble_parameter(self, t):
+    def hubble_parameter(self, t: u.Quantity) -> u.Quantity:
         """H = v / r = 2 / (3 t) (1/s), t > 0 (XXIV.iv); the same for every shell."""
         return sphere.sphere_hubble_parameter(self._time(t)) << PER_S
 
-    def time_at_radius(self, r):
+    def time_at_radius(self, r: u.Quantity) -> u.Quantity:
         """t = sqrt(2 r**3 / (9 G M)) (s) at which the shell reaches r (length), inverting r(t)."""
         r_si = units.to_si(r, units.M, "shell radius r")
         if np.any(r_si < 0) or not np.all(np.isfinite(r_si)):
@@ -294,11 +307,11 @@ class ExpandingSphere:
             raise OrbitDomainError(f"shell radius r = {bad!r} m is outside the allowed range [0, inf) m")
         return sphere.sphere_time(r_si, self.gm) << units.S
 
-    def density(self, t):
+    def density(self, t: u.Quantity) -> u.Quantity:
         """rho = 1 / (6 pi G t**2) (kg/m3), t > 0: the mean density M / (4 pi r**3 / 3) inside every shell."""
         return np.broadcast_to(sphere.sphere_density(self._time(t), G), np.shape(self.radius(t))) << KG_PER_M3
 
-    def density_parameter(self, t):
+    def density_parameter(self, t: u.Quantity) -> u.Quantity:
         """Omega = (mean density inside the shell) / rho_c = 2 G M / (H**2 r**3) (dimensionless), t > 0.
 
         1 to rounding: a sphere expanding at the zero-energy speed has exactly the critical density.
@@ -307,7 +320,7 @@ class ExpandingSphere:
         r = self.radius(t).to_value(units.M)
         return 2.0 * self.gm / (hubble * hubble * r**3) << u.one
 
-    def quantities(self, t, only=None):
+    def quantities(self, t: u.Quantity, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} at time t (time) after the big bang, or `only` those (SPHERE_NAMES)."""
         names = SPHERE_NAMES if only is None else list(only)
         check_names(names, SPHERE_NAMES)

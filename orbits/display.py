@@ -1,6 +1,8 @@
 """Rich display for notebooks: HTML tables of Quantities (`_repr_html_`) and short terminal reprs."""
 
 import html
+from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 
@@ -12,7 +14,7 @@ def _value(q):
     return html.escape(np.array2string(value, precision=6, threshold=12))
 
 
-def quantities_html(title, quantities):
+def quantities_html(title: str, quantities: Mapping[str, Any]) -> str:
     """An HTML table: one row per quantity with its value and unit."""
     rows = "".join(
         f"<tr><td style='text-align:left'>{html.escape(name)}</td><td style='text-align:right'>{_value(q)}</td>"
@@ -23,7 +25,7 @@ def quantities_html(title, quantities):
             f"<tr><th>quantity</th><th>value</th><th>unit</th></tr>{rows}</table>")
 
 
-def validation_html(report):
+def validation_html(report: Any) -> str:
     """An HTML table per scene of a ValidationReport: check, analytic value, each backend's error, pass."""
     parts = []
     for scene in report.scenes:

@@ -19,9 +19,11 @@ has no formula here. The geosynchronous and the geostationary orbit share one ra
 equatorial one); 35786.1 km above Earth's IAU 2015 equatorial radius, the notes' 35786 km (ERRATA #55).
 """
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
 
+import astropy.units as u
 import numpy as np
 
 from orbits import inputs, units
@@ -53,7 +55,7 @@ def _speed(value, name):
     return result
 
 
-def escape_speed(primary, distance=None):
+def escape_speed(primary: Body | str | u.Quantity | Binary, distance: u.Quantity | None = None) -> u.Quantity:
     """v_esc = sqrt(2 mu / r) (m/s) at distance r (length) from a body (name, Body, mass or GM) or a Binary's CM.
 
     Without `distance`, at a named body's equatorial radius (its surface). A Binary counts as one point mass
@@ -87,7 +89,9 @@ class CosmicVelocities:
     v_orbit: np.ndarray | None = None
 
     @classmethod
-    def from_surface_gravity(cls, g=None, radius=None, orbital_speed=None):
+    def from_surface_gravity(
+        cls, g: u.Quantity | None = None, radius: u.Quantity | None = None, orbital_speed: u.Quantity | None = None
+    ) -> "CosmicVelocities":
         """The notes' model from g (acceleration) and R (length); defaults: g0 = 9.80665 m/s2, R = 6371 km and
         Earth's circular heliocentric speed sqrt(G M_sun / a_earth) = 29.785 km/s (Standish mean a)."""
         g = np.asarray(STANDARD_GRAVITY) if g is None else units.to_si(g, units.M_PER_S / units.S, "surface gravity g")
@@ -97,7 +101,7 @@ class CosmicVelocities:
         return cls(g, radius, speed)
 
     @classmethod
-    def of(cls, planet):
+    def of(cls, planet: Body | str) -> "CosmicVelocities":
         """From a named body's GM and equatorial radius (g = G M / R**2) and its mean orbit about its primary."""
         named = _named(planet)
         if named is None:
@@ -110,38 +114,38 @@ class CosmicVelocities:
         return cls(np.asarray(g), np.asarray(named.radius), speed)
 
     @cached_property
-    def surface_gravity(self):
+    def surface_gravity(self) -> u.Quantity:
         """g (m/s2)."""
         return self.g << units.M_PER_S / units.S
 
     @cached_property
-    def surface_radius(self):
+    def surface_radius(self) -> u.Quantity:
         """R (m)."""
         return self.radius << units.M
 
     @cached_property
-    def first_cosmic_velocity(self):
+    def first_cosmic_velocity(self) -> u.Quantity:
         """v1 = sqrt(g R) (m/s): the circular speed at the surface; 7.904 km/s for the notes' Earth."""
         return escape_core.first_cosmic_velocity(self.g, self.radius) << units.M_PER_S
 
     @cached_property
-    def second_cosmic_velocity(self):
+    def second_cosmic_velocity(self) -> u.Quantity:
         """v2 = sqrt(2 g R) (m/s): the escape speed from the surface; 11.178 km/s for the notes' Earth."""
         return escape_core.second_cosmic_velocity(self.g, self.radius) << units.M_PER_S
 
     @cached_property
-    def orbital_speed(self):
+    def orbital_speed(self) -> u.Quantity:
         """v_orbit (m/s): the planet's circular speed about its primary (29.785 km/s for Earth about the Sun)."""
         return self._require_orbit("orbital speed") << units.M_PER_S
 
     @cached_property
-    def hyperbolic_excess_speed(self):
+    def hyperbolic_excess_speed(self) -> u.Quantity:
         """(sqrt 2 - 1) v_orbit (m/s): the speed left after escaping the planet that reaches the primary's escape
         speed sqrt(2) v_orbit along the planet's motion; 12.337 km/s for Earth."""
         return escape_core.escape_excess_speed(self._require_orbit("hyperbolic excess speed")) << units.M_PER_S
 
     @cached_property
-    def third_cosmic_velocity(self):
+    def third_cosmic_velocity(self) -> u.Quantity:
         """v3 = sqrt(((sqrt 2 - 1) v_orbit)**2 + v2**2) (m/s), patched conics; 16.648 km/s for the notes' Earth."""
         v2 = escape_core.second_cosmic_velocity(self.g, self.radius)
         return escape_core.third_cosmic_velocity(self._require_orbit("third cosmic velocity"), v2) << units.M_PER_S
@@ -151,7 +155,7 @@ class CosmicVelocities:
             raise OrbitDomainError(f"{quantity} needs the planet's orbital speed about its primary; this body has none")
         return self.v_orbit
 
-    def quantities(self, only=None):
+    def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those); without `only`, the third velocity is left out when the
         body has no orbit."""
         return _table(self, COSMIC_NAMES, only)
@@ -175,7 +179,12 @@ class SynchronousOrbit:
     body_radius: np.ndarray | None = None
 
     @classmethod
-    def of(cls, primary="Earth", period=None, radius=None):
+    def of(
+        cls,
+        primary: Body | str | u.Quantity = "Earth",
+        period: u.Quantity | None = None,
+        radius: u.Quantity | None = None,
+    ) -> "SynchronousOrbit":
         """For a named body (its GM, sidereal rotation period and equatorial radius) or a mass or GM; `period`
         (time) and `radius` (length) override or supply the rotation period and the body's radius."""
         named = _named(primary)
@@ -189,12 +198,12 @@ class SynchronousOrbit:
         return cls(mu, t, size)
 
     @cached_property
-    def orbit_radius(self):
+    def orbit_radius(self) -> u.Quantity:
         """r = (mu T**2 / (4 pi**2))**(1/3) (m) from the body's centre; 42164.17 km for Earth."""
         return escape_core.synchronous_radius(self.mu, self.rotation_period) << units.M
 
     @cached_property
-    def altitude(self):
+    def altitude(self) -> u.Quantity:
         """r - R (m) above the body's radius; 35786.1 km for Earth's equatorial radius 6378.1 km."""
         if self.body_radius is None:
             raise OrbitDomainError("altitude needs the body's radius: build it with radius=... km")
@@ -209,26 +218,26 @@ class SynchronousOrbit:
         return r - radius << units.M
 
     @cached_property
-    def orbital_speed(self):
+    def orbital_speed(self) -> u.Quantity:
         """v = 2 pi r / T = sqrt(mu / r) (m/s); 3.0747 km/s for Earth."""
         return twobody.circular_speed(self.orbit_radius.to_value(units.M), self.mu) << units.M_PER_S
 
     @cached_property
-    def angular_velocity(self):
+    def angular_velocity(self) -> u.Quantity:
         """omega = 2 pi / T (rad/s), the body's rotation rate."""
         return 2.0 * np.pi / self.rotation_period << units.RAD_PER_S
 
     @cached_property
-    def period(self):
+    def period(self) -> u.Quantity:
         """T (s), the sidereal rotation period."""
         return self.rotation_period << units.S
 
-    def quantities(self, only=None):
+    def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those); without `only`, altitude is left out when undefined."""
         return _table(self, SYNCHRONOUS_NAMES, only)
 
 
-def max_elongation(inner, outer):
+def max_elongation(inner: Body | str | u.Quantity, outer: Body | str | u.Quantity) -> u.Quantity:
     """Greatest angle arcsin(r / R) (rad) between the star and an inner planet seen from an outer one (XXI.xi).
 
     inner and outer are orbit radii (lengths) of circular coplanar orbits, or catalogued body names (their

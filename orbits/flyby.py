@@ -18,6 +18,7 @@ is cancellation-free (orbits.core.flyby); IAS15 and heyoka integrations from 200
 (tests/api/test_flyby_api.py).
 """
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -25,7 +26,7 @@ import astropy.units as u
 import numpy as np
 
 from orbits import inputs, units
-from orbits.constants import G
+from orbits.constants import Body, G
 from orbits.core import binary as binary_core
 from orbits.core import flyby as flyby_core
 from orbits.core.checks import require_positive
@@ -70,7 +71,15 @@ class Flyby:
 
     # ---- constructors -------------------------------------------------------------------------
     @classmethod
-    def past(cls, primary, v_inf, b=None, *, periapsis=None, mass=None):
+    def past(
+        cls,
+        primary: Body | str | u.Quantity,
+        v_inf: u.Quantity,
+        b: u.Quantity | None = None,
+        *,
+        periapsis: u.Quantity | None = None,
+        mass: Body | str | u.Quantity | None = None,
+    ) -> "Flyby":
         """A body passing a fixed primary (name, Body, mass or GM) at v_inf (speed) with impact parameter b
         (length), or with the closest approach `periapsis` (length) (XXI.vi). `mass` (kg) enables E, L, U, K."""
         mu = inputs.gravitational_parameter(primary, PRIMARY)
@@ -82,7 +91,15 @@ class Flyby:
         return cls(*fields, mass=_broadcast(moving, shape))
 
     @classmethod
-    def between(cls, m1, m2, v_inf, b=None, *, periapsis=None):
+    def between(
+        cls,
+        m1: Body | str | u.Quantity,
+        m2: Body | str | u.Quantity,
+        v_inf: u.Quantity,
+        b: u.Quantity | None = None,
+        *,
+        periapsis: u.Quantity | None = None,
+    ) -> "Flyby":
         """Two finite masses (names, Bodies, masses or GMs) meeting at relative speed v_inf with impact parameter b
         or closest approach `periapsis` (XXII.vi); the energies use the reduced mass."""
         gm1, gm2 = inputs.gravitational_parameter(m1, "mass m1"), inputs.gravitational_parameter(m2, "mass m2")
@@ -101,105 +118,105 @@ class Flyby:
 
     # ---- the hyperbola --------------------------------------------------------------------------
     @property
-    def shape(self):
+    def shape(self) -> tuple[int, ...]:
         """Batch shape of the encounters held."""
         return self.b.shape
 
     @cached_property
-    def impact_parameter(self):
+    def impact_parameter(self) -> u.Quantity:
         """b (m): distance from the attracting centre to the incoming asymptote."""
         return self.b << units.M
 
     @cached_property
-    def speed_at_infinity(self):
+    def speed_at_infinity(self) -> u.Quantity:
         """v_inf (m/s): relative speed far away (the notes' u; (m + M) eta for two masses)."""
         return self.v_inf << units.M_PER_S
 
     @cached_property
-    def eccentricity(self):
+    def eccentricity(self) -> u.Quantity:
         """e = sqrt(1 + (b v_inf**2 / mu)**2) (dimensionless)."""
         return flyby_core.eccentricity(self.b, self.v_inf, self.mu) << u.one
 
     @cached_property
-    def semi_major_axis(self):
+    def semi_major_axis(self) -> u.Quantity:
         """a = -mu / v_inf**2 (m), negative as for every hyperbola in orbits (the notes' a_h = |a|)."""
         return flyby_core.semi_major_axis(self.v_inf, self.mu) << units.M
 
     @cached_property
-    def semilatus_rectum(self):
+    def semilatus_rectum(self) -> u.Quantity:
         """p = (v_inf b)**2 / mu (m)."""
         return flyby_core.semilatus_rectum(self.b, self.v_inf, self.mu) << units.M
 
     @cached_property
-    def periapsis_distance(self):
+    def periapsis_distance(self) -> u.Quantity:
         """Closest approach R = (sqrt(mu**2 + v_inf**4 b**2) - mu) / v_inf**2 (m), formed without cancellation."""
         return flyby_core.periapsis_distance(self.b, self.v_inf, self.mu) << units.M
 
     @cached_property
-    def periapsis_speed(self):
+    def periapsis_speed(self) -> u.Quantity:
         """Speed at closest approach w = (sqrt(mu**2 + v_inf**4 b**2) + mu) / (v_inf b) (m/s)."""
         return flyby_core.periapsis_speed(self.b, self.v_inf, self.mu) << units.M_PER_S
 
     @cached_property
-    def deflection_angle(self):
+    def deflection_angle(self) -> u.Quantity:
         """Turning angle of the relative velocity, 2 atan(mu / (b v_inf**2)) (rad)."""
         return flyby_core.deflection_angle(self.b, self.v_inf, self.mu) << units.RAD
 
     @cached_property
-    def asymptote_true_anomaly(self):
+    def asymptote_true_anomaly(self) -> u.Quantity:
         """nu_inf = arccos(-1 / e) (rad): true anomaly of the outgoing asymptote."""
         return flyby_core.asymptote_true_anomaly(self.b, self.v_inf, self.mu) << units.RAD
 
     @cached_property
-    def specific_energy(self):
+    def specific_energy(self) -> u.Quantity:
         """E / m = v_inf**2 / 2 (J/kg)."""
         return 0.5 * self.v_inf**2 << units.J_PER_KG
 
     @cached_property
-    def specific_angular_momentum(self):
+    def specific_angular_momentum(self) -> u.Quantity:
         """h = L / m = v_inf b = R w (m2/s)."""
         return self.v_inf * self.b << units.M2_PER_S
 
     @cached_property
-    def energy(self):
+    def energy(self) -> u.Quantity:
         """E = m v_inf**2 / 2 (J) (XXI.vi), or mu_red v_inf**2 / 2 = m M (m + M) eta**2 / 2 for two masses (XXII.vi)."""
         return self.specific_energy * (self._require_mass("energy E") << units.KG)
 
     @cached_property
-    def angular_momentum(self):
+    def angular_momentum(self) -> u.Quantity:
         """L = m v_inf b (kg m2/s) (XXI.vi), or mu_red v_inf b = m M b eta for two masses (XXII.vi)."""
         return self.specific_angular_momentum * (self._require_mass("angular momentum L") << units.KG)
 
-    def speed_at(self, r):
+    def speed_at(self, r: u.Quantity) -> u.Quantity:
         """v = sqrt(v_inf**2 + 2 mu / r) (m/s) at distance r (length) (XXI.vi; (m + M) sigma in XXII.vi)."""
         r_si = units.to_si(r, units.M, "distance r")
         require_positive(r_si, "distance r", "m")
         return flyby_core.speed_at_distance(r_si, self.v_inf, self.mu) << units.M_PER_S
 
-    def potential_energy_at(self, r):
+    def potential_energy_at(self, r: u.Quantity) -> u.Quantity:
         """U = -mu m / r (J) at distance r (length): -G M m / r, or -G m1 m2 / r for two masses."""
         r_si = units.to_si(r, units.M, "distance r")
         require_positive(r_si, "distance r", "m")
         return -self.mu * self._require_mass("potential energy U") / r_si << units.J
 
-    def kinetic_energy_at(self, r):
+    def kinetic_energy_at(self, r: u.Quantity) -> u.Quantity:
         """K = E - U = m v_inf**2 / 2 + mu m / r (J) at distance r (length)."""
         return self.energy - self.potential_energy_at(r)
 
     @cached_property
-    def orbit(self):
+    def orbit(self) -> Orbit:
         """The relative hyperbola as an Orbit at closest approach (nu = 0), in the xy plane, for state vectors."""
         mass = None if self.mass is None else self.mass << units.KG
         return Orbit.from_elements(self.mu << units.M3_PER_S2, p=self.semilatus_rectum, e=self.eccentricity, mass=mass)
 
     # ---- the two stars of Flyby.between (XXII.vi) -----------------------------------------------
     @cached_property
-    def star1(self):
+    def star1(self) -> "Flyby":
         """Star 1's hyperbola about the centre of mass (the relative one scaled by m2 / (m1 + m2))."""
         return self._star(self._require_pair("star1")[1], self.gm2, self.gm1)
 
     @cached_property
-    def star2(self):
+    def star2(self) -> "Flyby":
         """Star 2's hyperbola about the centre of mass (the relative one scaled by m1 / (m1 + m2))."""
         return self._star(self._require_pair("star2")[0], self.gm1, self.gm2)
 
@@ -220,7 +237,7 @@ class Flyby:
         return self.mass
 
     # ---- tables ---------------------------------------------------------------------------------
-    def quantities(self, only=None):
+    def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} of the encounter (or `only` those); `star1_<name>`, `star2_<name>` for the
         stars of Flyby.between. Without `only`, quantities this encounter lacks (no mass, no pair) are left out."""
         return quantity_table(self._lookup, QUANTITY_NAMES, only)

@@ -112,7 +112,7 @@ def find_body(name: str) -> Body | None:
         return None
 
 
-def gravitational_parameter(value, name: str = "primary mass M") -> np.ndarray:
+def gravitational_parameter(value: Body | str | u.Quantity, name: str = "primary mass M") -> np.ndarray:
     """G M (m3/s2) of a mass given as a Body, a body name, a mass (kg) or a GM (m3/s2) Quantity; finite, > 0."""
     if isinstance(value, str):
         value = body(value)
@@ -134,7 +134,9 @@ def positive(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
     return si
 
 
-def semi_latus_rectum(e: np.ndarray, a=None, p=None, q=None) -> np.ndarray:
+def semi_latus_rectum(
+    e: np.ndarray, a: u.Quantity | None = None, p: u.Quantity | None = None, q: u.Quantity | None = None
+) -> np.ndarray:
     """p (m) from e and exactly one size element: a (length, not on the parabola), p or q.
 
     p as given, p = q (1 + e), or p = a (1 - e) (1 + e), with a > 0 for ellipses and a < 0 for hyperbolas.
@@ -171,7 +173,7 @@ def _check_semi_major_axis(value, e):
         )
 
 
-def eccentricity(e) -> np.ndarray:
+def eccentricity(e: float | np.ndarray | u.Quantity) -> np.ndarray:
     """float64 array of eccentricities (plain numbers or dimensionless Quantities), each finite and >= 0."""
     e = units.to_number(e, "eccentricity e")
     if not np.isfinite(e).all() or (e < 0).any():

@@ -11,7 +11,7 @@ def _umask():
     return mask
 
 
-def write_atomic(path, data):
+def write_atomic(path: str | os.PathLike, data: str | bytes) -> None:
     """Write text or bytes to `path` so that readers see the old file or the whole new one, never a part.
 
     The file gets the usual permissions (0o666 less the umask), not mkstemp's private 0o600.

@@ -14,6 +14,7 @@ latitude `phase` at t = 0.
 The matching N-body problem for rebound and heyoka is built in orbits.validate.builders.
 """
 
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -59,7 +60,16 @@ class RestrictedThreeBody:
     phase: np.ndarray
 
     @classmethod
-    def from_primaries(cls, primary, secondary, separation=None, *, inc=0 * u.deg, raan=0 * u.deg, phase=0 * u.deg):
+    def from_primaries(
+        cls,
+        primary: Body | str | u.Quantity,
+        secondary: Body | str | u.Quantity,
+        separation: u.Quantity | None = None,
+        *,
+        inc: u.Quantity = 0 * u.deg,
+        raan: u.Quantity = 0 * u.deg,
+        phase: u.Quantity = 0 * u.deg,
+    ) -> "RestrictedThreeBody":
         """Binary of `primary` and `secondary` (each a Body, a name, a mass or a GM Quantity) at `separation`
         (length; default: the secondary's catalogued mean distance a from the primary, e.g. Earth-Moon).
 
@@ -78,17 +88,17 @@ class RestrictedThreeBody:
 
     # ---- the binary -------------------------------------------------------------------------------
     @cached_property
-    def mu(self):
+    def mu(self) -> np.ndarray:
         """mu = m / (M + m) (float64 array), the only parameter of the dimensionless problem."""
         return self.gm_secondary / (self.gm_primary + self.gm_secondary)
 
     @cached_property
-    def mass_ratio(self):
+    def mass_ratio(self) -> u.Quantity:
         """mu = m / (M + m) (dimensionless)."""
         return self.mu << u.one
 
     @cached_property
-    def separation(self):
+    def separation(self) -> u.Quantity:
         """r (m), the distance between the primaries."""
         return self.r << units.M
 
@@ -97,18 +107,18 @@ class RestrictedThreeBody:
         return np.sqrt((self.gm_primary + self.gm_secondary) / self.r**3)
 
     @cached_property
-    def angular_velocity(self):
+    def angular_velocity(self) -> u.Quantity:
         """n = sqrt(G (M + m) / r**3) (rad/s) of the binary and of the rotating frame."""
         return self._n << units.RAD_PER_S
 
     @cached_property
-    def period(self):
+    def period(self) -> u.Quantity:
         """T = 2 pi / n (s)."""
         return 2.0 * np.pi / self._n << units.S
 
     # ---- the points -----------------------------------------------------------------------------
     @cached_property
-    def positions(self):
+    def positions(self) -> u.Quantity:
         """Rotating-frame positions of L1..L5 (m), shape (..., 5, 3); each coordinate within 2**-52 r."""
         return lagrange.positions(self.mu) * self.r[..., None, None] << units.M
 
@@ -117,17 +127,17 @@ class RestrictedThreeBody:
         return lagrange.distances(self.mu) * self.r[..., None, None]
 
     @cached_property
-    def distances_to_primary(self):
+    def distances_to_primary(self) -> u.Quantity:
         """|L_k - M| (m), shape (..., 5)."""
         return self._distances[..., 0] << units.M
 
     @cached_property
-    def distances_to_secondary(self):
+    def distances_to_secondary(self) -> u.Quantity:
         """|L_k - m| (m), shape (..., 5); for L1 and L2 the offset rho, to 2 ulp even for mu = 1e-15."""
         return self._distances[..., 1] << units.M
 
     @cached_property
-    def jacobi_constants(self):
+    def jacobi_constants(self) -> u.Quantity:
         """C(L_k) = -2 Phi(L_k) (m2/s2), shape (..., 5): the Jacobi constant of a particle at rest at each point."""
         c = lagrange.jacobi_constant(lagrange.positions(self.mu), np.zeros(3), self.mu[..., None])
         return c * self._scale_squared[..., None] << units.M_PER_S**2
@@ -137,29 +147,29 @@ class RestrictedThreeBody:
         return (self._n * self.r) ** 2
 
     @cached_property
-    def eigenvalues(self):
+    def eigenvalues(self) -> u.Quantity:
         """Eigenvalues of the linearised rotating-frame motion at L1..L5 (1/s), complex, shape (..., 5, 6)."""
         return lagrange.eigenvalues(self.mu) * self._n[..., None, None] << PER_SECOND
 
     @cached_property
-    def growth_rates(self):
+    def growth_rates(self) -> u.Quantity:
         """Largest Re(eigenvalue) at L1..L5 (1/s), shape (..., 5); 0 where linearly stable."""
         return lagrange.growth_rates(self.mu) * self._n[..., None] << PER_SECOND
 
     @cached_property
-    def e_folding_times(self):
+    def e_folding_times(self) -> u.Quantity:
         """1 / growth rate (s), shape (..., 5); inf where linearly stable."""
         rates = lagrange.growth_rates(self.mu)
         with np.errstate(divide="ignore"):
             return np.where(rates > 0.0, 1.0 / rates, np.inf) / self._n[..., None] << units.S
 
     @cached_property
-    def triangular_points_stable(self):
+    def triangular_points_stable(self) -> np.ndarray | np.bool_:
         """True where L4 and L5 are linearly stable: mu < Routh's (1 - sqrt(23/27)) / 2 = 0.0385208965..., strictly."""
         return lagrange.triangular_points_stable(self.mu)
 
     # ---- states and fields ------------------------------------------------------------------------
-    def inertial_states(self, t):
+    def inertial_states(self, t: u.Quantity) -> tuple[u.Quantity, u.Quantity]:
         """Barycentric inertial positions (m) and velocities (m/s) of L1..L5 at time t (time, broadcasting):
         shape (..., 5, 3), the frame having turned by phase + n t."""
         t_si = units.to_si(t, units.S, "time t")
@@ -169,18 +179,18 @@ class RestrictedThreeBody:
         speed = (self._n * self.r)[..., None, None]
         return r * self.r[..., None, None] << units.M, v * speed << units.M_PER_S
 
-    def effective_potential(self, r):
+    def effective_potential(self, r: u.Quantity) -> u.Quantity:
         """Phi = -G M / r_1 - G m / r_2 - n**2 (x**2 + y**2) / 2 (J/kg) at rotating-frame positions r (length)."""
         r_si = units.to_si(r, units.M, "position r") / self.r[..., None]
         return lagrange.effective_potential(r_si, self.mu) * self._scale_squared << units.J_PER_KG
 
-    def jacobi_constant(self, r, v):
+    def jacobi_constant(self, r: u.Quantity, v: u.Quantity) -> u.Quantity:
         """C = -2 Phi - |v|**2 (m2/s2) of a rotating-frame state r (length) and v (speed), shape (..., 3)."""
         r_si = units.to_si(r, units.M, "position r") / self.r[..., None]
         v_si = units.to_si(v, units.M_PER_S, "velocity v") / (self._n * self.r)[..., None]
         return lagrange.jacobi_constant(r_si, v_si, self.mu) * self._scale_squared << units.M_PER_S**2
 
-    def zero_velocity_grid(self, extent=1.5, points=401):
+    def zero_velocity_grid(self, extent: float = 1.5, points: int = 401) -> tuple[u.Quantity, u.Quantity, u.Quantity]:
         """(x, y, C) for plotting zero-velocity curves: a points x points grid (m) over |x|, |y| <= extent r in the
         rotating plane, and C = -2 Phi (m2/s2), the Jacobi constant of a particle at rest there (+inf on a
         primary). A particle of Jacobi constant C_0 cannot enter where C < C_0; contour C at C(L1), C(L2), ..."""
@@ -195,7 +205,9 @@ class RestrictedThreeBody:
         return x * r << units.M, y * r << units.M, c * float(self._scale_squared) << units.M_PER_S**2
 
     # ---- tables ---------------------------------------------------------------------------------
-    def quantities(self, only=None, points=POINTS):
+    def quantities(
+        self, only: Iterable[str] | None = None, points: Sequence[str] = POINTS
+    ) -> dict[str, u.Quantity]:
         """{name: Quantity}: BINARY_NAMES, then "<point>_<name>" for each of `points` and POINT_NAMES (the
         e-folding time only where the point is unstable). `only` takes full names ("L4_growth_rate") or
         POINT_NAMES, which expand over `points`."""

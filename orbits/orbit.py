@@ -11,6 +11,7 @@ section XXI of the notes is a lazily computed property returning a Quantity. Con
 degenerate angles are those of orbits.core.elements.
 """
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -18,7 +19,7 @@ import astropy.units as u
 import numpy as np
 
 from orbits import inputs, units
-from orbits.constants import body
+from orbits.constants import Body, body
 from orbits.core import anomalies, elements, propagate, twobody
 from orbits.core.checks import require_positive
 from orbits.core.errors import OrbitDomainError
@@ -30,14 +31,14 @@ PRIMARY = "primary mass or gravitational parameter"
 
 def _shape(x):
     """Shape of an array, Quantity or number (the attribute when there is one: np.shape dispatches
-    through Quantity.__array_function__, 2 us per call)."""
+    through Quantity.__array_function__)."""
     return x.shape if hasattr(x, "shape") else np.shape(x)
 
 
 def _check_shapes(**arrays):
     """Raise OrbitDomainError naming the arguments whose shapes do not broadcast together."""
     shapes = {_shape(x) for x in arrays.values()} - {()}
-    if len(shapes) <= 1:  # scalars and one shape: nothing to check (np.broadcast_shapes costs 5 us)
+    if len(shapes) <= 1:  # scalars and one shape: nothing to check, so np.broadcast_shapes is skipped
         return
     try:
         np.broadcast_shapes(*shapes)
@@ -67,18 +68,18 @@ class Orbit:
     @classmethod
     def from_elements(
         cls,
-        primary,
-        a=None,
-        e=0.0,
+        primary: Body | str | u.Quantity,
+        a: u.Quantity | None = None,
+        e: float | np.ndarray | u.Quantity = 0.0,
         *,
-        p=None,
-        q=None,
-        inc=0 * u.deg,
-        raan=0 * u.deg,
-        argp=0 * u.deg,
-        nu=0 * u.deg,
-        mass=None,
-    ):
+        p: u.Quantity | None = None,
+        q: u.Quantity | None = None,
+        inc: u.Quantity = 0 * u.deg,
+        raan: u.Quantity = 0 * u.deg,
+        argp: u.Quantity = 0 * u.deg,
+        nu: u.Quantity = 0 * u.deg,
+        mass: u.Quantity | None = None,
+    ) -> "Orbit":
         """Orbit from one size element (a, p or q), e, i, Omega, omega and the true anomaly nu."""
         e = inputs.eccentricity(e)
         _check_shapes(e=e, a=a, p=p, q=q, inc=inc, raan=raan, argp=argp, nu=nu)
@@ -102,7 +103,9 @@ class Orbit:
         return cls(_field(mu, shape), *fresh[:2], _field(angles[0], shape), *fresh[2:], mass=_mass(mass, shape))
 
     @classmethod
-    def from_vectors(cls, primary, r, v, *, mass=None):
+    def from_vectors(
+        cls, primary: Body | str | u.Quantity, r: u.Quantity, v: u.Quantity, *, mass: u.Quantity | None = None
+    ) -> "Orbit":
         """Orbit through the state r (length, shape (..., 3)) and v (speed, shape (..., 3))."""
         mu = inputs.gravitational_parameter(primary, PRIMARY)
         r_si = units.to_si(r, units.M, "position r")
@@ -112,7 +115,16 @@ class Orbit:
         return cls(np.broadcast_to(mu, shape).astype(float), *fields, mass=_mass(mass, shape))
 
     @classmethod
-    def circular(cls, primary, radius, *, inc=0 * u.deg, raan=0 * u.deg, nu=0 * u.deg, mass=None):
+    def circular(
+        cls,
+        primary: Body | str | u.Quantity,
+        radius: u.Quantity,
+        *,
+        inc: u.Quantity = 0 * u.deg,
+        raan: u.Quantity = 0 * u.deg,
+        nu: u.Quantity = 0 * u.deg,
+        mass: u.Quantity | None = None,
+    ) -> "Orbit":
         """Circular orbit of the given radius (e = 0, so nu is the argument of latitude)."""
         return cls.from_elements(primary, p=radius, e=0.0, inc=inc, raan=raan, nu=nu, mass=mass)
 
@@ -139,7 +151,7 @@ class Orbit:
 
     # ---- shape ----------------------------------------------------------------------------------
     @property
-    def shape(self):
+    def shape(self) -> tuple[int, ...]:
         """Batch shape of the orbits held."""
         return self.p.shape
 
@@ -155,83 +167,83 @@ class Orbit:
 
     # ---- elements -------------------------------------------------------------------------------
     @cached_property
-    def eccentricity(self):
+    def eccentricity(self) -> u.Quantity:
         """e (dimensionless)."""
         return self.e << u.one
 
     @cached_property
-    def semilatus_rectum(self):
+    def semilatus_rectum(self) -> u.Quantity:
         """p = h**2 / mu (m); the notes' l."""
         return self.p << units.M
 
     @cached_property
-    def semi_major_axis(self):
+    def semi_major_axis(self) -> u.Quantity:
         """a = p / (1 - e**2) (m); negative for hyperbolas, inf for the parabola."""
         return twobody.semi_major_axis(self.p, self.e) << units.M
 
     @cached_property
-    def inclination(self):
+    def inclination(self) -> u.Quantity:
         """i (rad), in [0, pi]."""
         return self.inc << units.RAD
 
     @cached_property
-    def ascending_node(self):
+    def ascending_node(self) -> u.Quantity:
         """Omega (rad), in [0, 2 pi); 0 for equatorial orbits."""
         return self.raan << units.RAD
 
     @cached_property
-    def argument_of_periapsis(self):
+    def argument_of_periapsis(self) -> u.Quantity:
         """omega (rad), in [0, 2 pi); 0 for circular orbits."""
         return self.argp << units.RAD
 
     @cached_property
-    def true_anomaly(self):
+    def true_anomaly(self) -> u.Quantity:
         """nu (rad), in (-pi, pi]."""
         return self.nu << units.RAD
 
     # ---- geometry (XXI.iv) ----------------------------------------------------------------------
     @cached_property
-    def periapsis_distance(self):
+    def periapsis_distance(self) -> u.Quantity:
         """r1 = a - c = p / (1 + e) (m)."""
         return twobody.periapsis_distance(self.p, self.e) << units.M
 
     @cached_property
-    def apoapsis_distance(self):
+    def apoapsis_distance(self) -> u.Quantity:
         """r2 = a + c = p / (1 - e) (m), ellipses only."""
         self._require_ellipse("apoapsis distance")
         return twobody.apoapsis_distance(self.p, self.e) << units.M
 
     @cached_property
-    def focal_distance(self):
+    def focal_distance(self) -> u.Quantity:
         """c = a e (m): centre of the ellipse to the star, ellipses only."""
         self._require_ellipse("focal distance")
         return twobody.focal_distance(self.p, self.e) << units.M
 
     @cached_property
-    def semi_minor_axis(self):
+    def semi_minor_axis(self) -> u.Quantity:
         """b = a sqrt(1 - e**2) (m), ellipses only."""
         self._require_ellipse("semi-minor axis")
         return twobody.semi_minor_axis(self.p, self.e) << units.M
 
     # ---- speeds ---------------------------------------------------------------------------------
     @cached_property
-    def periapsis_speed(self):
+    def periapsis_speed(self) -> u.Quantity:
         """v1 = sqrt(mu / p) (1 + e) (m/s)."""
         return twobody.periapsis_speed(self.p, self.e, self.mu) << units.M_PER_S
 
     @cached_property
-    def apoapsis_speed(self):
+    def apoapsis_speed(self) -> u.Quantity:
         """v2 = sqrt(mu / p) (1 - e) (m/s), ellipses only."""
         self._require_ellipse("apoapsis speed")
         return twobody.apoapsis_speed(self.p, self.e, self.mu) << units.M_PER_S
 
     @cached_property
-    def covertex_speed(self):
+    def covertex_speed(self) -> u.Quantity:
         """v_b = sqrt(mu / a) (m/s) at the ends of the minor axis, ellipses only."""
         self._require_ellipse("co-vertex speed")
         return twobody.covertex_speed(self.p, self.e, self.mu) << units.M_PER_S
 
-    def speed_at(self, r):
+    def speed_at(self, r: u.Quantity) -> u.Quantity:
         """Vis-viva speed sqrt(mu (2/r - 1/a)) (m/s) at distance r (length) from the star."""
         r_si = units.to_si(r, units.M, "distance r")
         require_positive(r_si, "distance r", "m")
@@ -243,68 +255,68 @@ class Orbit:
 
     # ---- dynamics (XXI.ii-iv) -------------------------------------------------------------------
     @cached_property
-    def specific_energy(self):
+    def specific_energy(self) -> u.Quantity:
         """E / m = -mu / (2 a) (J/kg)."""
         return twobody.specific_energy(self.p, self.e, self.mu) << units.J_PER_KG
 
     @cached_property
-    def specific_angular_momentum(self):
+    def specific_angular_momentum(self) -> u.Quantity:
         """h = sqrt(mu p) (m2/s)."""
         return twobody.specific_angular_momentum(self.p, self.mu) << units.M2_PER_S
 
     @cached_property
-    def areal_velocity(self):
+    def areal_velocity(self) -> u.Quantity:
         """dA/dt = h / 2 (m2/s), Kepler's second law."""
         return twobody.areal_velocity(self.p, self.mu) << units.M2_PER_S
 
     @cached_property
-    def energy(self):
+    def energy(self) -> u.Quantity:
         """E = -G M m / (2 a) (J)."""
         return self.specific_energy * (self._require_mass("energy E") << units.KG)
 
     @cached_property
-    def angular_momentum(self):
+    def angular_momentum(self) -> u.Quantity:
         """L = m sqrt(mu p) (kg m2/s)."""
         return self.specific_angular_momentum * (self._require_mass("angular momentum L") << units.KG)
 
     @cached_property
-    def potential_energy(self):
+    def potential_energy(self) -> u.Quantity:
         """U = -G M m / r (J) at the current position."""
         m = self._require_mass("potential energy U")
         return twobody.potential_energy(self.radius.to_value(units.M), self.mu, m) << units.J
 
     @cached_property
-    def kinetic_energy(self):
+    def kinetic_energy(self) -> u.Quantity:
         """K = m v**2 / 2 = G M m (1/r - 1/(2a)) (J) at the current position."""
         m = self._require_mass("kinetic energy K")
         return 0.5 * m * self.speed.to_value(units.M_PER_S) ** 2 << units.J
 
     # ---- time (XXI.iii, XXI.vii) ----------------------------------------------------------------
     @cached_property
-    def period(self):
+    def period(self) -> u.Quantity:
         """T = 2 pi sqrt(a**3 / mu) (s), ellipses only."""
         self._require_ellipse("period T")
         return twobody.period(self.p, self.e, self.mu) << units.S
 
     @cached_property
-    def mean_motion(self):
+    def mean_motion(self) -> u.Quantity:
         """n = sqrt(mu / |a|**3) (rad/s); 2 sqrt(mu / p**3) on the parabola (rate of Barker's W)."""
         return anomalies.mean_motion(self.p, self.e, self.mu) << units.RAD_PER_S
 
     @cached_property
-    def covertex_times(self):
+    def covertex_times(self) -> tuple[u.Quantity, u.Quantity]:
         """(T1, T2) (s): co-vertex to co-vertex through periapsis, T (1/2 - e/pi), and through apoapsis."""
         self._require_ellipse("co-vertex times T1, T2")
         t1, t2 = twobody.covertex_times(self.p, self.e, self.mu)
         return t1 << units.S, t2 << units.S
 
     @cached_property
-    def mean_anomaly(self):
+    def mean_anomaly(self) -> u.Quantity:
         """M (rad): E - e sin E (ellipse), e sinh H - H (hyperbola), Barker's W (parabola)."""
         return anomalies.mean_from_true(self.nu, self.e) << units.RAD
 
     @cached_property
-    def time_since_periapsis(self):
+    def time_since_periapsis(self) -> u.Quantity:
         """t - T_periapsis = M / n (s), negative before the periapsis passage."""
         return anomalies.time_since_periapsis(self.nu, self.p, self.e, self.mu) << units.S
 
@@ -314,48 +326,48 @@ class Orbit:
         return elements.elements_to_state(self.p, self.e, self.inc, self.raan, self.argp, self.nu, self.mu)
 
     @cached_property
-    def r(self):
+    def r(self) -> u.Quantity:
         """Position vector (m), shape (..., 3)."""
         return self._state[0] << units.M
 
     @cached_property
-    def v(self):
+    def v(self) -> u.Quantity:
         """Velocity vector (m/s), shape (..., 3)."""
         return self._state[1] << units.M_PER_S
 
     @cached_property
-    def radius(self):
+    def radius(self) -> u.Quantity:
         """|r| = p / (1 + e cos nu) (m)."""
         return self.p / (1.0 + self.e * np.cos(self.nu)) << units.M
 
     @cached_property
-    def speed(self):
+    def speed(self) -> u.Quantity:
         """|v| (m/s) at the current position."""
         return np.sqrt(np.sum(self._state[1] ** 2, axis=-1)) << units.M_PER_S
 
     @cached_property
-    def eccentricity_vector(self):
+    def eccentricity_vector(self) -> u.Quantity:
         """e_vec = (v x h) / mu - r_hat (dimensionless), pointing to periapsis."""
         return elements.eccentricity_vector(*self._state, self.mu) << u.one
 
     @cached_property
-    def angular_momentum_vector(self):
+    def angular_momentum_vector(self) -> u.Quantity:
         """h = r x v (m2/s)."""
         return elements.angular_momentum_vector(*self._state) << units.M2_PER_S
 
     @cached_property
-    def laplace_runge_lenz(self):
+    def laplace_runge_lenz(self) -> u.Quantity:
         """A = p x L - m k r_hat = m**2 mu e_vec (kg2 m3/s2)."""
         m = self._require_mass("Laplace-Runge-Lenz vector")
         return elements.laplace_runge_lenz_vector(*self._state, self.mu, m) << (units.KG**2 * units.M3_PER_S2)
 
-    def propagate(self, dt):
+    def propagate(self, dt: u.Quantity) -> tuple[u.Quantity, u.Quantity]:
         """State vectors (r, v) a time dt (time Quantity, broadcasting) later, on the same Kepler orbit."""
         dt_si = units.to_si(dt, units.S, "time step dt")
         r, v = propagate.propagate(*self._state, self.mu, dt_si)
         return r << units.M, v << units.M_PER_S
 
-    def at(self, dt):
+    def at(self, dt: u.Quantity) -> "Orbit":
         """The Orbit reached a time dt later (same elements, new true anomaly)."""
         r, v = self.propagate(dt)
         return Orbit.from_vectors(
@@ -376,7 +388,7 @@ class Orbit:
         return quantities_html(repr(self), self.quantities())
 
     # ---- tables ---------------------------------------------------------------------------------
-    def quantities(self, only=None):
+    def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} of the section XXI quantities this orbit has (or `only` those)."""
         return quantity_table(self._table_entry, QUANTITY_NAMES, only)
 

@@ -5,11 +5,21 @@ restyled; axis labels carry units. `save(fig, path)` writes PNG, SVG or PDF atom
 """
 
 import io
+from collections.abc import Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import astropy.units as u
 import numpy as np
 
 from orbits.io import write_atomic
+
+if TYPE_CHECKING:
+    from orbits.binary import Binary
+    from orbits.cosmology import Cosmology
+    from orbits.flyby import Flyby
+    from orbits.lagrange import RestrictedThreeBody
+    from orbits.orbit import Orbit
 
 
 def _axes(ax):
@@ -48,7 +58,13 @@ def _conic_points(p, e, r_max, samples=721):
     return r * np.cos(nu), r * np.sin(nu)
 
 
-def orbit_plane(orbit, times=None, ax=None, unit=None, label=None):
+def orbit_plane(
+    orbit: "Orbit",
+    times: u.Quantity | None = None,
+    ax: Any = None,
+    unit: u.UnitBase | None = None,
+    label: str | None = None,
+) -> tuple[Any, Any]:
     """Draw a single Orbit in its own plane (perifocal frame: periapsis along +x, star at the origin).
 
     Marks the star (focus), periapsis, apoapsis, the centre and empty focus of an ellipse, the body's
@@ -92,7 +108,7 @@ def _mark_positions(ax, nus, radii, scale):
         ax.plot(x[1:], y[1:], marker=".", color="k", ls="none", alpha=0.6, label="body at given times")
 
 
-def flyby_plane(flyby, ax=None, unit=None):
+def flyby_plane(flyby: "Flyby", ax: Any = None, unit: u.UnitBase | None = None) -> tuple[Any, Any]:
     """Draw a single Flyby in its plane: the hyperbola about the focus, both asymptotes, the impact parameter b
     (the focus's distance from the incoming asymptote) and the closest approach; the title gives the deflection."""
     if flyby.shape != ():
@@ -130,7 +146,7 @@ def flyby_plane(flyby, ax=None, unit=None):
     return fig, ax
 
 
-def binary_plane(binary, ax=None, unit=None):
+def binary_plane(binary: "Binary", ax: Any = None, unit: u.UnitBase | None = None) -> tuple[Any, Any]:
     """Draw a single Binary in its orbital plane: both stars' ellipses about the centre of mass, the stars at
     their current positions and the line joining them."""
     if binary.shape != ():
@@ -158,7 +174,9 @@ def binary_plane(binary, ax=None, unit=None):
     return fig, ax
 
 
-def scale_factor_curves(models, t_max, ax=None, samples=200):
+def scale_factor_curves(
+    models: dict[str, "Cosmology"], t_max: u.Quantity, ax: Any = None, samples: int = 200
+) -> tuple[Any, Any]:
     """a(t) against cosmic time for {label: Cosmology}, from the big bang to t_max (time Quantity)."""
     fig, ax = _axes(ax)
     gyr = t_max.to_value(u.Gyr)
@@ -173,7 +191,9 @@ def scale_factor_curves(models, t_max, ax=None, samples=200):
     return fig, ax
 
 
-def lagrange_plane(system, ax=None, extent=1.5, points=401):
+def lagrange_plane(
+    system: "RestrictedThreeBody", ax: Any = None, extent: float = 1.5, points: int = 401
+) -> tuple[Any, Any]:
     """Rotating-frame view of a RestrictedThreeBody: the primaries, L1..L5, and the zero-velocity curves at the
     Jacobi constants of L1, L2 and L3 (a particle with that constant cannot enter where C(x, y) < C)."""
     fig, ax = _axes(ax)
@@ -203,7 +223,14 @@ def lagrange_plane(system, ax=None, extent=1.5, points=401):
     return fig, ax
 
 
-def ring_breakup(times, deviations, growth_rate, breakup_time, ax=None, seed=1e-16):
+def ring_breakup(
+    times: np.ndarray,
+    deviations: np.ndarray,
+    growth_rate: float,
+    breakup_time: float,
+    ax: Any = None,
+    seed: float = 1e-16,
+) -> tuple[Any, Any]:
     """Shape deviation of a ring against time (log), with the linear prediction seed * exp(rate t) and the
     predicted break-up time (times in the ring's time unit)."""
     fig, ax = _axes(ax)
@@ -225,7 +252,7 @@ def ring_breakup(times, deviations, growth_rate, breakup_time, ax=None, seed=1e-
     return fig, ax
 
 
-def validation_residuals(report, ax=None):
+def validation_residuals(report: Any, ax: Any = None) -> tuple[Any, Any]:
     """Position error |dr| / r_max against time, per scene and backend, on log axes (a ValidationReport)."""
     fig, ax = _axes(ax)
     for k, scene in enumerate(report.scenes):
@@ -240,7 +267,7 @@ def validation_residuals(report, ax=None):
     return fig, ax
 
 
-def work_precision(rows, columns=3):
+def work_precision(rows: Sequence[Any], columns: int = 3) -> tuple[Any, np.ndarray]:
     """Error against wall time (log-log), one panel per problem and one line per method (orbits.tools.precision rows).
 
     The closed-form answer is a star; runs whose error is zero sit on the bottom edge at 1e-17.
@@ -274,7 +301,7 @@ def work_precision(rows, columns=3):
     return fig, axes
 
 
-def save(fig, path):
+def save(fig: Any, path: str | Path) -> None:
     """Write the figure to `path` atomically; the format follows the suffix (.png, .svg or .pdf)."""
     suffix = str(path).rsplit(".", 1)[-1].lower()
     if suffix not in ("png", "svg", "pdf"):

@@ -11,11 +11,15 @@ periapsis passage. Conserved quantities need no closed form: they are measured o
 
 import time
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from orbits.core import anomalies, elements, propagate, twobody
 from orbits.core.errors import SceneError
+
+if TYPE_CHECKING:
+    from orbits.scene import Scene
 
 CLOSED_FORM = "two-body closed form (universal variables)"
 
@@ -32,13 +36,13 @@ class Prediction:
     method: str = CLOSED_FORM
 
 
-def has_closed_form(scene):
+def has_closed_form(scene: "Scene") -> bool:
     """True for one massive body plus test particles, or exactly two massive bodies."""
     n_active, n = scene.n_active, len(scene.bodies)
     return n_active == 1 or (n_active == 2 and n == 2)
 
 
-def predict(scene):
+def predict(scene: "Scene") -> Prediction:
     """The analytic Prediction of every ask of the scene that needs one (SceneError if none exists)."""
     needs = {"positions", "period", "closest_approach"} & set(scene.asks)
     if needs and not has_closed_form(scene):
@@ -63,7 +67,7 @@ def _pair(scene, i):
     return j, gm_j + gm_i, gm_i / (gm_j + gm_i)
 
 
-def two_body_states(scene, times):
+def two_body_states(scene: "Scene", times: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """(K, N, 3) positions (m) and velocities (m/s) of every body at `times` (s), from the closed form."""
     times = np.asarray(times, dtype=float)
     r0, v0 = scene.positions, scene.velocities
@@ -87,7 +91,7 @@ def two_body_states(scene, times):
     return positions, velocities
 
 
-def period_of(scene, i):
+def period_of(scene: "Scene", i: int) -> float:
     """T = 2 pi sqrt(a**3 / mu) (s) of body i's relative orbit (SceneError for open orbits)."""
     orbit = scene.bodies[i].orbit
     if orbit.e >= 1:
@@ -95,7 +99,7 @@ def period_of(scene, i):
     return float(twobody.period(orbit.p, orbit.e, _pair(scene, i)[1]))
 
 
-def closest_approach_of(scene, i):
+def closest_approach_of(scene: "Scene", i: int) -> tuple[float, float]:
     """(q, t_p): periapsis distance (m) and the time (s) of the next periapsis passage of body i."""
     orbit = scene.bodies[i].orbit
     mu = _pair(scene, i)[1]
@@ -111,19 +115,21 @@ def closest_approach_of(scene, i):
     return float(twobody.periapsis_distance(orbit.p, orbit.e)), t_p
 
 
-def relative_state(scene, i, positions, velocities):
+def relative_state(
+    scene: "Scene", i: int, positions: np.ndarray, velocities: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
     """Body i's state relative to its primary, (..., 3) each, from full (..., N, 3) states."""
     j = _pair(scene, i)[0]
     return positions[..., i, :] - positions[..., j, :], velocities[..., i, :] - velocities[..., j, :]
 
 
-def osculating(scene, i, positions, velocities):
+def osculating(scene: "Scene", i: int, positions: np.ndarray, velocities: np.ndarray) -> tuple[np.ndarray, ...]:
     """Osculating (p, e, i, Omega, omega, nu) of body i's relative orbit at each of the given states."""
     r, v = relative_state(scene, i, positions, velocities)
     return elements.state_to_elements(r, v, _pair(scene, i)[1])
 
 
-def measured_period(scene, i, t, position, velocity):
+def measured_period(scene: "Scene", i: int, t: float, position: np.ndarray, velocity: np.ndarray) -> float:
     """Period (s) implied by the phase body i reaches at t ~ T: T_num = 2 pi t / (2 pi + wrap(l(t) - l0)).
 
     The phase is the mean longitude l = Omega + omega + M, which stays well defined on circular and
@@ -138,13 +144,13 @@ def measured_period(scene, i, t, position, velocity):
     return t * turn / (turn + advance)
 
 
-def measured_closest_approach(scene, i, position, velocity):
+def measured_closest_approach(scene: "Scene", i: int, position: np.ndarray, velocity: np.ndarray) -> float:
     """Osculating periapsis distance p / (1 + e) (m) of body i's relative orbit at a state near periapsis."""
     p, e, *_ = osculating(scene, i, position, velocity)
     return float(p / (1 + e))
 
 
-def length_scale(scene, positions):
+def length_scale(scene: "Scene", positions: np.ndarray) -> float:
     """Largest separation (m) of an orbiting body from its primary along the (K, N, 3) trajectory
     `positions` (the largest distance between two bodies if none has an orbit); position errors are
     quoted relative to it."""
@@ -154,7 +160,9 @@ def length_scale(scene, positions):
                for i in scene.orbiting)
 
 
-def invariants(scene, positions, velocities):
+def invariants(
+    scene: "Scene", positions: np.ndarray, velocities: np.ndarray
+) -> dict[str, tuple[np.ndarray, float | None]]:
     """{name: (series, scale)} of quantities conserved along an exact trajectory, with the scale their
     drift is measured against (None: absolute).
 
@@ -188,7 +196,7 @@ def invariants(scene, positions, velocities):
     return result
 
 
-def drift(series, scale):
+def drift(series: np.ndarray, scale: float | None) -> float:
     """Largest change from the initial value, divided by `scale` (absolute change if scale is None)."""
     series = np.asarray(series)
     change = series - series[0]

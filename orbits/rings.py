@@ -13,6 +13,7 @@ mass above which a ring of n >= 7 is stable) from the 4n x 4n rotating-frame lin
 The matching N-body problem for rebound and heyoka is built in orbits.validate.builders.
 """
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -20,7 +21,7 @@ import astropy.units as u
 import numpy as np
 
 from orbits import inputs, units
-from orbits.constants import G
+from orbits.constants import Body, G
 from orbits.core import rings, twobody
 from orbits.core.checks import require_positive
 from orbits.core.errors import OrbitDomainError
@@ -42,7 +43,14 @@ class Ring:
     gm_central: np.ndarray
 
     @classmethod
-    def from_masses(cls, n, mass, radius, *, central_mass=None):
+    def from_masses(
+        cls,
+        n: int,
+        mass: Body | str | u.Quantity,
+        radius: u.Quantity,
+        *,
+        central_mass: Body | str | u.Quantity | None = None,
+    ) -> "Ring":
         """Ring of n (int >= 2) bodies of `mass` each (a mass or GM Quantity, a Body or a name) on a circle of
         `radius` (length), about `central_mass` (same forms, or None).
 
@@ -58,7 +66,7 @@ class Ring:
 
     # ---- closed forms (XXIII) -------------------------------------------------------------------
     @cached_property
-    def csc_sum(self):
+    def csc_sum(self) -> u.Quantity:
         """S_n = sum_{k=1}^{n-1} csc(pi k / n) (dimensionless), within 3 ulp (math.fsum over k < n/2)."""
         return rings.csc_sum(self.n) << u.one
 
@@ -67,51 +75,51 @@ class Ring:
         return self.gm * (0.25 * self.csc_sum.value) + self.gm_central
 
     @cached_property
-    def mass(self):
+    def mass(self) -> u.Quantity:
         """m = GM / G (kg) of each ring body."""
         return self.gm / G << units.KG
 
     @cached_property
-    def central_mass_ratio(self):
+    def central_mass_ratio(self) -> u.Quantity:
         """beta = M / m (dimensionless)."""
         return self.gm_central / self.gm << u.one
 
     @cached_property
-    def angular_velocity(self):
+    def angular_velocity(self) -> u.Quantity:
         """omega = sqrt((G m S_n / 4 + G M) / r**3) (rad/s)."""
         return twobody.circular_angular_velocity(self.r, self._gm_eff) << units.RAD_PER_S
 
     @cached_property
-    def period(self):
+    def period(self) -> u.Quantity:
         """T = 2 pi / omega (s)."""
         return 2.0 * np.pi / twobody.circular_angular_velocity(self.r, self._gm_eff) << units.S
 
     @cached_property
-    def speed(self):
+    def speed(self) -> u.Quantity:
         """v = sqrt((G m S_n / 4 + G M) / r) (m/s) of each body about the barycentre."""
         return twobody.circular_speed(self.r, self._gm_eff) << units.M_PER_S
 
     @cached_property
-    def potential_energy(self):
+    def potential_energy(self) -> u.Quantity:
         """U = -n G m**2 S_n / (4 r) - n G M m / r (J): every pair once, zero at infinite separation."""
         return -self.n * self.mass.value * self._gm_eff / self.r << units.J
 
     @cached_property
-    def kinetic_energy(self):
+    def kinetic_energy(self) -> u.Quantity:
         """K = n m v**2 / 2 = -U / 2 (J)."""
         return 0.5 * self.n * self.mass.value * self._gm_eff / self.r << units.J
 
     @cached_property
-    def energy(self):
+    def energy(self) -> u.Quantity:
         """E = U + K = U / 2 (J), the binding energy."""
         return -0.5 * self.n * self.mass.value * self._gm_eff / self.r << units.J
 
     @cached_property
-    def angular_momentum(self):
+    def angular_momentum(self) -> u.Quantity:
         """L = n m v r (kg m2/s) about the barycentre."""
         return self.n * self.mass.value * np.sqrt(self._gm_eff * self.r) << units.KG_M2_PER_S
 
-    def state_vectors(self, phase=0 * u.deg):
+    def state_vectors(self, phase: u.Quantity = 0 * u.deg) -> tuple[u.Quantity, u.Quantity]:
         """Positions (m) and velocities (m/s) of the n ring bodies, shape (n, 3): body k at angle
         phase + 2 pi k / n in the xy plane, counter-clockwise; the barycentre and central mass at rest at 0."""
         if np.ndim(self.r) != 0:
@@ -136,42 +144,42 @@ class Ring:
         return rings.growth_rate(self.n, self._beta)
 
     @cached_property
-    def eigenvalues(self):
+    def eigenvalues(self) -> u.Quantity:
         """Eigenvalues of the 4n x 4n rotating-frame linearisation (1/s), complex, shape (n, 4): row j is the
         Fourier mode j (perturbation of body k proportional to exp(2 pi i j k / n))."""
         return rings.eigenvalues(self.n, self._beta) * self._omega << 1 / u.s
 
     @cached_property
-    def linearly_stable(self):
+    def linearly_stable(self) -> bool:
         """True when no mode grows (every |Re lambda| <= 1e-9 omega)."""
         return self._growth[1] is None
 
     @cached_property
-    def growth_rate(self):
+    def growth_rate(self) -> u.Quantity:
         """sigma = largest Re(lambda) (1/s); 0 when linearly stable."""
         return self._growth[0] * self._omega << 1 / u.s
 
     @cached_property
-    def unstable_mode(self):
+    def unstable_mode(self) -> u.Quantity:
         """Fourier mode j of the fastest-growing perturbation (dimensionless); OrbitDomainError if stable."""
         self._require_unstable("unstable mode")
         return self._growth[1] << u.one
 
     @cached_property
-    def e_folding_time(self):
+    def e_folding_time(self) -> u.Quantity:
         """1 / sigma (s); OrbitDomainError if the ring is linearly stable."""
         self._require_unstable("e-folding time")
         return 1.0 / (self._growth[0] * self._omega) << units.S
 
     @cached_property
-    def breakup_time(self):
+    def breakup_time(self) -> u.Quantity:
         """ln(1e-3 / 1e-16) / sigma (s): the time for float64 round-off (1e-16 relative) to grow to a 1e-3
         deformation at the rate sigma; OrbitDomainError if the ring is linearly stable."""
         self._require_unstable("break-up time")
         return float(rings.breakup_time(self._growth[0], ROUND_OFF_SEED, BREAKUP_DEVIATION)) / self._omega << units.S
 
     @cached_property
-    def central_mass_threshold(self):
+    def central_mass_threshold(self) -> u.Quantity:
         """beta_c m (kg): the smallest central mass that makes this ring linearly stable (n >= 7 only;
         OrbitDomainError otherwise). beta_c / n**3 = 0.4077 (n = 7) ... 0.43504 (n -> infinity)."""
         if np.ndim(self.gm) != 0:
@@ -183,7 +191,7 @@ class Ring:
             raise OrbitDomainError(f"{quantity} is defined for unstable rings only; this ring is linearly stable")
 
     # ---- tables ---------------------------------------------------------------------------------
-    def quantities(self, only=None):
+    def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{name: Quantity} of the QUANTITY_NAMES this ring has (or `only` those, raising if one is undefined)."""
         return quantity_table(lambda name: getattr(self, name), QUANTITY_NAMES, only)
 

@@ -33,8 +33,10 @@ with mu = G (M_primary + m_body) (exact for an isolated pair); use exactly one o
 import contextlib
 import json
 import tomllib
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any, NoReturn
 
 import astropy.units as u
 import numpy as np
@@ -87,37 +89,37 @@ class Scene:
     tolerance: dict = field(default_factory=dict)
 
     @property
-    def n_active(self):
+    def n_active(self) -> int:
         """Number of massive bodies (they come first)."""
         return sum(not b.test_particle for b in self.bodies)
 
     @property
-    def gm(self):
+    def gm(self) -> np.ndarray:
         """(N,) GM of every body (m3/s2)."""
         return np.array([b.gm for b in self.bodies])
 
     @property
-    def positions(self):
+    def positions(self) -> np.ndarray:
         """(N, 3) initial positions (m)."""
         return np.array([b.position for b in self.bodies])
 
     @property
-    def velocities(self):
+    def velocities(self) -> np.ndarray:
         """(N, 3) initial velocities (m/s)."""
         return np.array([b.velocity for b in self.bodies])
 
     @property
-    def orbiting(self):
+    def orbiting(self) -> list[int]:
         """Indices of the bodies that were given an orbit (the subjects of period and closest approach)."""
         return [i for i, b in enumerate(self.bodies) if b.orbit is not None]
 
 
-def builtin_names():
+def builtin_names() -> list[str]:
     """Names of the built-in scenes, in the order `orbits validate` runs them."""
     return sorted(path.stem for path in BUILTIN_DIR.glob("*.toml"))
 
 
-def read(name_or_path) -> tuple[dict, str]:
+def read(name_or_path: str | Path) -> tuple[dict, str]:
     """(parsed dictionary, source path) of a built-in scene name or a .toml / .json file, read once."""
     path = Path(name_or_path)
     if not path.suffix and (BUILTIN_DIR / f"{name_or_path}.toml").exists():
@@ -132,12 +134,12 @@ def read(name_or_path) -> tuple[dict, str]:
     return data, str(path)
 
 
-def load(name_or_path) -> "Scene":
+def load(name_or_path: str | Path) -> "Scene":
     """Data scene from a built-in name, or from a .toml / .json file (model scenes: orbits.validate.scenes.load)."""
     return from_dict(*read(name_or_path))
 
 
-def from_dict(data, source="<scene>"):
+def from_dict(data: dict, source: str = "<scene>") -> Scene:
     """Validate a scene dictionary (the parsed TOML/JSON) and convert it to SI."""
     ctx = _Context(source)
     name = ctx.string(data, "name")
@@ -167,10 +169,10 @@ class _Context:
     def __init__(self, source):
         self.source = source
 
-    def fail(self, where, message):
+    def fail(self, where: str, message: str) -> NoReturn:
         raise SceneError(f"{self.source}: {where}: {message}")
 
-    def get(self, data, key, kind, where=None):
+    def get(self, data: dict, key: str, kind: type, where: str | None = None) -> Any:
         where = where or key
         if key not in data:
             self.fail(where, f"missing (a {kind.__name__} is required)")
@@ -178,23 +180,23 @@ class _Context:
             self.fail(where, f"{data[key]!r} must be a {kind.__name__}")
         return data[key]
 
-    def string(self, data, key, where=None):
+    def string(self, data: dict, key: str, where: str | None = None) -> str:
         return self.get(data, key, str, where)
 
-    def quantity(self, text, kind, where, bare_unit=None):
+    def quantity(self, text: str, kind: str, where: str, bare_unit: u.UnitBase | None = None) -> float:
         """The SI value (float) of a quantity string of the given kind (orbits.inputs.KINDS)."""
         with self.field(where):
             value = inputs.parse_quantity(text, kind, where, bare_unit)
         return float(value.to_value(inputs.KINDS[kind][0]))
 
-    def vector(self, text, kind, where):
+    def vector(self, text: str, kind: str, where: str) -> np.ndarray:
         """The SI value (3,) of a vector string 'X,Y,Z UNIT' of the given kind."""
         with self.field(where):
             value = inputs.parse_vector(text, kind, where)
         return value.to_value(inputs.KINDS[kind][0])
 
     @contextlib.contextmanager
-    def field(self, where):
+    def field(self, where: str) -> Iterator[None]:
         """Turn the input rules' errors inside the block into a SceneError naming the source and the field."""
         try:
             yield
@@ -202,7 +204,7 @@ class _Context:
             message = str(err).removeprefix(f"{where}: ")
             self.fail(where, message)
 
-    def number(self, data, key, where, default=None, low=-np.inf):
+    def number(self, data: dict, key: str, where: str, default: float | None = None, low: float = -np.inf) -> float:
         value = data.get(key, default)
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not np.isfinite(value) or value < low:
             self.fail(where, f"{value!r} must be a finite number >= {low}")

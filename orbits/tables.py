@@ -1,16 +1,21 @@
 """Quantity tables shared by the domain objects: {snake_case name: Quantity}, `only` selecting names."""
 
+from collections.abc import Callable, Collection, Iterable
+from typing import Any
+
 from orbits.core.errors import OrbitDomainError
 
 
-def check_names(names, allowed):
+def check_names(names: Iterable[str], allowed: Collection[str]) -> None:
     """Raise KeyError listing the allowed names if any of `names` is not one of them."""
     unknown = [n for n in names if n not in allowed]
     if unknown:
         raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(allowed)}")
 
 
-def quantity_table(lookup, allowed, only=None):
+def quantity_table(
+    lookup: Callable[[str], Any], allowed: Collection[str], only: Iterable[str] | None = None
+) -> dict[str, Any]:
     """{name: Quantity} for `only` (default: all `allowed`); lookup(name) returns a Quantity or a dict of them.
 
     Without `only`, names this object does not have (lookup raises OrbitDomainError, e.g. the period of a

@@ -36,17 +36,17 @@ def _reject_bool(value, name):
 
 
 #: Conversion factors already computed, {(from unit, to unit): scale}. Quantity.to_value recomputes the
-#: factor on every call (about 4 us of the 5 us it takes for a scalar); a lookup here takes 0.1 us.
+#: factor on every call; a dictionary lookup here does not.
 _SCALES = {}
 
 
-def to_si(value, unit, name):
+def to_si(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
     """float64 array of `value` (a Quantity) in `unit`; TypeError for bare numbers, UnitConversionError
     naming the argument for incompatible units.
 
     The value is the one Quantity.to_value gives (the same product value * scale), with the scale
     looked up in _SCALES; units that are not plain scale factors (logarithmic units) go through
-    to_value. Measured per scalar call: 1.3 us, against 5.5 us through to_value.
+    to_value.
     """
     _reject_bool(value, name)
     if not isinstance(value, u.Quantity):
@@ -76,7 +76,7 @@ def _scale(from_unit, to_unit):
     return scale
 
 
-def to_number(value, name):
+def to_number(value: float | np.ndarray | u.Quantity, name: str) -> np.ndarray:
     """float64 array of a dimensionless argument (plain number or dimensionless Quantity)."""
     _reject_bool(value, name)
     if isinstance(value, u.Quantity):

@@ -1,42 +1,214 @@
-"""Imports flow one way (interfaces -> domain -> core), and the heavy backends stay in their adapters."""
+"""The house's layering, checked at run time in fresh interpreters: what `sys.modules` holds after an import, and
+which import statements the code actually executes (every `import` goes through builtins.__import__, which a
+probe wraps to record importer -> imported), never by reading source text.
 
-import ast
-from pathlib import Path
+Layers, bottom up; a module may import its own layer and the layers below it:
+    0 core         orbits.core.*: float64 NumPy; numpy, the standard library and (in the _fast kernels) numba
+    1 base         units, constants, inputs (the input rules), nbody, io, tables, display
+    2 domain       orbit, kepler, binary, flyby, escape, lagrange, rings, cosmology, scene, predict, plot
+    3 validation   orbits.validate.*
+    4 tools        orbits.tools.* (benchmarks, precision sweeps, the mpmath reference, Dask)
+    5 interfaces   orbits_cli.*, which calls the public library only: never orbits.core nor a private module
+The package `orbits` itself is a lazy facade (PEP 562) for users, the tools and the command line.
+"""
 
-ROOT = Path(__file__).resolve().parent.parent
-STDLIB_OK = {"math", "functools", "dataclasses", "typing", "enum"}
+import json
+import os
+import subprocess
+import sys
+import textwrap
 
+import pytest
 
-def imports_of(path):
-    tree = ast.parse(path.read_text())
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Import):
-            yield from (alias.name for alias in node.names)
-        elif isinstance(node, ast.ImportFrom) and node.level == 0:
-            yield node.module
-
-
-# The compiled kernels (orbits/core/_fast*.py) also use numba and what locating its disk cache takes;
-# they are imported lazily, so `import orbits` never loads numba (tests/core/test_fast_kepler.py).
-FAST_KERNELS_OK = {"numba", "llvmlite", "os", "tempfile", "hashlib", "pathlib", "concurrent"}
-
-
-def test_core_imports_numpy_and_itself_only():
-    for path in (ROOT / "orbits" / "core").glob("*.py"):
-        allowed = STDLIB_OK | {"numpy"} | (FAST_KERNELS_OK if path.name.startswith("_fast") else set())
-        for name in imports_of(path):
-            top = name.split(".")[0]
-            assert top in allowed or name.startswith(("orbits.core", "orbits.core.errors")), (path, name)
+BASE = {"orbits.units", "orbits.constants", "orbits.inputs", "orbits.nbody", "orbits.io", "orbits.tables",
+        "orbits.display"}
+FACADE = "orbits"
+HEAVY = ("astropy", "rebound", "heyoka", "numba", "matplotlib", "dask", "distributed", "mpmath", "scipy")
 
 
-def test_library_never_imports_the_cli():
-    for path in (ROOT / "orbits").rglob("*.py"):
-        assert not any(n.startswith("orbits_cli") for n in imports_of(path)), path
+def layer(module):
+    """Rank of one of our modules in the layering (the facade ranks with the tools)."""
+    if module.startswith("orbits.core"):
+        return 0
+    if module in BASE:
+        return 1
+    if module.startswith("orbits.validate"):
+        return 3
+    if module.startswith("orbits.tools") or module == FACADE:
+        return 4
+    if module.startswith("orbits_cli"):
+        return 5
+    return 2
 
 
-def test_backends_are_imported_only_by_their_adapters():
-    for path in (ROOT / "orbits").rglob("*.py"):
-        for name in imports_of(path):
-            top = name.split(".")[0]
-            if top in ("rebound", "heyoka"):
-                assert path.name in ("_rebound.py", "_heyoka.py", "bench.py"), (path, name)
+def fresh(code, **env):
+    """Run `code` in a fresh interpreter and return what it printed (stdout), failing on a non-zero exit."""
+    result = subprocess.run([sys.executable, "-c", textwrap.dedent(code)], capture_output=True, text=True,
+                            env={**os.environ, "MPLBACKEND": "Agg", **env}, timeout=600)
+    assert result.returncode == 0, result.stderr
+    return result.stdout
+
+
+def loaded_after(statement):
+    """The top-level names of the heavy packages and our own modules in sys.modules after `statement`."""
+    out = fresh(f"""
+        import json, sys
+        {statement}
+        print(json.dumps(sorted(sys.modules)))
+    """)
+    return set(json.loads(out))
+
+
+def heavy(modules):
+    return {m for m in modules if m.split(".")[0] in HEAVY}
+
+
+def ours(modules):
+    return {m for m in modules if m == FACADE or m.startswith(("orbits.", "orbits_cli"))}
+
+
+# ---- what an import loads -------------------------------------------------------------------------------
+
+
+def test_import_orbits_loads_nothing_heavy():
+    modules = loaded_after("import orbits")
+    assert heavy(modules) == set() and ours(modules) == {"orbits"}
+
+
+CORE_MODULES = [
+    "anomalies", "binary", "checks", "elements", "errors", "escape", "flyby", "friedmann", "kepler", "lagrange",
+    "propagate", "quadrature", "rings", "sphere", "twobody", "_dd", "_roots",
+]
+
+
+@pytest.mark.parametrize("name", CORE_MODULES)
+def test_every_core_module_stands_alone(name):
+    """The core loads numpy and itself only: no astropy, no JIT, and nothing of the layers above."""
+    modules = loaded_after(f"import orbits.core.{name}")
+    assert heavy(modules) == set()
+    assert {m for m in ours(modules) if m != FACADE and not m.startswith("orbits.core")} == set()
+
+
+def test_the_public_api_loads_no_integrator_jit_or_plotting_library():
+    """Every public name (astropy is the API's unit system) without rebound, heyoka, numba or matplotlib."""
+    modules = loaded_after("import orbits; [getattr(orbits, name) for name in orbits.__all__]")
+    assert heavy(modules) <= {m for m in modules if m.split(".")[0] == "astropy"}
+    assert not any(m.startswith(("orbits.validate", "orbits.tools", "orbits_cli")) for m in modules)
+
+
+def test_the_validation_layer_loads_its_backends_only_to_integrate():
+    modules = loaded_after("import orbits.validate")
+    assert not {m.split(".")[0] for m in modules} & {"rebound", "heyoka", "numba", "matplotlib"}
+    assert not any(m.startswith(("orbits.tools", "orbits_cli")) for m in modules)
+
+
+def test_the_command_line_starts_without_the_library():
+    """`orbits --help` imports typer and the command modules only."""
+    modules = loaded_after("import orbits_cli.main")
+    assert heavy(modules) == set()
+    assert {m for m in ours(modules) if not m.startswith("orbits_cli")} == set()
+
+
+# ---- who imports whom, at run time ---------------------------------------------------------------------
+
+PROBE = """
+import builtins, importlib.util, json, os, pkgutil, sys, tempfile
+
+edges = set()
+real_import = builtins.__import__
+
+
+def ours(name):
+    return name == "orbits" or name.startswith(("orbits.", "orbits_cli"))
+
+
+def record(name, globals=None, locals=None, fromlist=(), level=0):
+    module = real_import(name, globals, locals, fromlist, level)
+    importer = (globals or {}).get("__name__", "")
+    if ours(importer):
+        base = importlib.util.resolve_name("." * level + name, globals.get("__package__")) if level else name
+        targets = [f"{base}.{item}" if f"{base}.{item}" in sys.modules else base for item in fromlist or ()]
+        for target in targets or [base]:
+            edges.add((importer, target))
+    return module
+
+
+builtins.__import__ = record
+
+import orbits, orbits_cli
+for package in (orbits, orbits_cli):
+    for info in pkgutil.walk_packages(package.__path__, package.__name__ + "."):
+        importlib.import_module(info.name)
+
+from typer.testing import CliRunner
+from orbits_cli.main import app
+
+out = tempfile.mkdtemp()
+runs = [
+    ["kepler", "--e", "0.5", "--M", "1"],
+    ["kepler", "--e", "2", "--nu", "30 deg"],
+    ["orbit", "Earth", "--format", "json"],
+    ["orbit", "--primary", "Earth", "--a", "7000 km", "--e", "0.1", "--plot", os.path.join(out, "o.png")],
+    ["orbit", "--primary", "Earth", "--r", "7000,0,0 km", "--v", "0,7.5,0 km/s"],
+    ["binary", "--m1", "Earth", "--m2", "Moon", "--a", "384399 km", "--plot", os.path.join(out, "b.png")],
+    ["flyby", "--primary", "Earth", "--v-inf", "1 km/s", "--b", "10000 km", "--plot", os.path.join(out, "f.png")],
+    ["lagrange", "Earth", "Moon"],
+    ["ring", "3", "--m", "1 kg", "--r", "1 m"],
+    ["escape", "cosmic"],
+    ["escape", "geo", "Earth"],
+    ["cosmology", "--z", "1", "--plot", os.path.join(out, "c.png")],
+    ["validate", "circular", "expanding_universe", "--output", os.path.join(out, "v.json"),
+     "--plot", os.path.join(out, "v.png")],
+    ["info"],
+]
+for args in runs:
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 0, (args, result.output)
+print(json.dumps(sorted(edges)))
+"""
+
+
+@pytest.fixture(scope="module")
+def edges():
+    """(importer, imported) for every import statement executed while importing every module of orbits and
+    orbits_cli and running each command-line verb once."""
+    return [tuple(edge) for edge in json.loads(fresh(PROBE).splitlines()[-1])]
+
+
+def test_the_probe_sees_the_imports_inside_functions(edges):
+    """The record is not vacuous: the lazy imports inside commands and adapters are there."""
+    assert ("orbits_cli.commands.validate", "orbits.validate") in edges
+    assert ("orbits.validate._rebound", "rebound") in edges and ("orbits.validate._heyoka", "heyoka") in edges
+    assert any(src.startswith("orbits.core") and dst.startswith("orbits.core") for src, dst in edges)
+
+
+def test_imports_flow_one_way(edges):
+    """No module imports a layer above its own (e.g. domain -> validation, validation -> tools, core -> units)."""
+    upward = [(src, dst) for src, dst in edges
+              if src != FACADE and dst.split(".")[0] in ("orbits", "orbits_cli") and layer(dst) > layer(src)]
+    assert upward == []
+
+
+def test_the_command_line_calls_only_the_public_library(edges):
+    """orbits_cli never reaches into the numeric core or a private module: it calls unit-aware functions."""
+    behind = [(src, dst) for src, dst in edges if src.startswith("orbits_cli") and dst.startswith("orbits.")
+              and (dst.startswith("orbits.core") or any(part.startswith("_") for part in dst.split(".")))]
+    assert behind == []
+
+
+def test_the_core_imports_numpy_and_the_standard_library_only(edges):
+    allowed = set(sys.stdlib_module_names) | {"numpy"}
+    kernels = allowed | {"numba", "llvmlite"}
+    outside = [(src, dst) for src, dst in edges if src.startswith("orbits.core") and not dst.startswith("orbits")
+               and dst.split(".")[0] not in (kernels if src.split(".")[-1].startswith("_fast") else allowed)]
+    assert outside == []
+
+
+def test_rebound_and_heyoka_are_imported_by_their_adapters_and_the_benchmarks_only(edges):
+    importers = {src for src, dst in edges if dst.split(".")[0] in ("rebound", "heyoka")}
+    assert importers <= {"orbits.validate._rebound", "orbits.validate._heyoka", "orbits.tools.bench"}
+
+
+def test_the_library_never_imports_the_command_line(edges):
+    assert [(src, dst) for src, dst in edges if src.startswith("orbits") and not src.startswith("orbits_cli")
+            and dst.startswith("orbits_cli")] == []

@@ -30,7 +30,7 @@ def kepler(
     repeats: RepeatsOption = 3,
     output: OutputOption = None,
     fmt: FormatOption = Format.table,
-):
+) -> None:
     """Kepler solvers: throughput and worst error of orbits and its peers, measured in one run."""
     from orbits.tools.bench import bench_kepler, format_rows, rows_to_json
 
@@ -44,7 +44,7 @@ def propagate(
     repeats: RepeatsOption = 3,
     output: OutputOption = None,
     fmt: FormatOption = Format.table,
-):
+) -> None:
     """Two-body propagation: throughput and worst position and velocity error of orbits and its peers."""
     from orbits.tools.bench import bench_propagate, format_propagate, rows_to_json
 
@@ -57,7 +57,7 @@ def api(
     repeats: RepeatsOption = 5,
     output: OutputOption = None,
     fmt: FormatOption = Format.table,
-):
+) -> None:
     """Unit-aware API: time per call of orbits.Orbit against the float64 core on the same inputs."""
     from orbits.tools.bench import bench_api, format_api, rows_to_json
 
@@ -76,7 +76,7 @@ def cli(
     runs: Annotated[int, typer.Option(help="fresh processes per command")] = 10,
     output: OutputOption = None,
     fmt: FormatOption = Format.table,
-):
+) -> None:
     """Command-line cold start: median wall time of fresh `orbits` processes."""
     from orbits.tools.bench import bench_cli, format_cli, rows_to_json
 
@@ -88,7 +88,7 @@ def validate(
     sweep: Annotated[bool, typer.Option(help="also time dask sweeps (LocalCluster of threads, of processes)")] = True,
     output: OutputOption = None,
     fmt: FormatOption = Format.table,
-):
+) -> None:
     """Validation: where the time of `orbits validate` goes, scene by scene and stage by stage."""
     from orbits.tools.bench import bench_validate, format_validate, rows_to_json
 
@@ -100,7 +100,7 @@ def all_(
     quick: Annotated[bool, typer.Option(help="a tenth of the default sizes and 3 CLI runs")] = False,
     output: OutputOption = None,
     fmt: FormatOption = Format.table,
-):
+) -> None:
     """Every benchmark above in one run: one table each, one JSON object {benchmark: rows}."""
     from orbits.tools.bench import bench_all, format_report, report_to_json
 

@@ -1,6 +1,6 @@
 """`orbits binary`: every section XXII quantity of two finite masses about their centre of mass."""
 
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
@@ -16,6 +16,12 @@ from orbits_cli.options import (
     TrueAnomalyOption,
     save_plot,
 )
+
+if TYPE_CHECKING:
+    from astropy.units import Quantity
+
+    from orbits.binary import Binary
+    from orbits.constants import Body
 
 MASS_HELP = "body name (Earth, Moon, Sun, Jupiter), mass ('1.989e30 kg', '1 solMass') or GM ('3.986e14 m3/s2')"
 
@@ -35,7 +41,7 @@ def command(
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
-):
+) -> None:
     """Masses, relative orbit, each star's orbit about the centre of mass, energy and angular momentum (XXII)."""
     from orbits import inputs
     from orbits_cli import render
@@ -48,7 +54,19 @@ def command(
     render.emit(f"Binary of {m1} and {m2}", result.quantities(inputs.names(only)), fmt.value)
 
 
-def build(m1, m2, a, p, q, period, e, inc, raan, argp, nu):
+def build(
+    m1: str,
+    m2: str,
+    a: str | None,
+    p: str | None,
+    q: str | None,
+    period: str | None,
+    e: float,
+    inc: str,
+    raan: str,
+    argp: str,
+    nu: str,
+) -> "Binary":
     """The Binary described by the options; BadParameter when no size (or more than one) is given."""
     from orbits import Binary, inputs
     from orbits_cli import params
@@ -68,7 +86,7 @@ def build(m1, m2, a, p, q, period, e, inc, raan, argp, nu):
     )
 
 
-def mass_or_body(text, option):
+def mass_or_body(text: str, option: str) -> "Body | Quantity":
     """A body (name), mass or GM parsed from `text`; BadParameter naming `option` otherwise."""
     from orbits import OrbitDomainError, inputs
 

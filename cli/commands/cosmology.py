@@ -1,10 +1,18 @@
 """`orbits cosmology`: the expanding universe (XXIV) and the Friedmann models around it, at a redshift or a time."""
 
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
 from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
+
+if TYPE_CHECKING:
+    from collections.abc import Mapping
+
+    import numpy
+    from astropy.units import Quantity
+
+    from orbits.cosmology import Cosmology
 
 NOTES_HUBBLE = "0.5e-10 / yr"  # XXIV.iv's H, which gives the notes' age 1.33e10 yr
 
@@ -33,7 +41,7 @@ def command(
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
-):
+) -> None:
     """H(z), age, lookback time, comoving distance and a(t) of a Friedmann universe, today or at --z or --t.
 
     Einstein-de Sitter with the notes' H = 0.5e-10 / yr by default (XXIV.iv: age 1.33e10 yr). Give --Om alone
@@ -53,7 +61,7 @@ def command(
     render.emit(title(cosmology), display_units(table), fmt.value)
 
 
-def build(h0, om, ol, orad, ok):
+def build(h0: str, om: float | None, ol: float | None, orad: float | None, ok: float | None) -> "Cosmology":
     """The Cosmology of the options: Einstein-de Sitter when no density is given."""
     from orbits import Cosmology
 
@@ -65,14 +73,14 @@ def build(h0, om, ol, orad, ok):
     return Cosmology.from_densities(hubble, Om0=om, Ol0=ol, Or0=orad, Ok0=ok)
 
 
-def hubble_constant(text):
+def hubble_constant(text: str) -> "Quantity":
     """H0 Quantity from "VALUE UNIT" with units of 1 / time ("70 km/s/Mpc", "0.07 / Gyr")."""
     from orbits import inputs
 
     return inputs.parse_quantity(text, "rate", "--H0")
 
 
-def epoch(z, t):
+def epoch(z: str | None, t: str | None) -> "dict[str, Quantity | numpy.ndarray | float]":
     """{"z": redshifts} or {"t": time} from the options (neither: today)."""
     import numpy as np
 
@@ -91,7 +99,7 @@ def epoch(z, t):
     return {"z": values[0] if values.size == 1 else values}
 
 
-def title(cosmology):
+def title(cosmology: "Cosmology") -> str:
     """E.g. "Einstein-de Sitter, H0 = 48.8896 km/s/Mpc, Om = 1" (the nonzero densities only)."""
     import astropy.units as u
 
@@ -102,7 +110,7 @@ def title(cosmology):
     return f"{_TITLES[cosmology.method]}, H0 = {h0:.6g} km/s/Mpc{densities}"
 
 
-def display_units(quantities):
+def display_units(quantities: "Mapping[str, Quantity]") -> "dict[str, Quantity]":
     """The table in astronomers' units: times in Gyr, lengths in Mpc, rates in km/s/Mpc."""
     import astropy.units as u
 

@@ -24,7 +24,7 @@ def speed(
         str | None, typer.Option(help="distance from the centre (default: a named body's equatorial radius)")
     ] = None,
     fmt: FormatOption = Format.table,
-):
+) -> None:
     """Escape speed sqrt(2 G M / r) at a distance from a body's centre (at its surface by default)."""
     import astropy.units as u
 
@@ -50,7 +50,7 @@ def cosmic(
     ] = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
-):
+) -> None:
     """First, second and third cosmic velocities (XXI.ix): sqrt(g R), sqrt(2 g R) and the patched-conic third."""
     from orbits import CosmicVelocities, inputs
     from orbits_cli import render
@@ -75,7 +75,7 @@ def geo(
     radius: Annotated[str | None, typer.Option(help="body radius, for the altitude (default: the body's)")] = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
-):
+) -> None:
     """Synchronous orbit of a rotating body (XXI.x): geosynchronous / geostationary radius and altitude for Earth."""
     from orbits import SynchronousOrbit, inputs
     from orbits_cli import render
@@ -92,7 +92,7 @@ def elongation(
     inner: Annotated[str, typer.Option(help="inner orbit radius ('0.723 AU') or a named body")],
     outer: Annotated[str, typer.Option(help="outer (observer's) orbit radius ('1 AU') or a named body")],
     fmt: FormatOption = Format.table,
-):
+) -> None:
     """Maximum elongation arcsin(r / R) of an inner planet seen from an outer one (XXI.xi), circular orbits."""
     import astropy.units as u
 

@@ -1,11 +1,14 @@
 """`orbits flyby`: a hyperbolic encounter from the speed at infinity and the impact parameter (XXI.vi, XXII.vi)."""
 
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
 from orbits_cli.commands.binary import MASS_HELP, mass_or_body
 from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
+
+if TYPE_CHECKING:
+    from orbits.flyby import Flyby
 
 
 def command(
@@ -24,7 +27,7 @@ def command(
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
-):
+) -> None:
     """Closest approach, speed there, eccentricity, semi-major axis and deflection of a flyby (XXI.vi, XXII.vi)."""
     from orbits import inputs
     from orbits_cli import render
@@ -37,7 +40,9 @@ def command(
     render.emit(title, result.quantities(inputs.names(only)), fmt.value)
 
 
-def build(primary, v_inf, b, periapsis, mass, secondary):
+def build(
+    primary: str, v_inf: str, b: str | None, periapsis: str | None, mass: str | None, secondary: str | None
+) -> "tuple[Flyby, str]":
     """(Flyby, title) from the options; BadParameter for inconsistent combinations."""
     from orbits import Flyby, inputs
 

@@ -5,13 +5,14 @@ import os
 import platform
 from importlib import metadata
 from pathlib import Path
+from typing import Any
 
 from orbits_cli.options import Format, FormatOption
 
 _PACKAGES = ["orbits", "numpy", "astropy", "rebound", "heyoka", "typer", "rich", "mpmath"]
 
 
-def command(fmt: FormatOption = Format.table):
+def command(fmt: FormatOption = Format.table) -> None:
     """Versions of orbits and its dependencies, cache locations, and the constants' sources."""
     show(fmt.value)
 
@@ -23,7 +24,7 @@ def _version(name):
         return "not installed"
 
 
-def collect():
+def collect() -> dict[str, Any]:
     """Facts about this installation, without importing the heavy backends."""
     from orbits.constants import BODIES
 
@@ -37,7 +38,7 @@ def collect():
     }
 
 
-def show(fmt):
+def show(fmt: str) -> None:
     """Print the facts as a table or JSON."""
     from rich.console import Console
     from rich.table import Table

@@ -1,10 +1,13 @@
 """`orbits kepler`: anomaly conversions on any conic."""
 
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
 from orbits_cli.options import Format, FormatOption
+
+if TYPE_CHECKING:
+    from astropy.units import Quantity
 
 
 def command(
@@ -14,14 +17,14 @@ def command(
     ] = None,
     true: Annotated[str | None, typer.Option("--nu", help="true anomaly, e.g. '120 deg'")] = None,
     fmt: FormatOption = Format.table,
-):
+) -> None:
     """Anomaly conversions: from the mean anomaly (--M) or the true anomaly (--nu) to all the others."""
     from orbits_cli import render
 
     render.emit(f"Kepler's equation, e = {e}", anomalies_from(e, mean, true), fmt.value)
 
 
-def anomalies_from(e, mean, true):
+def anomalies_from(e: float, mean: str | None, true: str | None) -> "dict[str, Quantity]":
     """{name: Quantity}: mean, eccentric / hyperbolic / parabolic and true anomalies for one e."""
     import astropy.units as u
 

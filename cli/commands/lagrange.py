@@ -1,11 +1,14 @@
 """`orbits lagrange`: the five Lagrange points of a circular binary, their Jacobi constants and stability."""
 
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
 from orbits_cli.commands.binary import MASS_HELP, mass_or_body
 from orbits_cli.options import Format, FormatOption, OnlyOption
+
+if TYPE_CHECKING:
+    from orbits.lagrange import RestrictedThreeBody
 
 
 def command(
@@ -18,7 +21,7 @@ def command(
     points: Annotated[str, typer.Option("--points", help="comma-separated points, e.g. L1,L4")] = "L1,L2,L3,L4,L5",
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
-):
+) -> None:
     """Lagrange points L1..L5 (rotating frame, x from M to m), Jacobi constants and linear stability (XXII.viii).
 
     growth_rate is 0 for a linearly stable point; eigenvalues are (re, im) pairs in 1/s.
@@ -32,7 +35,7 @@ def command(
     render.emit(title, system.quantities(inputs.names(only), points=inputs.names(points)), fmt.value)
 
 
-def build(primary, secondary, r):
+def build(primary: str, secondary: str, r: str | None) -> "RestrictedThreeBody":
     """The RestrictedThreeBody of the two bodies at separation r (None: the catalogued mean distance)."""
     from orbits import RestrictedThreeBody, inputs
 

@@ -1,6 +1,6 @@
 """`orbits orbit`: every section XXI quantity of an orbit from a named body, elements or a state vector."""
 
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
@@ -16,6 +16,9 @@ from orbits_cli.options import (
     TrueAnomalyOption,
     save_plot,
 )
+
+if TYPE_CHECKING:
+    from orbits.orbit import Orbit
 
 
 def command(
@@ -41,7 +44,7 @@ def command(
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
-):
+) -> None:
     """Every section XXI quantity of an orbit, from elements, a state vector, or a named body."""
     from orbits import inputs
     from orbits_cli import render
@@ -55,7 +58,21 @@ def command(
     render.emit(title, quantities, fmt.value)
 
 
-def build(body_name, primary, a, p, q, e, inc, raan, argp, nu, r, v, mass):
+def build(
+    body_name: str | None,
+    primary: str,
+    a: str | None,
+    p: str | None,
+    q: str | None,
+    e: float,
+    inc: str,
+    raan: str,
+    argp: str,
+    nu: str,
+    r: str | None,
+    v: str | None,
+    mass: str | None,
+) -> "tuple[Orbit, str]":
     """(Orbit, title) from the command's options; BadParameter for inconsistent combinations."""
     from orbits import Orbit, body
     from orbits.inputs import parse_primary, parse_quantity, parse_vector

@@ -16,7 +16,7 @@ def command(
     output: Annotated[str | None, typer.Option(help="also write every run as JSON to this file (atomically)")] = None,
     plot: PlotOption = None,
     fmt: FormatOption = Format.table,
-):
+) -> None:
     """Sweep each integrator's accuracy knob on the same problems; error against run time, with a summary."""
     import dataclasses
     import json

@@ -17,7 +17,7 @@ def command(
     ] = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
-):
+) -> None:
     """Angular velocity, period, speed, U, K, E, L of a ring (XXIII) and its linear stability: growth rate,
     break-up time from float64 round-off, and the central mass that makes a ring of n >= 7 stable."""
     from orbits import Ring, inputs

@@ -22,7 +22,7 @@ def command(
     scheduler: Annotated[
         str | None, typer.Option(help="with --sweep: dask scheduler address, e.g. tcp://host:8786 (default: local)")
     ] = None,
-):
+) -> None:
     """Cross-check the analytic answers of the built-in scenes (or the given ones) against N-body codes."""
     import json
     import sys

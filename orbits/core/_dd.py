@@ -4,18 +4,19 @@ Error-free transformations after Dekker (1971) and Knuth; no FMA is assumed.
 """
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 _SPLITTER = 134217729.0  # 2**27 + 1
 
 
-def split(a):
+def split(a: ArrayLike) -> tuple[float | np.ndarray, float | np.ndarray]:
     """Veltkamp split a = hi + lo, each half with at most 26 significant bits."""
     t = _SPLITTER * a
     hi = t - (t - a)
     return hi, a - hi
 
 
-def two_product(a, b):
+def two_product(a: ArrayLike, b: ArrayLike) -> tuple[float | np.ndarray, float | np.ndarray]:
     """Exact product a * b = p + err (Dekker)."""
     p = a * b
     a_hi, a_lo = split(a)
@@ -23,40 +24,46 @@ def two_product(a, b):
     return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
 
 
-def two_sum(a, b):
+def two_sum(a: ArrayLike, b: ArrayLike) -> tuple[float | np.ndarray, float | np.ndarray]:
     """Exact sum a + b = s + err (Knuth)."""
     s = a + b
     bb = s - a
     return s, (a - (s - bb)) + (b - bb)
 
 
-def add(x, y):
+def add(
+    x: tuple[ArrayLike, ArrayLike], y: tuple[ArrayLike, ArrayLike]
+) -> tuple[float | np.ndarray, float | np.ndarray]:
     """(x_hi + x_lo) + (y_hi + y_lo) as a double-double."""
     s, e = two_sum(x[0], y[0])
     return two_sum(s, e + x[1] + y[1])
 
 
-def mul(x, y):
+def mul(
+    x: tuple[ArrayLike, ArrayLike], y: tuple[ArrayLike, ArrayLike]
+) -> tuple[float | np.ndarray, float | np.ndarray]:
     """(x_hi + x_lo) * (y_hi + y_lo) as a double-double."""
     p, e = two_product(x[0], y[0])
     return two_sum(p, e + x[0] * y[1] + x[1] * y[0])
 
 
-def div(x, y):
+def div(
+    x: tuple[ArrayLike, ArrayLike], y: tuple[ArrayLike, ArrayLike]
+) -> tuple[float | np.ndarray, float | np.ndarray]:
     """(x_hi + x_lo) / (y_hi + y_lo) as a double-double (one correction step)."""
     q1 = x[0] / y[0]
     r = add(x, mul(y, (-q1, np.zeros_like(q1))))
     return two_sum(q1, r[0] / y[0])
 
 
-def sqrt(x):
+def sqrt(x: tuple[ArrayLike, ArrayLike]) -> tuple[float | np.ndarray, float | np.ndarray]:
     """Square root of a positive double-double (one Newton correction)."""
     s = np.sqrt(x[0])
     p, e = two_product(s, s)
     return two_sum(s, ((x[0] - p) - e + x[1]) / (2.0 * s))
 
 
-def dot(a, b):
+def dot(a: np.ndarray, b: np.ndarray) -> tuple[float | np.ndarray, float | np.ndarray]:
     """Dot product along the last axis as a double-double."""
     total = (np.zeros(a.shape[:-1]), np.zeros(a.shape[:-1]))
     for k in range(a.shape[-1]):

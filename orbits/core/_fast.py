@@ -1,12 +1,10 @@
 """Compiled kernels: loading numba lazily, its on-disk cache, and splitting a batch over the cores.
 
 The kernels (orbits/core/_fast_kepler.py, _fast_propagate.py) are numba functions compiled with
-``cache=True``: the first call ever compiles them (about 15 s for the Kepler solvers, 29 s for the
-propagator, once per machine and version), every later process loads the machine code from the
-on-disk cache. numba itself is imported only when a kernel is first needed, never by ``import orbits``
-or ``orbits --help``. Measured first call in a fresh process: 0.43 s, of which importing numba takes
-0.14-0.24 s and initialising its CPU target 0.3 s, 0.25 s of that being numba's BLAS probe importing
-scipy.linalg when scipy is installed (orbits does not need scipy).
+``cache=True``: the first call ever compiles them, once per machine and version; every later process
+loads the machine code from the on-disk cache. numba itself is imported only when a kernel is first
+needed, never by ``import orbits`` or ``orbits --help``; a first call in a fresh process still pays for
+importing numba and initialising its CPU target (timings: the README's Benchmarks section).
 
 Where the cache lives: a folder ``orbits-<digest>`` under the first writable of ``NUMBA_CACHE_DIR`` (if
 set), ``orbits/core/__pycache__``, the user cache (``$XDG_CACHE_HOME`` or ``~/.cache``)/numba and the
@@ -32,7 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
-#: Smallest batch worth a second thread: below it the hand-off (about 30 us) outweighs the gain.
+#: Smallest batch worth a second thread: below it the hand-off to the thread pool outweighs the gain.
 PARALLEL_MIN = 1 << 15
 
 #: Modules of orbits/core whose constants and helpers the kernels (orbits/core/_fast*.py) compile in.

@@ -1,7 +1,10 @@
 """Safeguarded root finding, vectorised over arrays: Halley for the Kepler solvers and the universal-variable
 propagator, Newton (rtsafe) for the Friedmann scale factor. Both keep a bracket and bisect when a step leaves it."""
 
+from collections.abc import Callable
+
 import numpy as np
+from numpy.typing import ArrayLike
 
 from orbits.core.errors import ConvergenceError
 
@@ -9,7 +12,14 @@ MAX_ITERATIONS = 60
 NEWTON_MAX_ITERATIONS = 100
 
 
-def halley_in_bracket(x, lo, hi, residual, what, inputs):
+def halley_in_bracket(
+    x: np.ndarray,
+    lo: np.ndarray,
+    hi: np.ndarray,
+    residual: Callable[[np.ndarray, tuple[np.ndarray, ...]], tuple[np.ndarray, np.ndarray, np.ndarray]],
+    what: str,
+    inputs: dict[str, ArrayLike],
+) -> np.ndarray:
     """Safeguarded Halley iteration for an increasing function inside [lo, hi].
 
     residual(x, active) returns (f, f', f'') at the points x[active]. Steps leaving the bracket are
@@ -48,7 +58,12 @@ def halley_in_bracket(x, lo, hi, residual, what, inputs):
     return np.where(np.isfinite(polished) & (f != 0), polished, x)
 
 
-def newton_in_bracket(y, lo, hi, residual):
+def newton_in_bracket(
+    y: np.ndarray,
+    lo: np.ndarray,
+    hi: np.ndarray,
+    residual: Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]],
+) -> np.ndarray:
     """Newton's method for an increasing function of y inside [lo, hi], safeguarded as in rtsafe: a step that
     leaves the bracket or fails to halve the previous one is replaced by bisection.
 

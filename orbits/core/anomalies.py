@@ -9,6 +9,7 @@ per element from e.
 """
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from orbits.core.checks import check_finite
 from orbits.core.errors import OrbitDomainError
@@ -25,31 +26,31 @@ def _as_arrays(*values):
     return np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in values))
 
 
-def true_from_eccentric(E, e):
+def true_from_eccentric(E: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     """nu = 2 atan2(sqrt(1+e) sin(E/2), sqrt(1-e) cos(E/2)) (rad), 0 <= e < 1."""
     E, e = _as_arrays(E, e)
     return 2.0 * np.arctan2(np.sqrt(1.0 + e) * np.sin(0.5 * E), np.sqrt(1.0 - e) * np.cos(0.5 * E))
 
 
-def eccentric_from_true(nu, e):
+def eccentric_from_true(nu: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     """E = 2 atan2(sqrt(1-e) sin(nu/2), sqrt(1+e) cos(nu/2)) (rad), 0 <= e < 1."""
     nu, e = _as_arrays(nu, e)
     return 2.0 * np.arctan2(np.sqrt(1.0 - e) * np.sin(0.5 * nu), np.sqrt(1.0 + e) * np.cos(0.5 * nu))
 
 
-def mean_from_eccentric(E, e):
+def mean_from_eccentric(E: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     """M = E - e sin E = (1 - e) E + e (E - sin E) (rad), without cancellation near e = 1."""
     E, e = _as_arrays(E, e)
     return (1.0 - e) * E + e * x_minus_sin(E)
 
 
-def true_from_hyperbolic(H, e):
+def true_from_hyperbolic(H: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     """nu = 2 atan2(sqrt(e+1) tanh(H/2), sqrt(e-1)) (rad), e > 1 (no overflow for large H)."""
     H, e = _as_arrays(H, e)
     return 2.0 * np.arctan2(np.sqrt(e + 1.0) * np.tanh(0.5 * H), np.sqrt(e - 1.0))
 
 
-def hyperbolic_from_true(nu, e):
+def hyperbolic_from_true(nu: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     """H = 2 atanh(sqrt((e-1)/(e+1)) tan(nu/2)) (rad), e > 1 and 1 + e cos nu > 0."""
     nu, e = _as_arrays(nu, e)
     _check_inside_asymptotes(nu, e)
@@ -57,18 +58,18 @@ def hyperbolic_from_true(nu, e):
     return 2.0 * np.arctanh(t)
 
 
-def mean_from_hyperbolic(H, e):
+def mean_from_hyperbolic(H: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     """M = e sinh H - H = (e - 1) H + e (sinh H - H) (rad), without cancellation near e = 1."""
     H, e = _as_arrays(H, e)
     return (e - 1.0) * H + e * sinh_minus_x(H)
 
 
-def true_from_parabolic(D):
+def true_from_parabolic(D: ArrayLike) -> float | np.ndarray:
     """nu = 2 atan(D) (rad) for D = tan(nu/2)."""
     return 2.0 * np.arctan(np.asarray(D, dtype=float))
 
 
-def parabolic_from_true(nu):
+def parabolic_from_true(nu: ArrayLike) -> float | np.ndarray:
     """D = tan(nu/2) for |nu| < pi; nu = +/-pi lies at infinite distance and is rejected."""
     nu = np.asarray(nu, dtype=float)
     check_finite(nu, "true anomaly nu", "rad")
@@ -100,7 +101,7 @@ def _check_eccentricity_nonnegative(e):
         raise OrbitDomainError(f"eccentricity e = {float(e[e < 0].flat[0])!r} is negative; allowed e >= 0")
 
 
-def mean_from_true(nu, e):
+def mean_from_true(nu: ArrayLike, e: ArrayLike) -> np.ndarray:
     """Mean anomaly from the true anomaly for any conic: M (e != 1, rad) or Barker's W (e = 1)."""
     nu, e = _as_arrays(nu, e)
     _check_eccentricity_nonnegative(e)
@@ -113,7 +114,7 @@ def mean_from_true(nu, e):
     return out
 
 
-def true_from_mean(M, e):
+def true_from_mean(M: ArrayLike, e: ArrayLike) -> np.ndarray:
     """True anomaly (rad) from the mean anomaly M (e != 1) or Barker's W (e = 1), for any conic."""
     M, e = _as_arrays(M, e)
     _check_eccentricity_nonnegative(e)
@@ -125,7 +126,7 @@ def true_from_mean(M, e):
     return out
 
 
-def mean_motion(p, e, mu):
+def mean_motion(p: ArrayLike, e: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """n (rad/s): sqrt(mu / |a|**3) with a = p / (1 - e**2) for e != 1, and 2 sqrt(mu / p**3) for e = 1.
 
     For e = 1 this is the rate of Barker's W = D + D**3 / 3 (W = n t), so t = M / n on every conic.
@@ -135,12 +136,12 @@ def mean_motion(p, e, mu):
     return np.where(e == 1.0, 2.0, one_minus_e2**1.5) * np.sqrt(mu / p**3)
 
 
-def time_since_periapsis(nu, p, e, mu):
+def time_since_periapsis(nu: ArrayLike, p: ArrayLike, e: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """t - T (s) at true anomaly nu (rad) on the conic (p in m, mu in m**3/s**2): M / n on every conic."""
     return mean_from_true(nu, e) / mean_motion(p, e, mu)
 
 
-def true_at_time(t, p, e, mu):
+def true_at_time(t: ArrayLike, p: ArrayLike, e: ArrayLike, mu: ArrayLike) -> np.ndarray:
     """True anomaly (rad) reached t seconds after periapsis passage, for any conic."""
     t, p, e, mu = _as_arrays(t, p, e, mu)
     return true_from_mean(mean_motion(p, e, mu) * t, e)

@@ -16,6 +16,7 @@ arithmetic, so m2 / m1 = 1e-15 loses nothing (EDGE_CASES #45): tests/core/test_b
 """
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from orbits.core import _dd
 from orbits.core import propagate as kepler_propagate
@@ -25,7 +26,7 @@ from orbits.core.errors import OrbitDomainError
 FOUR_PI_SQUARED = 4.0 * np.pi**2
 
 
-def require_bound(e, quantity):
+def require_bound(e: ArrayLike, quantity: str) -> None:
     """Raise OrbitDomainError unless 0 <= e < 1: `quantity` exists on bound (elliptic) orbits only."""
     e = np.asarray(e, dtype=float)
     bad = ~((e >= 0) & (e < 1))
@@ -42,7 +43,7 @@ def _fraction(m, total):
     return _dd.div((m, np.zeros_like(m)), total)
 
 
-def mass_fractions(m1, m2):
+def mass_fractions(m1: ArrayLike, m2: ArrayLike) -> tuple[float | np.ndarray, float | np.ndarray]:
     """(x1, x2) = (m1 / (m1 + m2), m2 / (m1 + m2)) (dimensionless), each within 0.5 ulp (plus 2**-100 relative).
 
     The sum is kept exact in double-double arithmetic, so neither fraction is ever formed as 1 - the other.
@@ -53,7 +54,7 @@ def mass_fractions(m1, m2):
     return _fraction(m1, total)[0], _fraction(m2, total)[0]
 
 
-def reduced_mass(m1, m2):
+def reduced_mass(m1: ArrayLike, m2: ArrayLike) -> float | np.ndarray:
     """m1 m2 / (m1 + m2) = m1 x2 (kg, or m**3/s**2 for G m inputs), in double-double: within 0.5 ulp (plus
     2**-100 relative) and free of the overflow of m1 m2."""
     m1 = np.asarray(m1, dtype=float)
@@ -61,20 +62,20 @@ def reduced_mass(m1, m2):
     return _dd.mul((m1, np.zeros_like(m1)), _fraction(m2, total))[0]
 
 
-def star_parameter(gm_other, gm_total):
+def star_parameter(gm_other: ArrayLike, gm_total: ArrayLike) -> float | np.ndarray:
     """G m_j**3 / (m1 + m2)**2 = G m_j x_j**2 (m**3/s**2): the fixed-centre parameter of star i's orbit about
     the CM (XXII.iii); m_j is the other star's mass."""
     share = gm_other / gm_total
     return gm_other * share * share
 
 
-def semi_major_axis_from_period(period, mu):
+def semi_major_axis_from_period(period: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """a = (mu T**2 / (4 pi**2))**(1/3) = cbrt(mu (T / (2 pi))**2) (m) of a Kepler orbit of period T (s) with
     parameter mu (m**3/s**2): Kepler's third law solved for a (XXI.iii, XXII.iii)."""
     return np.cbrt(mu * (period / (2.0 * np.pi)) ** 2)
 
 
-def kepler_constant(mu):
+def kepler_constant(mu: ArrayLike) -> float | np.ndarray:
     """a**3 / T**2 = mu / (4 pi**2) (m**3/s**2), Kepler's third law (XXII.iii).
 
     With mu = G (m1 + m2) it is the relative orbit's (a + q)**3 / T**2; with star_parameter it is each star's
@@ -83,7 +84,7 @@ def kepler_constant(mu):
     return mu / FOUR_PI_SQUARED
 
 
-def star_angles(e, argp, nu, opposite):
+def star_angles(e: ArrayLike, argp: ArrayLike, nu: ArrayLike, opposite: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     """(omega, nu) (rad) of a star's orbit about the CM from the relative orbit's omega and nu.
 
     Star 2 (opposite=False) moves along r and keeps them. Star 1 (opposite=True) moves along -r: its
@@ -98,19 +99,23 @@ def star_angles(e, argp, nu, opposite):
     )
 
 
-def barycentric_states(r, v, x1, x2):
+def barycentric_states(
+    r: ArrayLike, v: ArrayLike, x1: ArrayLike, x2: ArrayLike
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """(r1, v1, r2, v2) (m, m/s) about the CM from the relative state r = r2 - r1, v = v2 - v1 (XXII.i):
     r1 = -x2 r, r2 = x1 r and likewise for v; x1, x2 from mass_fractions, shape (...), vectors (..., 3)."""
     x1, x2 = np.asarray(x1)[..., None], np.asarray(x2)[..., None]
     return -x2 * r, -x2 * v, x1 * r, x1 * v
 
 
-def center_of_mass(r1, r2, x1, x2):
+def center_of_mass(r1: ArrayLike, r2: ArrayLike, x1: ArrayLike, x2: ArrayLike) -> np.ndarray:
     """x1 r1 + x2 r2 (m, or m/s for velocities): the CM (or its velocity) of the pair, vectors (..., 3)."""
     return np.asarray(x1)[..., None] * r1 + np.asarray(x2)[..., None] * r2
 
 
-def propagate(r, v, com_r, com_v, gm1, gm2, dt):
+def propagate(
+    r: ArrayLike, v: ArrayLike, com_r: ArrayLike, com_v: ArrayLike, gm1: ArrayLike, gm2: ArrayLike, dt: ArrayLike
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """(r1, v1, r2, v2) (m, m/s) of both stars a time dt (s) later, in the frame where the CM is at com_r (m)
     moving with com_v (m/s) at dt = 0 (zeros: the CM frame).
 

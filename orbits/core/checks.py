@@ -5,18 +5,21 @@ The unit-aware rules (quantities, strings, primaries, size elements) build on th
 """
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from orbits.core.errors import OrbitDomainError
 
 
-def check_finite(x, name, unit):
+def check_finite(x: ArrayLike, name: str, unit: str) -> None:
     """Raise OrbitDomainError naming the first non-finite value of x."""
     if not np.all(np.isfinite(x)):
         bad = np.asarray(x)[~np.isfinite(x)].flat[0]
         raise OrbitDomainError(f"{name} = {float(bad)!r} {unit} is not finite; it must be a finite number")
 
 
-def check_eccentricity(e, low, high, low_open, high_open, conic, hint=""):
+def check_eccentricity(
+    e: ArrayLike, low: float, high: float, low_open: bool, high_open: bool, conic: str, hint: str = ""
+) -> None:
     """Raise OrbitDomainError unless every e lies in the given interval (open or closed ends)."""
     check_finite(e, "eccentricity e", "(dimensionless)")
     below = (e <= low) if low_open else (e < low)
@@ -31,7 +34,7 @@ def check_eccentricity(e, low, high, low_open, high_open, conic, hint=""):
         )
 
 
-def require_positive(x, name, unit):
+def require_positive(x: ArrayLike, name: str, unit: str) -> None:
     """Raise OrbitDomainError unless every x is finite and > 0; the message names x, its value, (0, inf) and unit."""
     x = np.asarray(x, dtype=float)
     bad = ~(np.isfinite(x) & (x > 0))

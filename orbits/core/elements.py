@@ -15,6 +15,7 @@ Angle conventions (orientation R = R3(Omega) R1(i) R3(omega), as in Vallado and 
 """
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from orbits.core.checks import check_finite
 from orbits.core.errors import DegenerateOrbitError, OrbitDomainError
@@ -30,7 +31,7 @@ def _dot(a, b):
     return np.sum(a * b, axis=-1)
 
 
-def check_state(r, v, mu):
+def check_state(r: ArrayLike, v: ArrayLike, mu: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Validate and broadcast a state (r in m, v in m/s, mu in m**3/s**2) to float arrays."""
     r, v = np.asarray(r, dtype=float), np.asarray(v, dtype=float)
     mu = np.asarray(mu, dtype=float)
@@ -47,19 +48,19 @@ def check_state(r, v, mu):
     return np.broadcast_to(r, shape), np.broadcast_to(v, shape), np.broadcast_to(mu, shape[:-1])
 
 
-def angular_momentum_vector(r, v):
+def angular_momentum_vector(r: ArrayLike, v: ArrayLike) -> np.ndarray:
     """Specific angular momentum h = r x v (m**2/s)."""
     return np.cross(r, v)
 
 
-def eccentricity_vector(r, v, mu):
+def eccentricity_vector(r: ArrayLike, v: ArrayLike, mu: ArrayLike) -> np.ndarray:
     """e = (v x h) / mu - r_hat (dimensionless), free of the v**2 - mu/r cancellation."""
     r, v, mu = check_state(r, v, mu)
     h = np.cross(r, v)
     return np.cross(v, h) / mu[..., None] - r / _norm(r)[..., None]
 
 
-def laplace_runge_lenz_vector(r, v, mu, m):
+def laplace_runge_lenz_vector(r: ArrayLike, v: ArrayLike, mu: ArrayLike, m: ArrayLike) -> np.ndarray:
     """A = p x L - m k r_hat with p = m v, L = m r x v, k = G M m: A = m**2 mu e (kg**2 m**3 / s**2)."""
     return (
         np.asarray(m, dtype=float)[..., None] ** 2
@@ -85,19 +86,21 @@ def _in_plane_angle(vec, n_hat, m_hat):
     return np.arctan2(_dot(vec, m_hat), _dot(vec, n_hat))
 
 
-def wrap_two_pi(angle):
+def wrap_two_pi(angle: ArrayLike) -> np.ndarray:
     """Wrap to [0, 2 pi)."""
     wrapped = np.mod(angle, TWO_PI)
     return np.where(wrapped >= TWO_PI, 0.0, wrapped)
 
 
-def wrap_pi(angle):
+def wrap_pi(angle: ArrayLike) -> np.ndarray:
     """Wrap to (-pi, pi]."""
     wrapped = np.pi - np.mod(np.pi - angle, TWO_PI)
     return np.where(wrapped <= -np.pi, wrapped + TWO_PI, wrapped)
 
 
-def state_to_elements(r, v, mu):
+def state_to_elements(
+    r: ArrayLike, v: ArrayLike, mu: ArrayLike
+) -> tuple[float | np.ndarray, float | np.ndarray, float | np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Classical elements (p [m], e, i, Omega, omega, nu [rad]) of the state r [m], v [m/s] about mu.
 
     Returns a tuple of arrays with the broadcast batch shape. Conventions: see the module docstring.
@@ -130,7 +133,7 @@ def _sin_cos(angle):
     return np.where(at_pi, 0.0, s), np.where(at_pi, -1.0, c)
 
 
-def check_conic(p, e, nu):
+def check_conic(p: np.ndarray, e: np.ndarray, nu: np.ndarray) -> None:
     """Validate p > 0, e >= 0 and, on open conics, that nu lies strictly inside the asymptotes."""
     check_finite(p, "semi-latus rectum p", "m")
     check_finite(e, "eccentricity e", "(dimensionless)")
@@ -149,7 +152,9 @@ def check_conic(p, e, nu):
         )
 
 
-def elements_to_state(p, e, inc, raan, argp, nu, mu):
+def elements_to_state(
+    p: ArrayLike, e: ArrayLike, inc: ArrayLike, raan: ArrayLike, argp: ArrayLike, nu: ArrayLike, mu: ArrayLike
+) -> tuple[np.ndarray, np.ndarray]:
     """State vectors r [m], v [m/s] from p [m], e, i, Omega, omega, nu [rad] and mu [m**3/s**2].
 
     r = p / (1 + e cos nu) (cos u n_hat + sin u m_hat) and

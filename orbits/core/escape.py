@@ -7,6 +7,7 @@ synchronous radius and for the elongation up to r / R = 1 - 1e-12.
 """
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from orbits.core.binary import semi_major_axis_from_period
 
@@ -14,41 +15,41 @@ from orbits.core.binary import semi_major_axis_from_period
 SQRT2_MINUS_1 = 0.414213562373095048801688724
 
 
-def surface_gravity(mu, radius):
+def surface_gravity(mu: ArrayLike, radius: ArrayLike) -> float | np.ndarray:
     """g = mu / R**2 (m/s**2) at distance R (m) from a body of parameter mu = G M (m**3/s**2)."""
     return mu / radius**2
 
 
-def first_cosmic_velocity(g, radius):
+def first_cosmic_velocity(g: ArrayLike, radius: ArrayLike) -> float | np.ndarray:
     """v1 = sqrt(g R) (m/s): circular speed skimming the surface (XXI.ix); 7.904 km/s for g0 and R = 6371 km."""
     return np.sqrt(g * radius)
 
 
-def second_cosmic_velocity(g, radius):
+def second_cosmic_velocity(g: ArrayLike, radius: ArrayLike) -> float | np.ndarray:
     """v2 = sqrt(2 g R) (m/s): escape speed from the surface, twobody.escape_speed(R, g R**2) (XXI.ix); 11.178 km/s."""
     return np.sqrt(2.0 * g * radius)
 
 
-def escape_excess_speed(orbital_speed):
+def escape_excess_speed(orbital_speed: ArrayLike) -> float | np.ndarray:
     """(sqrt 2 - 1) v (m/s): speed relative to a planet on a circular orbit of speed v (m/s) that, added along its
     motion, reaches the local solar escape speed sqrt(2) v (patched conics, XXI.ix; ERRATA #54)."""
     return SQRT2_MINUS_1 * orbital_speed
 
 
-def third_cosmic_velocity(orbital_speed, surface_escape_speed):
+def third_cosmic_velocity(orbital_speed: ArrayLike, surface_escape_speed: ArrayLike) -> float | np.ndarray:
     """v3 = sqrt(((sqrt 2 - 1) v_orbit)**2 + v_esc**2) (m/s): launch speed that leaves the planet with the solar
     escape excess (energy conservation in the planet's field, patched conics; XXI.ix, ERRATA #54). For Earth,
     v_orbit = 29.785 km/s and v_esc = 11.178 km/s give 16.648 km/s (the notes' 16.7)."""
     return np.hypot(escape_excess_speed(orbital_speed), surface_escape_speed)
 
 
-def synchronous_radius(mu, rotation_period):
+def synchronous_radius(mu: ArrayLike, rotation_period: ArrayLike) -> float | np.ndarray:
     """r = (mu T**2 / (4 pi**2))**(1/3) (m): the circular orbit whose period equals the sidereal rotation period T
     (s) of a body of parameter mu (m**3/s**2) (XXI.x); 42164.17 km for Earth (geostationary when equatorial)."""
     return semi_major_axis_from_period(rotation_period, mu)
 
 
-def max_elongation(inner_radius, outer_radius):
+def max_elongation(inner_radius: ArrayLike, outer_radius: ArrayLike) -> float | np.ndarray:
     """Greatest angle star-observer-planet arcsin(r / R) (rad) for circular coplanar orbits r < R (m), reached
     when the line of sight is tangent to the inner orbit (XXI.xi). Evaluated as atan2(r, sqrt((R - r)(R + r))),
     well conditioned up to r -> R where arcsin(r / R) would amplify the rounding of r / R."""

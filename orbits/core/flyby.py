@@ -13,29 +13,30 @@ difference form loses every digit. tests/core/test_flyby.py measures <= 2.6 ulp 
 """
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 
-def focusing_ratio(b, v_inf, mu):
+def focusing_ratio(b: ArrayLike, v_inf: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """k = b v_inf**2 / mu = b / |a| = cot(delta / 2) (dimensionless)."""
     return b * v_inf**2 / mu
 
 
-def eccentricity(b, v_inf, mu):
+def eccentricity(b: ArrayLike, v_inf: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """e = sqrt(1 + (b v_inf**2 / mu)**2) (dimensionless), the hyperbola's eccentricity (ERRATA #48)."""
     return np.hypot(1.0, focusing_ratio(b, v_inf, mu))
 
 
-def semi_major_axis(v_inf, mu):
+def semi_major_axis(v_inf: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """a = -mu / v_inf**2 (m), negative on hyperbolas as in orbits.core.twobody (the notes' a_h = |a|)."""
     return -mu / v_inf**2
 
 
-def semilatus_rectum(b, v_inf, mu):
+def semilatus_rectum(b: ArrayLike, v_inf: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """p = h**2 / mu = (v_inf b)**2 / mu = b k (m)."""
     return b * focusing_ratio(b, v_inf, mu)
 
 
-def periapsis_distance(b, v_inf, mu):
+def periapsis_distance(b: ArrayLike, v_inf: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """Closest approach R = b k / (1 + sqrt(1 + k**2)) = (sqrt(mu**2 + v_inf**4 b**2) - mu) / v_inf**2 (m).
 
     The notes' R (XXI.vi, XXII.vi) equals the periapsis |a| (e - 1) of the hyperbola (ERRATA #48, #73).
@@ -44,29 +45,29 @@ def periapsis_distance(b, v_inf, mu):
     return b * k / (1.0 + np.hypot(1.0, k))
 
 
-def periapsis_speed(b, v_inf, mu):
+def periapsis_speed(b: ArrayLike, v_inf: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """Speed at closest approach w = v_inf (1 + sqrt(1 + k**2)) / k = (sqrt(mu**2 + v_inf**4 b**2) + mu) / (v_inf b)
     (m/s), from v_inf b = R w (XXI.vi; XXII.vi's (m + M) zeta)."""
     k = focusing_ratio(b, v_inf, mu)
     return v_inf * (1.0 + np.hypot(1.0, k)) / k
 
 
-def deflection_angle(b, v_inf, mu):
+def deflection_angle(b: ArrayLike, v_inf: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """Turning angle of the relative velocity delta = 2 atan(mu / (b v_inf**2)) = 2 asin(1 / e) (rad)."""
     return 2.0 * np.arctan2(1.0, focusing_ratio(b, v_inf, mu))
 
 
-def asymptote_true_anomaly(b, v_inf, mu):
+def asymptote_true_anomaly(b: ArrayLike, v_inf: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """nu_inf = arccos(-1 / e) = atan2(k, -1) = (pi + delta) / 2 (rad): the true anomaly of the outgoing asymptote."""
     return np.arctan2(focusing_ratio(b, v_inf, mu), -1.0)
 
 
-def speed_at_distance(r, v_inf, mu):
+def speed_at_distance(r: ArrayLike, v_inf: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """v = sqrt(v_inf**2 + 2 mu / r) (m/s) at distance r (m), from E = m v_inf**2 / 2 (XXI.vi)."""
     return np.sqrt(v_inf**2 + 2.0 * mu / r)
 
 
-def impact_parameter(periapsis, v_inf, mu):
+def impact_parameter(periapsis: ArrayLike, v_inf: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """b = R sqrt(1 + 2 mu / (R v_inf**2)) (m) for a wanted closest approach R (m): the inverse of
     periapsis_distance, from v_inf b = R w and w**2 = v_inf**2 + 2 mu / R (gravitational focusing)."""
     return periapsis * np.sqrt(1.0 + 2.0 * mu / (periapsis * v_inf**2))

@@ -21,6 +21,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from orbits.core._dd import two_product, two_sum
 from orbits.core._roots import newton_in_bracket
@@ -115,7 +116,7 @@ class Friedmann:
         return np.where(y > 0, future, past)
 
     # ---- public quantities ------------------------------------------------------------------------------
-    def efunc(self, z):
+    def efunc(self, z: ArrayLike) -> np.ndarray:
         """E(z) = H(z) / H0 (dimensionless): x**(2 - m/2) sqrt(P(a) / a**m) for x = 1 + z >= 1; inf beyond float64."""
         z = self._redshift(z)
         k = SINGLE_COMPONENT.get(self.method)
@@ -127,7 +128,7 @@ class Friedmann:
         future = np.sqrt(np.maximum(self._e2_at_inverse(np.minimum(b, 1.0)), 0.0))  # 0 at a turnaround, not -0.0
         return np.where(np.isinf(z), np.inf, np.where(z >= 0, past, future))
 
-    def matter_density_parameter(self, z):
+    def matter_density_parameter(self, z: ArrayLike) -> np.ndarray:
         """Omega_m(z) = Omega_m x**3 / E(z)**2 = Omega_m a / P(a) (dimensionless); 1 for Einstein-de Sitter."""
         z = self._redshift(z)
         if self.method == "matter_only":
@@ -136,7 +137,7 @@ class Friedmann:
         past = self.omega_m * a ** (1 - self._leading_power) / self._p_reduced(a) if self.omega_m > 0 else 0.0
         return np.where(z >= 0, past, self.omega_m * b**3 / self._e2_at_inverse(np.minimum(b, 1.0)))
 
-    def age(self, z, hubble_time):
+    def age(self, z: ArrayLike, hubble_time: float) -> float | np.ndarray:
         """t(z) (s): time from the big bang to redshift z, for t_H = 1 / H0 = hubble_time (s).
 
         Einstein-de Sitter: t = (2/3) t_H (1 + z)**-1.5, within 4 ulp for every z >= 0, inf included
@@ -150,7 +151,7 @@ class Friedmann:
             return _flat_age(z, self.omega_m, self.omega_l, hubble_time)
         return hubble_time * self._quadrature_age(z)
 
-    def lookback_time(self, z, hubble_time):
+    def lookback_time(self, z: ArrayLike, hubble_time: float) -> float | np.ndarray:
         """t0 - t(z) (s), for t_H = hubble_time (s); negative in the future (-1 < z < 0).
 
         Einstein-de Sitter: (2/3) t_H (-expm1(-1.5 log1p z)), within 4 ulp for every z >= 0.
@@ -163,7 +164,7 @@ class Friedmann:
             return _flat_lookback(z, self.omega_m, self.omega_l, hubble_time)
         return hubble_time * self._quadrature_lookback(z)
 
-    def comoving_distance(self, z, hubble_distance):
+    def comoving_distance(self, z: ArrayLike, hubble_distance: float) -> float | np.ndarray:
         """Line-of-sight comoving distance D_C = d_H int_0^z dz' / E(z') (m), for d_H = c / H0 = hubble_distance.
 
         Einstein-de Sitter: D_C = 2 d_H (-expm1(-log1p(z) / 2)), within 4 ulp for every z >= 0; z = inf
@@ -175,7 +176,7 @@ class Friedmann:
             return _power_comoving(z, k, hubble_distance)
         return hubble_distance * self._quadrature_comoving(z)
 
-    def scale_factor(self, t, hubble_time):
+    def scale_factor(self, t: ArrayLike, hubble_time: float) -> float | np.ndarray:
         """a(t) (dimensionless) at t (s) after the big bang, for t_H = hubble_time (s); inf beyond float64.
 
         Closed forms: a = (k t / t_H)**(1/k) for E = x**k (EdS: (1.5 t / t_H)**(2/3)); flat matter + Lambda:
@@ -192,14 +193,14 @@ class Friedmann:
         return self._quadrature_scale_factor(tau)
 
     @functools.cached_property
-    def present_age(self):
+    def present_age(self) -> float:
         """t0 H0 (dimensionless): the age today in Hubble times; inf for de Sitter."""
         if self.method == "quadrature":
             return float(self._from_big_bang(1, np.ones(1))[0])
         return float(self.age(0.0, 1.0))
 
     @functools.cached_property
-    def turnaround_age(self):
+    def turnaround_age(self) -> float:
         """t H0 (dimensionless) at the turnaround a = max_scale_factor; inf if the universe never recollapses."""
         if math.isinf(self.max_scale_factor):
             return math.inf

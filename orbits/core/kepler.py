@@ -21,13 +21,12 @@ How the accuracy is reached:
 Speed: the three solvers run compiled kernels (orbits/core/_fast_kepler.py, numba, cached on disk) when
 numba is installed, with the same reduction, residuals and safeguards; these NumPy implementations run
 otherwise (ORBITS_JIT=0, see orbits.core._fast) and re-run any batch the kernels flag, so that invalid
-input raises the same messages. One thread, the benchmark's 1e6 easy pairs (e < 0.99): 56 M solves/s
-compiled against 2.9 M/s here; both are within 4 ulp of mpmath (tests/core/test_fast_kepler.py).
-First call in a fresh process, kernels loaded from the disk cache: 0.43 s, mostly importing and
-initialising numba (see orbits.core._fast).
+input raises the same messages. Both are within 4 ulp of mpmath (tests/core/test_fast_kepler.py); timings
+are in the README's Benchmarks section.
 """
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from orbits.core import _fast
 from orbits.core._dd import two_product, two_sum
@@ -71,13 +70,13 @@ def _series(x, coefficients):
     return total * x2 * x
 
 
-def x_minus_sin(x):
+def x_minus_sin(x: ArrayLike) -> np.ndarray:
     """x - sin x without cancellation (series for |x| < 2), float64 arrays."""
     x = np.asarray(x, dtype=float)
     return np.where(np.abs(x) < _SERIES_LIMIT, _series(x, _X_MINUS_SIN), x - np.sin(x))
 
 
-def sinh_minus_x(x):
+def sinh_minus_x(x: ArrayLike) -> np.ndarray:
     """sinh x - x without cancellation (series for |x| < 2), float64 arrays."""
     x = np.asarray(x, dtype=float)
     small = np.abs(x) < _SERIES_LIMIT
@@ -86,7 +85,7 @@ def sinh_minus_x(x):
     return np.where(small, _series(x, _SINH_MINUS_X), large)
 
 
-def reduce_mean_anomaly(M):
+def reduce_mean_anomaly(M: ArrayLike) -> tuple[float | np.ndarray, float | np.ndarray]:
     """Reduce M (rad) to M - 2 pi k in [-pi, pi], k = round(M / 2 pi), as a double-double (hi, lo).
 
     Exact to about 2**-100 relative for |M| <= MAX_MEAN_ANOMALY; larger |M| raise OrbitDomainError.
@@ -132,7 +131,7 @@ def _cubic_root(linear, cubic, rhs):
         return np.where(linear_regime, rhs / linear, scale / (w * w + ps / 3.0 + v * v))
 
 
-def eccentric_anomaly(M, e):
+def eccentric_anomaly(M: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     """Eccentric anomaly E in [-pi, pi] (rad) solving M = E - e sin E, for 0 <= e < 1 and any finite M.
 
     M is reduced modulo 2 pi first (exactly, see reduce_mean_anomaly); the result lies in the same
@@ -192,7 +191,7 @@ def _solve_elliptic_positive(m_hi, m_lo, e):
     return E
 
 
-def hyperbolic_anomaly(M, e):
+def hyperbolic_anomaly(M: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     """Hyperbolic anomaly H (rad) solving M = e sinh H - H, for e > 1 and any finite M.
 
     Odd in M exactly: H(-M) == -H(M). Accuracy: within 4 ulp of the exact root for 1 < e <= 1e12 and
@@ -264,7 +263,7 @@ def _solve_hyperbolic_log_form(M, e, e_minus_1, lower):
     return halley_in_bracket(lo.copy(), lo, hi, residual, "hyperbolic Kepler solve", {"M": M, "e": e})
 
 
-def parabolic_anomaly(W):
+def parabolic_anomaly(W: ArrayLike) -> float | np.ndarray:
     """D = tan(nu/2) solving Barker's equation W = D + D**3 / 3, in closed form.
 
     D is the real root of the cubic D**3 + 3 D = 3 W, evaluated by the cancellation-free Cardano form

@@ -19,6 +19,7 @@ below mu ~ 1e-32 rho < 2**-52 and x_L1, x_L2 round onto the secondary: use the o
 """
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from orbits.core._roots import halley_in_bracket
 from orbits.core.checks import check_finite
@@ -34,7 +35,7 @@ _ROUTH_LO = -2.49642603804579e-18
 _HALF_SQRT3 = 0.8660254037844386  # sqrt(3) / 2, correctly rounded
 
 
-def check_mass_ratio(mu):
+def check_mass_ratio(mu: ArrayLike) -> np.ndarray:
     """mu as a float64 array; OrbitDomainError unless every 0 < mu <= 1/2 (M >= m > 0)."""
     mu = np.asarray(mu, dtype=float)
     check_finite(mu, "mass ratio mu = m / (M + m)", "(dimensionless)")
@@ -77,7 +78,7 @@ def _hill_scale(mu):
     return h, q1, q2, q2 / h
 
 
-def collinear_offsets(mu):
+def collinear_offsets(mu: ArrayLike) -> tuple[np.ndarray, np.ndarray, float | np.ndarray]:
     """(rho_1, rho_2, s_3): L1 and L2 distances from m, and L3 distance from M (units of r), each within 2 ulp.
 
     With rho = h u: L1 solves rho**5 - (3 - mu) rho**4 + (3 - 2 mu) rho**3 - mu rho**2 + 2 mu rho - mu = 0,
@@ -112,7 +113,7 @@ def _solve_offsets(mu):
     return h * u1, h * u2, w
 
 
-def positions(mu):
+def positions(mu: ArrayLike) -> np.ndarray:
     """Rotating-frame positions of L1..L5, shape (..., 5, 3) (units of r), each coordinate within 2**-52 r.
 
     x_L1 = 1 - (mu + rho_1), x_L2 = 1 + (rho_2 - mu), x_L3 = -(mu + s_3), L4/L5 = (1/2 - mu, +-sqrt(3)/2, 0).
@@ -124,7 +125,7 @@ def positions(mu):
     return np.stack([x, y, np.zeros_like(x)], axis=-1)
 
 
-def distances(mu):
+def distances(mu: ArrayLike) -> np.ndarray:
     """Distances (r_1 from M, r_2 from m) of L1..L5, shape (..., 5, 2) (units of r), from the offsets."""
     mu = check_mass_ratio(mu)
     rho_1, rho_2, s_3 = collinear_offsets(mu)
@@ -134,7 +135,7 @@ def distances(mu):
     return np.stack([r_1, r_2], axis=-1)
 
 
-def effective_potential(r, mu):
+def effective_potential(r: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """Phi = -(1 - mu) / r_1 - mu / r_2 - (x**2 + y**2) / 2 per unit mass (units of G (M + m) / r), notes' U / n.
 
     r has shape (..., 3) in the rotating frame; -inf exactly at a primary.
@@ -147,13 +148,15 @@ def effective_potential(r, mu):
     return -(1.0 - mu) / r_1 - mu / r_2 - 0.5 * (x * x + y * y)
 
 
-def jacobi_constant(r, v, mu):
+def jacobi_constant(r: ArrayLike, v: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """C = -2 Phi(r) - |v|**2 (units of (n r)**2) of a rotating-frame state r, v of shape (..., 3)."""
     v = np.asarray(v, dtype=float)
     return -2.0 * effective_potential(r, mu) - np.sum(v * v, axis=-1)
 
 
-def jacobi_constant_inertial(r, v, r_primary, r_secondary, mu):
+def jacobi_constant_inertial(
+    r: ArrayLike, v: ArrayLike, r_primary: ArrayLike, r_secondary: ArrayLike, mu: ArrayLike
+) -> float | np.ndarray:
     """C = 2 (1 - mu) / r_1 + 2 mu / r_2 + 2 (x v_y - y v_x) - |v|**2 from barycentric inertial states.
 
     The same integral as jacobi_constant (v_rotating = v - z x r), measured with the primaries where an
@@ -200,7 +203,7 @@ def _routh_margin(mu):
     return 27.0 * (((ROUTH_MASS_RATIO - mu) + _ROUTH_LO) * ((1.0 - ROUTH_MASS_RATIO - mu) - _ROUTH_LO))
 
 
-def eigenvalues(mu):
+def eigenvalues(mu: ArrayLike) -> np.ndarray:
     """Eigenvalues lambda (units of n) of the linearised rotating-frame motion at L1..L5, shape (..., 5, 6).
 
     Planar, with Omega = -Phi: lambda**4 + (4 - Omega_xx - Omega_yy) lambda**2 + Omega_xx Omega_yy - Omega_xy**2
@@ -223,7 +226,7 @@ def eigenvalues(mu):
     return np.stack([la, -la, lb, -lb, 1j * vertical, -1j * vertical], axis=-1)
 
 
-def growth_rates(mu):
+def growth_rates(mu: ArrayLike) -> np.ndarray:
     """Largest real part of the eigenvalues at L1..L5 (units of n), shape (..., 5); 0 where linearly stable.
 
     L1, L2, L3 always grow; L4 and L5 are linearly stable (growth 0) iff mu < mu_R, decided exactly. At
@@ -233,7 +236,7 @@ def growth_rates(mu):
     return np.where(rates > 0.0, rates, 0.0)
 
 
-def triangular_points_stable(mu):
+def triangular_points_stable(mu: ArrayLike) -> np.bool_ | np.ndarray:
     """True where L4 and L5 are linearly stable: mu < (1 - sqrt(23/27)) / 2 = 0.0385208965..., exactly."""
     mu = check_mass_ratio(mu)
     return _routh_margin(mu) > 0.0
@@ -250,7 +253,7 @@ def _hessian(mu):
     return xx, xy
 
 
-def growing_mode(mu):
+def growing_mode(mu: ArrayLike) -> np.ndarray:
     """Rotating-frame state (dx, dy, dz, dvx, dvy, dvz) of the fastest-growing mode at L1..L5, shape (..., 5, 6),
     scaled to |(dx, dy)| = 1; zero where the point is linearly stable.
 
@@ -266,7 +269,7 @@ def growing_mode(mu):
     return np.where(growth_rates(mu)[..., None] > 0.0, state / norm, 0.0)
 
 
-def rotating_coordinates(r, r_primary, r_secondary, mu):
+def rotating_coordinates(r: ArrayLike, r_primary: ArrayLike, r_secondary: ArrayLike, mu: ArrayLike) -> np.ndarray:
     """Rotating-frame position (units of the separation) of r, given where the two primaries are: origin at their
     barycentre, x from M to m, z along the binary's spin (taken as +z); arrays of shape (..., 3)."""
     axis = np.asarray(r_secondary, dtype=float) - r_primary
@@ -278,7 +281,9 @@ def rotating_coordinates(r, r_primary, r_secondary, mu):
     return np.stack(coordinates, axis=-1) / separation
 
 
-def rotating_to_inertial(r, v, angle, inc=0.0, raan=0.0):
+def rotating_to_inertial(
+    r: ArrayLike, v: ArrayLike, angle: ArrayLike, inc: ArrayLike = 0.0, raan: ArrayLike = 0.0
+) -> tuple[np.ndarray, np.ndarray]:
     """Barycentric inertial (r, v) of rotating-frame states, shape (..., 3), when the frame has turned by
     `angle` (rad) in the binary's plane (inclination inc, ascending node raan); v_inertial = v + z x r (n = 1).
 

@@ -1,8 +1,10 @@
 """Tanh-sinh (double-exponential) quadrature over many intervals at once, for the Friedmann integrals."""
 
 import functools
+from collections.abc import Callable
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from orbits.core.errors import ConvergenceError
 
@@ -29,7 +31,9 @@ def _ts_level(level):
     return s < 0, q, np.pi * np.cosh(s) * q * (1.0 - q)
 
 
-def tanh_sinh(integrand, lo, hi):
+def tanh_sinh(
+    integrand: Callable[[np.ndarray, np.ndarray, np.ndarray], np.ndarray], lo: ArrayLike, hi: ArrayLike
+) -> np.ndarray:
     """int_lo^hi integrand(x, d, hi) dx for 1-D arrays of finite lo <= hi; d = hi - x, exact near hi.
 
     Levels halve the step until two successive estimates agree to 2**-36 relative (double-exponential

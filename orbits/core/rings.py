@@ -18,6 +18,7 @@ checked in tests/core/test_rings.py against the full Cartesian linearisation and
 import math
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from orbits.core.errors import OrbitDomainError
 
@@ -33,7 +34,7 @@ _J = np.array([[0.0, 1.0], [-1.0, 0.0]])
 _CHUNK = 1 << 18  # (mode, pair) elements handled at once when building the mode matrices
 
 
-def check_count(n):
+def check_count(n: int) -> int:
     """n as a Python int; TypeError unless an integer (bool excluded), OrbitDomainError unless n >= 2."""
     if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)):
         kind = type(n).__name__
@@ -56,7 +57,7 @@ def _cos_pi(k, n):
     return _sin_pi(n - 2 * np.asarray(k), 2 * n)
 
 
-def csc_sum(n):
+def csc_sum(n: int) -> float:
     """S_n = sum_{k=1}^{n-1} csc(pi k / n) (dimensionless), within 3 ulp for every n.
 
     Uses csc(pi k / n) = csc(pi (n - k) / n) to sum k < n/2 only (arguments <= pi/2, where sin is accurate
@@ -67,12 +68,12 @@ def csc_sum(n):
     return 2.0 * math.fsum(1.0 / _sin_pi(k, n)) + (1.0 if n % 2 == 0 else 0.0)
 
 
-def effective_gm(n, gm, gm_central=0.0):
+def effective_gm(n: int, gm: ArrayLike, gm_central: ArrayLike = 0.0) -> float | np.ndarray:
     """GM_eff = G m S_n / 4 + G M (m3/s2): the point mass at the centre that keeps each body on its circle."""
     return np.asarray(gm, dtype=float) * (0.25 * csc_sum(n)) + np.asarray(gm_central, dtype=float)
 
 
-def state_vectors(n, r, speed, phase=0.0):
+def state_vectors(n: int, r: float, speed: float, phase: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
     """Positions (m) and velocities (m/s) of the n bodies, shape (n, 3): body k at angle phase + 2 pi k / n in
     the xy plane, moving counter-clockwise; the barycentre (and any central mass) rests at the origin."""
     n = check_count(n)
@@ -124,7 +125,7 @@ def _central_coupling(n):
     return coupling
 
 
-def mode_matrices(n, central_ratio=0.0):
+def mode_matrices(n: int, central_ratio: float = 0.0) -> np.ndarray:
     """First-order 4 x 4 blocks [[0, I], [M_j, 2J]] of the linearised rotating-frame motion, shape (n, 4, 4).
 
     M_j = I + beta g diag(2, -1) + g sum_d T_d (I - R_d E_jd) + g diag(2, -1) C_j [beta > 0], with
@@ -183,7 +184,7 @@ def _snap(values, exact):
     return values
 
 
-def eigenvalues(n, central_ratio=0.0):
+def eigenvalues(n: int, central_ratio: float = 0.0) -> np.ndarray:
     """Eigenvalues lambda (units of omega) of the 4n x 4n linearisation, shape (n, 4): row j holds Fourier mode j.
 
     Exactly known modes (see _trivial_modes) are set exactly; the others are within ~1e-12 of the Cartesian
@@ -196,7 +197,7 @@ def eigenvalues(n, central_ratio=0.0):
     return values
 
 
-def growth_rate(n, central_ratio=0.0):
+def growth_rate(n: int, central_ratio: float = 0.0) -> tuple[float, int | None]:
     """(sigma, j): the largest Re(lambda) (units of omega) and its Fourier mode j; (0.0, None) when every
     mode is neutral (|Re lambda| <= NEUTRAL_GROWTH times max(1, |lambda|)), i.e. linearly stable."""
     values = eigenvalues(n, central_ratio)
@@ -207,7 +208,7 @@ def growth_rate(n, central_ratio=0.0):
     return float(rates[j]), j
 
 
-def central_mass_threshold(n):
+def central_mass_threshold(n: int) -> float:
     """beta_c = (M / m)_c (dimensionless): the ring is linearly stable iff M / m >= beta_c; n >= 7 only.
 
     Bisection (in log beta, to 1e-13 relative) between 0.1 n**3 (unstable) and n**3 (stable); beta_c / n**3
@@ -229,7 +230,7 @@ def central_mass_threshold(n):
     return hi
 
 
-def breakup_time(rate, seed=1e-16, breakup=1e-3):
+def breakup_time(rate: ArrayLike, seed: float = 1e-16, breakup: float = 1e-3) -> np.ndarray:
     """t = ln(breakup / seed) / rate (units of 1/rate): time for a relative perturbation `seed` (float64 round-off
     by default) to grow to `breakup` at the exponential rate `rate`; inf when rate is 0 (linearly stable)."""
     rate = np.asarray(rate, dtype=float)
@@ -237,7 +238,7 @@ def breakup_time(rate, seed=1e-16, breakup=1e-3):
         return np.where(rate > 0.0, math.log(breakup / seed) / rate, np.inf)
 
 
-def shape_deviation(positions, r):
+def shape_deviation(positions: ArrayLike, r: float) -> float | np.ndarray:
     """max_{k<l} | |x_k - x_l| - 2 r sin(pi |k - l| / n) | / r over the ring bodies' positions (..., n, 3):
     how far the bodies are from a regular n-gon of radius r (rotation and drift of the whole ring ignored)."""
     positions = np.asarray(positions, dtype=float)

@@ -8,6 +8,7 @@ the big bang. The relativistic models around it are in orbits.core.friedmann.
 
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from orbits.core.errors import OrbitDomainError
 
@@ -25,7 +26,7 @@ def _check_time(t, allow_zero):
     return t
 
 
-def sphere_radius(t, gm):
+def sphere_radius(t: ArrayLike, gm: ArrayLike) -> float | np.ndarray:
     """r = (9 G M t**2 / 2)**(1/3) (m) of the shell enclosing G M = gm (m3/s2), t (s) after the big bang.
 
     XXIV.iii, box 5. Accuracy: within 2 ulp (tests/core/test_cosmology.py).
@@ -34,34 +35,34 @@ def sphere_radius(t, gm):
     return np.cbrt((4.5 * gm) * t * t)
 
 
-def sphere_speed(t, gm):
+def sphere_speed(t: ArrayLike, gm: ArrayLike) -> float | np.ndarray:
     """v = (4 G M / (3 t))**(1/3) (m/s) of that shell at t > 0 (s); XXIV.iv, box 6."""
     t = _check_time(t, allow_zero=False)
     return np.cbrt(gm / (0.75 * t))
 
 
-def sphere_hubble_parameter(t):
+def sphere_hubble_parameter(t: ArrayLike) -> float | np.ndarray:
     """H = v / r = 2 / (3 t) (1/s) at t > 0 (s) after the big bang; XXIV.iv (Hubble's law v = H r)."""
     t = _check_time(t, allow_zero=False)
     return 2.0 / (3.0 * t)
 
 
-def sphere_time(r, gm):
+def sphere_time(r: ArrayLike, gm: ArrayLike) -> float | np.ndarray:
     """t = sqrt(2 r**3 / (9 G M)) = r sqrt(2 r / (9 G M)) (s) at which the shell reaches r (m); inverse of box 5."""
     return r * np.sqrt((r + r) / (9.0 * gm))
 
 
-def age_from_hubble(hubble):
+def age_from_hubble(hubble: ArrayLike) -> float | np.ndarray:
     """Einstein-de Sitter age t = 2 / (3 H) (s) for the Hubble parameter H (1/s); XXIV.iv (1.33e10 yr)."""
     return 2.0 / (3.0 * hubble)
 
 
-def critical_density(hubble, g):
+def critical_density(hubble: ArrayLike, g: float) -> float | np.ndarray:
     """rho_c = 3 H**2 / (8 pi G) (kg/m3): the density of a flat universe expanding at H (1/s)."""
     return 3.0 * hubble * hubble / (8.0 * np.pi * g)
 
 
-def sphere_density(t, g):
+def sphere_density(t: ArrayLike, g: float) -> float | np.ndarray:
     """rho = M / (4 pi r**3 / 3) = 1 / (6 pi G t**2) (kg/m3) of the uniform sphere at t > 0 (s); equals rho_c."""
     t = _check_time(t, allow_zero=False)
     return 1.0 / (6.0 * np.pi * g * t * t)

@@ -27,11 +27,16 @@ import statistics
 import subprocess
 import sys
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
 import mpmath
 import numpy as np
+
+if TYPE_CHECKING:
+    from orbits.scene import Scene
+    from orbits.validate.models import ModelScene
 
 #: Pairs on which the per-call rebound API is timed (its throughput is per pair, so it scales).
 PER_CALL_SUBSET = 20_000
@@ -406,7 +411,14 @@ def _load(factories):
     return loaded
 
 
-def bench_kepler(n_easy=1_000_000, n_hard=100_000, n_hyp=100_000, n_ref=2000, seed=0, repeats=3):
+def bench_kepler(
+    n_easy: int = 1_000_000,
+    n_hard: int = 100_000,
+    n_hyp: int = 100_000,
+    n_ref: int = 2000,
+    seed: int = 0,
+    repeats: int = 3,
+) -> list[BenchRow]:
     """Time and check every available Kepler solver on the "easy", "hard" and "hyperbolic" sets.
 
     easy: e ~ U[0, 0.99], M ~ U[0, 2 pi).  hard: e = 1 - 10**U(-9, -2), M alternately
@@ -436,7 +448,7 @@ def _solves(row):
     return row.status == "ok" and row.n_nan < row.n
 
 
-def format_rows(rows):
+def format_rows(rows: Sequence[BenchRow]) -> str:
     """Plain-text table of bench_kepler: throughput (M/s), ratio to orbits on one thread on the same set
     (above 1: faster than orbits), worst relative and ulp errors, NaN count, notes."""
     reference = {r.dataset: r.throughput_per_s for r in rows if r.method == "orbits" and _solves(r)}
@@ -461,7 +473,7 @@ def _note(row):
     return note
 
 
-def rows_to_json(rows):
+def rows_to_json(rows: Iterable[object]) -> list[dict[str, object]]:
     """Rows (any of the benchmarks' row classes) as JSON-ready dicts (NaN and infinity become None)."""
     return [_clean(dataclasses.asdict(r)) for r in rows]
 
@@ -709,7 +721,7 @@ def _best_time(call, repeats):
     return best, result
 
 
-def bench_propagate(n=1_000_000, n_ref=200, seed=0, repeats=3):
+def bench_propagate(n: int = 1_000_000, n_ref: int = 200, seed: int = 0, repeats: int = 3) -> list[PropagateRow]:
     """Time and check every available two-body propagator on the "elliptic" and "mixed" sets (see
     _propagation_sets). Errors are relative to |r| and |v| of the mpmath reference (orbits.tools.reference);
     timings exclude preparing the inputs in the form each library takes.
@@ -726,7 +738,7 @@ def bench_propagate(n=1_000_000, n_ref=200, seed=0, repeats=3):
     return rows
 
 
-def format_propagate(rows):
+def format_propagate(rows: Sequence[PropagateRow]) -> str:
     """Plain-text table of bench_propagate: M states/s, ratio to orbits on one thread on the same set,
     worst relative position and velocity errors, NaN count, notes."""
     reference = {r.dataset: r.throughput_per_s for r in rows if r.method == "orbits" and r.status == "ok"}
@@ -798,7 +810,7 @@ def _api_cases(n, rng):
     ]
 
 
-def bench_api(sizes=(1, 100_000, 1_000_000), seed=0, repeats=5):
+def bench_api(sizes: Iterable[int] = (1, 100_000, 1_000_000), seed: int = 0, repeats: int = 5) -> list[ApiRow]:
     """Overhead of the unit-aware API (orbits.Orbit) over the float64 core on the same inputs, per call,
     for scalars and arrays of the given sizes. Returns one ApiRow per (case, size)."""
     rows = []
@@ -810,7 +822,7 @@ def bench_api(sizes=(1, 100_000, 1_000_000), seed=0, repeats=5):
     return rows
 
 
-def format_api(rows):
+def format_api(rows: Sequence[ApiRow]) -> str:
     """Plain-text table of bench_api (times in microseconds)."""
     header = f"{'case':<44}{'n':>9}{'core us':>13}{'API us':>13}{'overhead us':>13}{'overhead':>10}"
     lines = [header, "-" * len(header)]
@@ -849,7 +861,7 @@ def _orbits_command():
     return [script] if script else [sys.executable, "-c", "from orbits_cli.main import app; app()"]
 
 
-def bench_cli(runs=10, commands=None):
+def bench_cli(runs: int = 10, commands: Sequence[tuple[list[str], float | None]] | None = None) -> list[CliRow]:
     """Cold-start wall time of each command over `runs` fresh processes (one unmeasured warm-up run
     fills the OS file cache, as on any machine that has run orbits before)."""
     rows = []
@@ -865,7 +877,7 @@ def bench_cli(runs=10, commands=None):
     return rows
 
 
-def format_cli(rows):
+def format_cli(rows: Sequence[CliRow]) -> str:
     """Plain-text table of bench_cli."""
     header = f"{'command':<70}{'runs':>6}{'median s':>10}{'min s':>8}{'target s':>10}"
     lines = [header, "-" * len(header)]
@@ -899,7 +911,11 @@ def _scene_row(report, total, mode):
     return ValidateRow(report.name, mode, stages, total)
 
 
-def bench_validate(scenes=None, backend_names=("rebound", "heyoka"), sweep=True):
+def bench_validate(
+    scenes: "Sequence[Scene | ModelScene] | None" = None,
+    backend_names: Sequence[str] = ("rebound", "heyoka"),
+    sweep: bool = True,
+) -> list[ValidateRow]:
     """Time `orbits validate` stage by stage on the built-in data and model scenes (or `scenes`):
     sequentially in this process, scene by scene, then (sweep=True, dask installed) as validate_sweep
     on a 2-worker LocalCluster of threads and of processes, whole runs only (cluster start-up included)."""
@@ -939,7 +955,7 @@ def _sweep_rows(scenes, backend_names):
     return rows
 
 
-def format_validate(rows):
+def format_validate(rows: Sequence[ValidateRow]) -> str:
     """Plain-text table of bench_validate: seconds per stage, one line per scene and run."""
     stages = list(dict.fromkeys(k for r in rows for k in r.stages))
     widths = [max(len(s), 8) + 2 for s in stages]
@@ -965,16 +981,16 @@ BENCHMARKS = {
 }
 
 
-def bench_all(**options):
+def bench_all(**options: dict[str, Any]) -> dict[str, list[Any]]:
     """{name: rows} of every benchmark; options maps a benchmark name to its keyword arguments."""
     return {name: run(**options.get(name, {})) for name, (run, _) in BENCHMARKS.items()}
 
 
-def format_report(report):
+def format_report(report: Mapping[str, Sequence[Any]]) -> str:
     """Every benchmark's table under its name."""
     return "\n\n".join(f"== {name} ==\n{BENCHMARKS[name][1](rows)}" for name, rows in report.items())
 
 
-def report_to_json(report):
+def report_to_json(report: Mapping[str, Iterable[object]]) -> dict[str, list[dict[str, object]]]:
     """{name: rows as JSON-ready dicts} (NaN and infinity become None)."""
     return {name: rows_to_json(rows) for name, rows in report.items()}

@@ -13,23 +13,33 @@ by ``import orbits``.
 
 Pointing it at a real cluster: start ``dask scheduler`` on one machine and ``dask worker tcp://HOST:8786``
 on the others (each with orbits installed), then pass ``address="tcp://HOST:8786"`` (or
-``orbits validate --sweep --scheduler tcp://HOST:8786``). Measured on this 2-core machine: see
-orbits.tools.bench.bench_validate and the README's Dask section.
+``orbits validate --sweep --scheduler tcp://HOST:8786``). To time a sweep, see
+orbits.tools.bench.bench_validate; results are in the README's benchmark section.
 """
 
 import contextlib
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
+from numpy.typing import ArrayLike
 
-#: LocalCluster default: two single-threaded workers. They are threads of this process by default:
-#: measured on the built-in scenes (orbits.tools.bench.bench_validate), a sweep on 2 worker threads took
-#: 0.44 s (0.28 s of it starting the cluster) against 4.5 s on 2 worker processes (2.1 s to start them,
-#: then each imports orbits and compiles its heyoka integrators again) and 0.13 s sequentially. Processes
-#: pay off for sweeps of many long scenes; pass processes=True, or use a real cluster.
+if TYPE_CHECKING:
+    import dask.array as da
+    from dask.distributed import Client
+
+    from orbits.scene import Scene
+    from orbits.validate.models import ModelScene
+    from orbits.validate.run import ValidationReport
+
+#: LocalCluster default: two single-threaded workers. They are threads of this process by default: worker
+#: processes take longer to start, and each then imports orbits and compiles its heyoka integrators again,
+#: which a sweep of the short built-in scenes does not win back (orbits.tools.bench.bench_validate times
+#: both). Processes pay off for sweeps of many long scenes; pass processes=True, or use a real cluster.
 LOCAL_WORKERS = 2
 
 
-def propagate_dask(r0, v0, mu, dt):
+def propagate_dask(r0: ArrayLike, v0: ArrayLike, mu: ArrayLike, dt: ArrayLike) -> "tuple[da.Array, da.Array]":
     """Lazy (r [m], v [m/s]) dask arrays at t0 + dt [s], chunk by chunk through orbits.core.propagate.
 
     r0, v0 have shape (..., 3) and broadcast with mu and dt over the batch shape, as in the NumPy call.
@@ -66,7 +76,9 @@ def _propagate_block(r0, v0, mu, dt):
 
 
 @contextlib.contextmanager
-def sweep_client(address=None, workers=LOCAL_WORKERS, processes=False):
+def sweep_client(
+    address: str | None = None, workers: int = LOCAL_WORKERS, processes: bool = False
+) -> "Iterator[Client]":
     """A dask.distributed Client: of the scheduler at `address`, or of a new LocalCluster of `workers`
     single-threaded workers (processes or threads), closed again on exit."""
     from dask.distributed import Client, LocalCluster
@@ -80,7 +92,13 @@ def sweep_client(address=None, workers=LOCAL_WORKERS, processes=False):
             yield client
 
 
-def validate_sweep(scenes, client=None, backend_names=("rebound", "heyoka"), settings=None, progress=None):
+def validate_sweep(
+    scenes: "Iterable[Scene | ModelScene]",
+    client: "Client | None" = None,
+    backend_names: Sequence[str] = ("rebound", "heyoka"),
+    settings: dict[str, dict[str, object]] | None = None,
+    progress: Callable[[str], object] | None = None,
+) -> "ValidationReport":
     """ValidationReport of `scenes`, one task per scene on the client (a LocalCluster if None).
 
     `progress(scene_name)` is called as each scene's result arrives.

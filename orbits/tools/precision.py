@@ -15,6 +15,7 @@ never another integrator. Wall times count integration only; compile and setup t
 import importlib.util
 import time
 import warnings
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 import mpmath
@@ -45,7 +46,7 @@ class Problem:
     reference: object  # t -> (N, 3) exact positions (mpmath)
     analytic: object  # t -> (N, 3) positions from orbits' closed form
 
-    def nbody(self, t_end=None):
+    def nbody(self, t_end: float | None = None) -> NBodyProblem:
         """The problem as an NBodyProblem with a single output time."""
         return NBodyProblem(self.gm, self.positions, self.velocities, self.n_active,
                             np.array([self.t_end if t_end is None else t_end]))
@@ -68,7 +69,7 @@ def _mp_floats(vectors):
     return np.array([[float(x) for x in v] for v in vectors])
 
 
-def kepler_problem(e, periods):
+def kepler_problem(e: float, periods: float) -> Problem:
     """A test particle at periapsis of an a = 1 orbit of eccentricity e about a unit mass at the origin."""
     p = 1.0 - e * e
     r0, v0 = elements.elements_to_state(p, e, 0.3, 0.0, 0.0, 0.0, 1.0)
@@ -85,7 +86,7 @@ def kepler_problem(e, periods):
                    (periods + EXTRA_TURN) * 2 * np.pi, 2 * np.pi, exact, analytic)
 
 
-def flyby_problem(e=1.5):
+def flyby_problem(e: float = 1.5) -> Problem:
     """A test particle on a q = 1 hyperbola about a unit mass, from nu = -0.8 to +0.8 of the asymptote."""
     p = 1.0 + e
     nu0 = -0.8 * np.arccos(-1.0 / e)
@@ -103,7 +104,7 @@ def flyby_problem(e=1.5):
                    analytic)
 
 
-def binary_problem(ratio=0.1, e=0.6, periods=100):
+def binary_problem(ratio: float = 0.1, e: float = 0.6, periods: float = 100) -> Problem:
     """Two bodies of GM 1/(1+ratio) and ratio/(1+ratio), relative orbit a = 1, e, centre of mass at rest."""
     gm = np.array([1.0, ratio]) / (1.0 + ratio)
     r_rel, v_rel = elements.elements_to_state(1.0 - e * e, e, 0.4, 0.2, 0.1, 0.0, 1.0)
@@ -120,7 +121,7 @@ def binary_problem(ratio=0.1, e=0.6, periods=100):
                    (periods + EXTRA_TURN) * 2 * np.pi, 2 * np.pi, exact, analytic)
 
 
-def l4_problem(mu=EARTH_MOON_MU, periods=100):
+def l4_problem(mu: float = EARTH_MOON_MU, periods: float = 100) -> Problem:
     """Earth-Moon on a circular unit orbit (n = 1) and a test particle at L4, all rotating rigidly."""
     gm = np.array([1.0 - mu, mu, 0.0])
     positions = np.array([[-mu, 0.0, 0.0], [1.0 - mu, 0.0, 0.0], [0.5 - mu, np.sqrt(3.0) / 2.0, 0.0]])
@@ -139,7 +140,7 @@ def l4_problem(mu=EARTH_MOON_MU, periods=100):
                    (periods + EXTRA_TURN) * 2 * np.pi, 2 * np.pi, exact, lambda t: rotate(t, np.cos, np.sin))
 
 
-def problems(long=True):
+def problems(long: bool = True) -> list[Problem]:
     """The problem set of the issue; long=False leaves out the 1e4-period runs."""
     eccentricities = (0.0167, 0.5, 0.9, 0.999)
     chosen = [kepler_problem(e, 100) for e in eccentricities]
@@ -159,7 +160,7 @@ class Method:
     fixed: dict = field(default_factory=dict)
 
 
-def methods(quick=False):
+def methods(quick: bool = False) -> list[Method]:
     """The methods swept: rebound IAS15, WHFast and Gragg-Bulirsch-Stoer; heyoka in float64 with and without
     high_accuracy and in long double; scipy's DOP853 when scipy is installed."""
     thin = (lambda v: v[::2]) if quick else (lambda v: v)
@@ -226,7 +227,12 @@ def _label(method, value):
     return f"{method.knob}={value:g}"
 
 
-def run(chosen_problems=None, chosen_methods=None, scipy_max_periods=200, progress=None):
+def run(
+    chosen_problems: Sequence[Problem] | None = None,
+    chosen_methods: Sequence[Method] | None = None,
+    scipy_max_periods: float = 200,
+    progress: Callable[[str], object] | None = None,
+) -> list[Row]:
     """Rows of every method x setting x problem, plus one "orbits analytic" row per problem.
 
     scipy's DOP853 evaluates its right-hand side in Python, so it is skipped (with a note) on problems
@@ -261,7 +267,7 @@ def _row(method, value, problem, scipy_max_periods):
     return Row(method.name, _label(method, value), problem.name, error, seconds, setup, note)
 
 
-def summary(rows, target=1e-10):
+def summary(rows: Sequence[Row], target: float = 1e-10) -> list[dict[str, object]]:
     """Per problem and method: the best error reached, and the fastest run reaching `target` (or None)."""
     out = []
     for problem in dict.fromkeys(r.problem for r in rows):

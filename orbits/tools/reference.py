@@ -10,9 +10,13 @@ compare them inside ``mpmath.workdps(...)`` to keep that precision.
 """
 
 import math
+from typing import TYPE_CHECKING
 
 import mpmath
 from mpmath import mp, mpf
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
 
 BASE_DPS = 60
 
@@ -107,7 +111,7 @@ def _solve_barker(W):
     return mpmath.sign(W) * _verified_root(b, lo, hi)
 
 
-def kepler_E(M, e):
+def kepler_E(M: float, e: float) -> mpf:
     """Eccentric anomaly E in [-pi, pi] solving E - e sin E = M - 2 pi round(M / 2 pi), 0 <= e < 1."""
     if not 0 <= e < 1:
         raise ValueError(f"kepler_E needs 0 <= e < 1, got e={e!r}")
@@ -115,7 +119,7 @@ def kepler_E(M, e):
         return _solve_elliptic(mpf(M), mpf(e))
 
 
-def kepler_H(M, e):
+def kepler_H(M: float, e: float) -> mpf:
     """Hyperbolic anomaly H solving e sinh H - H = M, e > 1."""
     if not e > 1:
         raise ValueError(f"kepler_H needs e > 1, got e={e!r}")
@@ -123,13 +127,13 @@ def kepler_H(M, e):
         return _solve_hyperbolic(mpf(M), mpf(e))
 
 
-def barker_D(W):
+def barker_D(W: float) -> mpf:
     """D = tan(nu / 2) solving Barker's equation D + D^3 / 3 = W."""
     with mp.workdps(BASE_DPS):
         return _solve_barker(mpf(W))
 
 
-def true_from_E(E, e):
+def true_from_E(E: float | mpf, e: float) -> mpf:
     """True anomaly nu on the same revolution as E: tan(nu/2) = sqrt((1+e)/(1-e)) tan(E/2)."""
     with mp.workdps(BASE_DPS + _magnitude_digits(E)):
         E, e = mpf(E), mpf(e)
@@ -139,7 +143,7 @@ def true_from_E(E, e):
         return nu + 2 * mp.pi * k
 
 
-def true_from_H(H, e):
+def true_from_H(H: float | mpf, e: float) -> mpf:
     """True anomaly nu of a hyperbola: tan(nu/2) = sqrt((e+1)/(e-1)) tanh(H/2)."""
     with mp.workdps(BASE_DPS):
         H, e = mpf(H), mpf(e)
@@ -213,7 +217,7 @@ def _propagation_digits(r0, v0, mu, t):
         return BASE_DPS + 3 * _lost_digits(1 - e) + _magnitude_digits(n * mpf(t))
 
 
-def propagate(r0, v0, mu, t):
+def propagate(r0: "ArrayLike", v0: "ArrayLike", mu: float, t: float) -> tuple[list[mpf], list[mpf]]:
     """Two-body state (r, v) at time t of the Kepler orbit through (r0, v0) at t = 0.
 
     Solves the elliptic, hyperbolic or (energy exactly zero) parabolic Kepler
@@ -228,13 +232,13 @@ def propagate(r0, v0, mu, t):
     return r, v
 
 
-def ulp_error(x, ref):
+def ulp_error(x: float | mpf, ref: float | mpf) -> mpf:
     """|x - ref| in float64 ulps: the spacing at the float nearest |ref| (smallest subnormal if ref == 0)."""
     with mp.workdps(BASE_DPS):
         return abs(mpf(x) - ref) / mpf(math.ulp(abs(float(ref))))
 
 
-def rel_error(x, ref):
+def rel_error(x: float | mpf, ref: float | mpf) -> mpf:
     """|x - ref| / |ref| (0 if both are zero, inf if only ref is)."""
     with mp.workdps(BASE_DPS):
         diff = abs(mpf(x) - ref)
@@ -243,7 +247,7 @@ def rel_error(x, ref):
         return diff / abs(ref)
 
 
-def kepler_E_ulps(E, M, e):
+def kepler_E_ulps(E: float, M: float, e: float) -> float:
     """Distance of a float64 E from the true root of E - e sin E = M_reduced, in ulps of E.
 
     One Newton step at >= 60 digits from the float E gives the root to O(delta**2): for the errors of a few
@@ -256,7 +260,7 @@ def kepler_E_ulps(E, M, e):
         return float(abs(delta) / mpf(math.ulp(abs(float(E))) if E != 0 else 5e-324))
 
 
-def kepler_H_ulps(H, M, e):
+def kepler_H_ulps(H: float, M: float, e: float) -> float:
     """Distance of a float64 H from the true root of e sinh H - H = M, in ulps of H (one Newton step)."""
     with mp.workdps(BASE_DPS + _lost_digits(e - 1)):
         x, e_mp = mpf(H), mpf(e)

@@ -2,7 +2,7 @@
 
 * Masses are runtime parameters (``heyoka.par[i]``), so one compiled integrator serves every problem with
   the same (N, n_active, tol, high_accuracy). Compiled integrators are kept in ``_CACHE``; each call works
-  on a copy (~1 ms), so the cached template is never mutated and calls are re-entrant.
+  on a copy, so the cached template is never mutated and calls are re-entrant.
 * Test particles use heyoka's restricted form of ``model.nbody``: only the first ``n_active`` bodies get a
   mass, and heyoka then omits every term sourced by the remaining bodies. This is exact (no 0 * x terms) and
   cheaper than passing zero masses, which heyoka would keep as live parameters.
@@ -11,8 +11,8 @@
 * heyoka has an on-disk cache of compiled code (SQLite, default ``~/.cache/heyoka``). heyoka itself reads
   ``HEYOKA_CACHE_DIR`` once, when the library loads; ``integrate`` re-reads it on every call and points
   heyoka's cache at it, so setting the variable after import also works.
-* Systems with N >= 4 are compiled in compact mode: full unrolling takes ~4 s at N = 5 and ~20 s at N = 8,
-  compact mode ~0.2 s at a ~1.5-2x slower step. The choice is reported in ``settings``.
+* Systems with N >= 4 are compiled in compact mode: the compile time of full unrolling grows steeply with N,
+  compact mode keeps it short at the price of a slower step. The choice is reported in ``settings``.
 """
 
 from __future__ import annotations

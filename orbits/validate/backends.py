@@ -66,7 +66,7 @@ def available(name: str) -> bool:
     return importlib.util.find_spec(_info(name).package) is not None
 
 
-def integrate(name: str, problem: NBodyProblem, **settings) -> NBodyResult:
+def integrate(name: str, problem: NBodyProblem, **settings: object) -> NBodyResult:
     """Run ``problem`` on backend ``name`` with the adapter's keyword ``settings``; return its NBodyResult."""
     info = _info(name)
     if not available(name):

@@ -7,9 +7,11 @@ ExpandingSphere) answer in closed form; these builders set the same physics up f
 
 import math
 import operator
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from orbits.core import lagrange, rings, sphere
 from orbits.core.checks import require_positive
@@ -39,21 +41,23 @@ class LagrangeExpectation:
     growth_rate: float
     jacobi_constant: float
 
-    def deviations(self, positions):
+    def deviations(self, positions: np.ndarray) -> np.ndarray:
         """|r_rot - position| at each output of integrated (K, N, 3) positions, the rotating frame being the one
         the integrated primaries (bodies 0 and 1) define, so their own phase error does not count."""
         particle, primary, secondary = positions[:, self.index], positions[:, 0], positions[:, 1]
         r_rot = lagrange.rotating_coordinates(particle, primary, secondary, self.mass_ratio)
         return np.linalg.norm(r_rot - self.position, axis=-1)
 
-    def jacobi_constants(self, positions, velocities):
+    def jacobi_constants(self, positions: np.ndarray, velocities: np.ndarray) -> np.ndarray:
         """The particle's Jacobi constant at each output, from inertial (K, N, 3) states about the barycentre."""
         return lagrange.jacobi_constant_inertial(
             positions[:, self.index], velocities[:, self.index], positions[:, 0], positions[:, 1], self.mass_ratio
         )
 
 
-def lagrange_test_particles_problem(mass_ratio, times, points=POINTS, offset=0.0):
+def lagrange_test_particles_problem(
+    mass_ratio: float, times: ArrayLike, points: Sequence[str] = POINTS, offset: float = 0.0
+) -> tuple[NBodyProblem, list[LagrangeExpectation]]:
     """(NBodyProblem, [LagrangeExpectation]): a circular binary (G M = 1 - mu at (-mu, 0, 0), G m = mu at
     (1 - mu, 0, 0), n = 1, period 2 pi) with one massless test particle per point of `points`, and what each
     should do. Unstable points start `offset` (units of r) along their growing mode; stable ones on the point.
@@ -79,7 +83,7 @@ def lagrange_test_particles_problem(mass_ratio, times, points=POINTS, offset=0.0
     return problem, expectations
 
 
-def fitted_growth_rate(times, amplitudes, low=1e-9, high=1e-4):
+def fitted_growth_rate(times: ArrayLike, amplitudes: ArrayLike, low: float = 1e-9, high: float = 1e-4) -> float:
     """Least-squares slope of ln(amplitude) against time over the samples with low <= amplitude <= high:
     the measured e-folding rate of an exponential departure (units of 1/time)."""
     times, amplitudes = np.asarray(times, dtype=float), np.asarray(amplitudes, dtype=float)
@@ -103,17 +107,21 @@ class RingExpectation:
     mode: int | None
     breakup_time: float
 
-    def shape_deviations(self, positions):
+    def shape_deviations(self, positions: np.ndarray) -> np.ndarray:
         """Largest chord error |d_kl - 2 sin(pi |k - l| / n)| of the ring at each output of (K, N, 3) positions."""
         return rings.shape_deviation(positions[:, self.first_body :], 1.0)
 
-    def measured_breakup_time(self, times, positions, level=BREAKUP_DEVIATION):
+    def measured_breakup_time(
+        self, times: np.ndarray, positions: np.ndarray, level: float = BREAKUP_DEVIATION
+    ) -> float:
         """First output time at which the shape deviation reaches `level`; inf if it never does."""
         reached = np.flatnonzero(self.shape_deviations(positions) >= level)
         return float(times[reached[0]]) if reached.size else math.inf
 
 
-def ring_problem(n, times, central_ratio=0.0, phase=0.0, extended=False):
+def ring_problem(
+    n: int, times: ArrayLike, central_ratio: float = 0.0, phase: float = 0.0, extended: bool = False
+) -> tuple[NBodyProblem, RingExpectation]:
     """(NBodyProblem, RingExpectation): n bodies of G m = 1 / (beta + S_n / 4) on the unit circle at
     omega = 1 (angle phase + 2 pi k / n), preceded by a central body of G M = beta G m when beta = M / m > 0;
     `times` in code units. The state is exact to rounding, so round-off alone seeds any instability.
@@ -171,7 +179,14 @@ def _fibonacci_directions(n):
     return np.stack([rho * np.cos(phi), rho * np.sin(phi), z], axis=-1)
 
 
-def expanding_sphere_problem(n_shells=8, *, inner_radius=1.0, outer_radius=4.0, duration=20.0, n_times=11):
+def expanding_sphere_problem(
+    n_shells: int = 8,
+    *,
+    inner_radius: float = 1.0,
+    outer_radius: float = 4.0,
+    duration: float = 20.0,
+    n_times: int = 11,
+) -> tuple[NBodyProblem, np.ndarray]:
     """(NBodyProblem, analytic positions) for the notes' expanding sphere (XXIV) as a validation scene.
 
     Code units, G = 1: a central mass gm = 1 at rest at the origin (body 0), and n_shells test particles

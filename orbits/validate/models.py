@@ -206,12 +206,12 @@ MODELS = {
 }
 
 
-def builtin_names():
+def builtin_names() -> list[str]:
     """Names of the registered model scenes."""
     return sorted(MODELS)
 
 
-def build(name, parameters=None, source="<scene>"):
+def build(name: str, parameters: dict[str, object] | None = None, source: str = "<scene>") -> ModelScene:
     """The model scene `name` built with `parameters` (SceneError naming the source if unknown or invalid)."""
     if name not in MODELS:
         raise SceneError(f"{source}: model: unknown model {name!r}; known: {', '.join(builtin_names())}")

@@ -102,7 +102,7 @@ class Plan:
 
 
 @functools.singledispatch
-def plan(scene) -> Plan:
+def plan(scene: object) -> Plan:
     """The Plan of a scene; each scene kind registers its planner with `@plan.register`."""
     raise TypeError(
         f"cannot validate a {type(scene).__name__}: pass a scene from orbits.validate.scenes.load "

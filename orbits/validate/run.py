@@ -8,7 +8,9 @@ integrators stop at the last time needed and output only at the times the checks
 massless in both backends.
 """
 
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -16,6 +18,10 @@ from orbits.validate import backends
 from orbits.validate import models as _models  # noqa: F401  (registers the planner of model scenes)
 from orbits.validate import scenes as _scenes  # noqa: F401  (registers the planner of data scenes)
 from orbits.validate.plan import CodeUnits, Measurement, plan
+
+if TYPE_CHECKING:
+    from orbits.scene import Scene
+    from orbits.validate.models import ModelScene
 
 DEFAULT_SETTINGS = {
     "rebound": {"integrator": "ias15", "epsilon": 1e-9},
@@ -36,10 +42,10 @@ class Check:
     kind: str  # "relative error", "relative drift" or "absolute drift"
 
     @property
-    def passed(self):
+    def passed(self) -> bool:
         return all(err <= self.tolerance for err in self.errors.values())
 
-    def ulps(self, backend):
+    def ulps(self, backend: str) -> float | None:
         """|error| in ulps of the analytic value, for scalar comparisons (None otherwise)."""
         if self.analytic is None or self.kind != "relative error":
             return None
@@ -63,7 +69,7 @@ class SceneReport:
     residuals: dict = field(default_factory=dict)  # backend -> |dr| / r_max at each residual time
 
     @property
-    def passed(self):
+    def passed(self) -> bool:
         return all(check.passed for check in self.checks)
 
 
@@ -74,7 +80,7 @@ class ValidationReport:
     scenes: list = field(default_factory=list)
 
     @property
-    def passed(self):
+    def passed(self) -> bool:
         return all(scene.passed for scene in self.scenes)
 
     def __repr__(self):
@@ -86,7 +92,7 @@ class ValidationReport:
 
         return validation_html(self)
 
-    def to_dict(self):
+    def to_dict(self) -> dict[str, object]:
         """JSON-ready dictionary of the whole report."""
         return {"passed": self.passed, "scenes": [_scene_dict(s) for s in self.scenes]}
 
@@ -110,7 +116,11 @@ def _scene_dict(report):
     }
 
 
-def validate_scene(scene, backend_names=("rebound", "heyoka"), settings=None) -> SceneReport:
+def validate_scene(
+    scene: "Scene | ModelScene",
+    backend_names: Sequence[str] = ("rebound", "heyoka"),
+    settings: dict[str, dict[str, object]] | None = None,
+) -> SceneReport:
     """SceneReport comparing the predictions of `scene` (a data Scene or a ModelScene) with each named backend."""
     settings = {**DEFAULT_SETTINGS, **(settings or {})}
     the_plan = plan(scene)
@@ -146,7 +156,12 @@ def _gather(per_backend: dict[str, list[Measurement]]) -> list[Check]:
     return checks
 
 
-def validate(scenes, backend_names=("rebound", "heyoka"), settings=None, progress=None) -> ValidationReport:
+def validate(
+    scenes: "Iterable[Scene | ModelScene]",
+    backend_names: Sequence[str] = ("rebound", "heyoka"),
+    settings: dict[str, dict[str, object]] | None = None,
+    progress: Callable[[str], object] | None = None,
+) -> ValidationReport:
     """ValidationReport over scenes of either kind; `progress(scene_name)` is called before each."""
     report = ValidationReport()
     for scene in scenes:

@@ -8,6 +8,7 @@ output times plus the instants a check needs (t = T for a period, the periapsis 
 and measures what the scene asks for on each backend's trajectory.
 """
 
+import os
 import time
 
 import numpy as np
@@ -25,7 +26,7 @@ def builtin_names() -> list[str]:
     return data_scenes.builtin_names() + models.builtin_names()
 
 
-def load(name_or_path) -> "Scene | models.ModelScene":
+def load(name_or_path: str | os.PathLike[str]) -> "Scene | models.ModelScene":
     """A data Scene or a ModelScene from a built-in name or a .toml/.json file, read and parsed once."""
     if str(name_or_path) in models.MODELS:
         return models.build(str(name_or_path))

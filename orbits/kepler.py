@@ -16,56 +16,74 @@ import numpy as np
 
 from orbits import inputs, units
 from orbits.core import anomalies as core
-from orbits.core import kepler
+from orbits.core import kepler as kepler_core
+from orbits.core.errors import OrbitDomainError
 
 
-def anomalies(e, *, mean_anomaly=None, true_anomaly=None) -> dict[str, u.Quantity]:
-    """{name: Quantity} of the mean, eccentric / hyperbolic / parabolic and true anomalies of one conic.
+def anomalies(
+    e: float | np.ndarray | u.Quantity,
+    *,
+    mean_anomaly: u.Quantity | float | np.ndarray | None = None,
+    true_anomaly: u.Quantity | None = None,
+) -> dict[str, u.Quantity]:
+    """{name: Quantity} of the mean, eccentric / hyperbolic / parabolic and true anomalies of one kind of conic.
 
-    Give exactly one of `mean_anomaly` (an angle; for e = 1 Barker's W, a plain number) and `true_anomaly`
-    (an angle). e is one eccentricity >= 0; the anomalies may be arrays. The mean anomaly of an ellipse is
-    returned reduced to [-pi, pi].
+    Give exactly one of `mean_anomaly` (an angle; on the parabola Barker's W, a plain number) and `true_anomaly`
+    (an angle). e >= 0 and the anomaly broadcast together; every e must be on the same kind of conic (all
+    ellipses, all parabolas or all hyperbolas), since each kind has its own anomaly. The mean anomaly of an
+    ellipse is returned reduced to [-pi, pi].
     """
     e = inputs.eccentricity(e)
-    if e.ndim:
-        raise TypeError(f"eccentricity e has shape {e.shape}; give one eccentricity (the anomalies may be arrays)")
-    e = float(e)
+    conic = _conic(e)
     if (mean_anomaly is None) == (true_anomaly is None):
         raise TypeError("give exactly one of mean_anomaly and true_anomaly")
-    result = {"eccentricity": e * u.one}
     if true_anomaly is not None:
-        nu = units.to_si(true_anomaly, units.RAD, "true anomaly nu")
-        result.update(_from_true(nu, e))
+        nu, e = np.broadcast_arrays(units.to_si(true_anomaly, units.RAD, "true anomaly nu"), e)
+        result = _from_true(nu, e, conic)
     else:
-        m = (units.to_number(mean_anomaly, "Barker's mean anomaly W") if e == 1.0
+        m = (units.to_number(mean_anomaly, "Barker's mean anomaly W") if conic == "parabola"
              else units.to_si(mean_anomaly, units.RAD, "mean anomaly M"))
-        result.update(_from_mean(m, e))
+        m, e = np.broadcast_arrays(m, e)
+        result = _from_mean(m, e, conic)
+    result = {"eccentricity": e << u.one, **result}
     result["true_anomaly_deg"] = result["true_anomaly"].to(u.deg)
     return result
 
 
-def _from_mean(m, e):
+def _conic(e):
+    """'ellipse', 'parabola' or 'hyperbola': the one kind of conic every e lies on (OrbitDomainError otherwise)."""
+    kinds = [name for name, on in (("ellipse", e < 1.0), ("parabola", e == 1.0), ("hyperbola", e > 1.0)) if on.any()]
+    if len(kinds) != 1:
+        spanned = " and ".join(f"{kind}s" for kind in kinds)
+        raise OrbitDomainError(
+            f"eccentricities from e = {float(e.min())!r} to {float(e.max())!r} span {spanned}; each kind of conic "
+            f"has its own anomaly: convert them separately"
+        )
+    return kinds[0]
+
+
+def _from_mean(m, e, conic):
     """Anomalies from M (rad) or W: Kepler's equation solved once, the true anomaly from its solution."""
-    if e < 1.0:
-        eccentric = kepler.eccentric_anomaly(m, e)
+    if conic == "ellipse":
+        eccentric = kepler_core.eccentric_anomaly(m, e)
         return {"mean_anomaly": _reduced(m) << units.RAD, "eccentric_anomaly": eccentric << units.RAD,
                 "true_anomaly": core.true_from_eccentric(eccentric, e) << units.RAD}
-    if e == 1.0:
-        parabolic = kepler.parabolic_anomaly(m)
+    if conic == "parabola":
+        parabolic = kepler_core.parabolic_anomaly(m)
         return {"barker_mean_anomaly": m << u.one, "parabolic_anomaly": parabolic << u.one,
                 "true_anomaly": core.true_from_parabolic(parabolic) << units.RAD}
-    hyperbolic = kepler.hyperbolic_anomaly(m, e)
+    hyperbolic = kepler_core.hyperbolic_anomaly(m, e)
     return {"mean_anomaly": m << units.RAD, "hyperbolic_anomaly": hyperbolic << units.RAD,
             "true_anomaly": core.true_from_hyperbolic(hyperbolic, e) << units.RAD}
 
 
-def _from_true(nu, e):
+def _from_true(nu, e, conic):
     """Anomalies from nu (rad), each in closed form: E, H or D from nu, then M from Kepler's equation."""
-    if e < 1.0:
+    if conic == "ellipse":
         eccentric = core.eccentric_from_true(nu, e)
         return {"mean_anomaly": _reduced(core.mean_from_eccentric(eccentric, e)) << units.RAD,
                 "eccentric_anomaly": eccentric << units.RAD, "true_anomaly": np.asarray(nu) << units.RAD}
-    if e == 1.0:
+    if conic == "parabola":
         parabolic = core.parabolic_from_true(nu)
         return {"barker_mean_anomaly": core.mean_from_true(nu, 1.0) << u.one, "parabolic_anomaly": parabolic << u.one,
                 "true_anomaly": np.asarray(nu) << units.RAD}
@@ -76,4 +94,4 @@ def _from_true(nu, e):
 
 def _reduced(m):
     """M reduced to [-pi, pi] (rad), rounded from the exact double-double reduction."""
-    return kepler.reduce_mean_anomaly(m)[0]
+    return kepler_core.reduce_mean_anomaly(m)[0]
