@@ -77,7 +77,7 @@ def test_import_orbits_loads_nothing_heavy():
 
 CORE_MODULES = [
     "anomalies", "binary", "checks", "elements", "errors", "escape", "flyby", "friedmann", "kepler", "lagrange",
-    "propagate", "quadrature", "rings", "sphere", "twobody", "_dd", "_roots",
+    "propagate", "quadrature", "rings", "series", "sphere", "twobody", "_dd", "_roots",
 ]
 
 

@@ -34,7 +34,7 @@ import numpy as np
 PARALLEL_MIN = 1 << 15
 
 #: Modules of orbits/core whose constants and helpers the kernels (orbits/core/_fast*.py) compile in.
-_KERNEL_DEPENDENCIES = ("kepler.py", "propagate.py", "_roots.py")
+_KERNEL_DEPENDENCIES = ("kepler.py", "propagate.py", "_roots.py", "series.py")
 
 _state = {"enabled": None, "threads": None, "pool": None, "cache_dir": None}
 

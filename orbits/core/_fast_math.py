@@ -20,6 +20,7 @@ from numba import types
 from numba.extending import intrinsic
 
 from orbits.core._fast import jit
+from orbits.core.series import factorial_series
 
 _SPLITTER = 134217729.0  # 2**27 + 1, Veltkamp's splitting constant
 _SMALLEST_NORMAL = 2.2250738585072014e-308
@@ -32,17 +33,8 @@ _SIN_MAX = 64.0
 _EXP_MAX = 708.0
 
 
-def _taylor(first, step_sign, terms):
-    """Coefficients, highest first, of sum_k step_sign**k x**k / (2k + first)!, k < terms (x = y**2)."""
-    coefficients, factorial = [], float(math.factorial(first))
-    for k in range(terms):
-        coefficients.append(step_sign**k / factorial)
-        factorial *= (2 * k + first + 1) * (2 * k + first + 2)
-    return tuple(coefficients[::-1])
-
-
-_SIN_POLY = _taylor(3, -1.0, 7)  # (y - sin y) / y**3 = 1/6 - y**2/120 + ..., to y**15
-_COS_POLY = _taylor(4, -1.0, 7)  # (cos y - 1 + y**2/2) / y**4, to y**16
+_SIN_POLY = factorial_series(3, -1.0, 7)  # (y - sin y) / y**3 = 1/6 - y**2/120 + ..., to y**15
+_COS_POLY = factorial_series(4, -1.0, 7)  # (cos y - 1 + y**2/2) / y**4, to y**16
 _EXP_POLY = tuple(1.0 / math.factorial(k) for k in range(13, -1, -1))  # exp(r), to r**13
 
 

@@ -29,26 +29,10 @@ from orbits.core.checks import check_finite
 from orbits.core.elements import check_state
 from orbits.core.errors import DegenerateOrbitError
 from orbits.core.kepler import TWO_PI_1, TWO_PI_2, sinh_minus_x, x_minus_sin
+from orbits.core.series import factorial_series, horner
 
-
-def _stumpff_coefficients(first):
-    """Coefficients, highest first, of c_k(z) = sum_j (-z)**j / (2j + k)!, k = first, j < 12 (|z| <= 1)."""
-    coefficients, factorial = [], float(np.prod(np.arange(1, first + 1)))
-    for j in range(12):
-        coefficients.append((-1.0) ** j / factorial)
-        factorial *= (2 * j + first + 1) * (2 * j + first + 2)
-    return tuple(coefficients[::-1])
-
-
-C2_SERIES, C3_SERIES = _stumpff_coefficients(2), _stumpff_coefficients(3)
-
-
-def _stumpff_series(z, coefficients):
-    """Horner's rule for the series c_k(z) with the given coefficients."""
-    total = np.zeros_like(z)
-    for c in coefficients:
-        total = total * z + c
-    return total
+#: c_k(z) = sum_j (-z)**j / (2j + k)! for k = 2, 3, to 12 terms (|z| <= 1)
+C2_SERIES, C3_SERIES = factorial_series(2, -1.0, 12), factorial_series(3, -1.0, 12)
 
 
 def stumpff(z: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -60,7 +44,7 @@ def stumpff(z: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarra
     c0, c1, c2, c3 = (np.empty_like(z) for _ in range(4))
     small, pos, neg = np.abs(z) <= 1.0, z > 1.0, z < -1.0
     zs = z[small]
-    c2[small], c3[small] = _stumpff_series(zs, C2_SERIES), _stumpff_series(zs, C3_SERIES)
+    c2[small], c3[small] = horner(C2_SERIES, zs), horner(C3_SERIES, zs)
     c0[small], c1[small] = 1.0 - zs * c2[small], 1.0 - zs * c3[small]
     s = np.sqrt(z[pos])
     c0[pos], c1[pos] = np.cos(s), np.sin(s) / s
