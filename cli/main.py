@@ -4,7 +4,10 @@ Each verb lives in orbits_cli/commands/<verb>.py, which imports only typer at mo
 astropy and the backends are imported inside the commands, so `orbits --help` stays fast.
 """
 
+import sys
+
 import typer
+from typer.core import TyperGroup
 
 from orbits_cli.commands import (
     bench,
@@ -20,9 +23,33 @@ from orbits_cli.commands import (
     ring,
     validate,
 )
-from orbits_cli.options import reports_errors
+from orbits_cli.options import displays, reports_errors
+
+
+class OneLineErrors(TyperGroup):
+    """The root command: a usage error (unknown verb or option, a missing or malformed value) is one line on
+    stderr, "orbits: error: ...", with exit status 2, like every other input error."""
+
+    def main(self, *args, standalone_mode: bool = True, **kwargs):
+        if not standalone_mode:
+            return super().main(*args, standalone_mode=False, **kwargs)
+        try:
+            status = super().main(*args, standalone_mode=False, **kwargs)
+        except typer.TyperException as err:  # click's exceptions (typer carries its own click)
+            if type(err).__name__ == "NoArgsIsHelpError":  # bare `orbits` or `orbits bench`: the help
+                print(err.ctx.get_help())
+                sys.exit(0)
+            message = " ".join(err.format_message().split())
+            print(f"orbits: error: {message}", file=sys.stderr)
+            sys.exit(err.exit_code)
+        except typer.Abort:
+            print("orbits: interrupted", file=sys.stderr)
+            sys.exit(130)
+        sys.exit(status if isinstance(status, int) else 0)
+
 
 app = typer.Typer(
+    cls=OneLineErrors,
     help="orbits: Kepler orbits to the last float64 digit, cross-checked against rebound and heyoka.",
     no_args_is_help=True,
     pretty_exceptions_enable=False,
@@ -31,13 +58,13 @@ bench_app = typer.Typer(help="Benchmarks: throughput and accuracy against the pe
 app.add_typer(bench_app, name="bench")
 
 app.command("validate")(reports_errors(validate.command))
-app.command("orbit")(reports_errors(orbit.command))
-app.command("kepler")(reports_errors(kepler.command))
-app.command("cosmology")(reports_errors(cosmology.command))
-app.command("binary")(reports_errors(binary.command))
-app.command("flyby")(reports_errors(flyby.command))
-app.command("lagrange")(reports_errors(lagrange.command))
-app.command("ring")(reports_errors(ring.command))
+app.command("orbit")(reports_errors(displays(orbit.command)))
+app.command("kepler")(reports_errors(displays(kepler.command)))
+app.command("cosmology")(reports_errors(displays(cosmology.command)))
+app.command("binary")(reports_errors(displays(binary.command)))
+app.command("flyby")(reports_errors(displays(flyby.command)))
+app.command("lagrange")(reports_errors(displays(lagrange.command)))
+app.command("ring")(reports_errors(displays(ring.command)))
 app.add_typer(escape.app, name="escape")
 app.command("info")(reports_errors(info.command))
 bench_app.command("kepler")(reports_errors(bench.kepler))

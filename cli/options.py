@@ -1,6 +1,7 @@
 """Options and error handling shared by every command (imports typer only, for a fast --help)."""
 
 import functools
+import inspect
 import sys
 from collections.abc import Callable
 from enum import StrEnum
@@ -54,6 +55,45 @@ def save_plot(draw: "Callable[[], tuple[Figure, Axes]]", path: str) -> None:
     save(fig, path)
 
 
+class Units(StrEnum):
+    natural = "natural"
+    si = "si"
+
+
+_DISPLAY_PARAMETERS = [
+    inspect.Parameter("units", inspect.Parameter.KEYWORD_ONLY, default=Units.natural, annotation=Annotated[
+        Units, typer.Option("--units", help="natural (km, AU, min, d, yr, deg, km/s ...) or si")]),
+    inspect.Parameter("unit", inspect.Parameter.KEYWORD_ONLY, default=None, annotation=Annotated[
+        list[str] | None, typer.Option("--unit", help="show one quantity in a unit: NAME=UNIT, e.g. period=d "
+                                                      "(repeatable)")]),
+    inspect.Parameter("digits", inspect.Parameter.KEYWORD_ONLY, default=7, annotation=Annotated[
+        int, typer.Option("--digits", min=1, max=17, help="significant digits in tables (JSON is always exact)")]),
+]
+
+
+def displays(command: Callable[_P, _R]) -> Callable[..., _R]:
+    """Give a command the display options --units, --unit NAME=UNIT and --digits N, which set how
+    orbits_cli.render shows its tables (JSON is always exact SI)."""
+
+    @functools.wraps(command)
+    def wrapper(*args, units=Units.natural, unit=None, digits=7, **kwargs):
+        from orbits_cli import render
+
+        overrides = {}
+        for item in unit or []:
+            name, sep, value = item.partition("=")
+            if not sep or not name.strip() or not value.strip():
+                raise typer.BadParameter(f"--unit {item!r}: write NAME=UNIT, e.g. period=d")
+            overrides[name.strip()] = value.strip()
+        render.use(render.Display(units.value, overrides, digits))
+        return command(*args, **kwargs)
+
+    signature = inspect.signature(command)
+    wrapper.__signature__ = signature.replace(parameters=[*signature.parameters.values(), *_DISPLAY_PARAMETERS])
+    wrapper.__annotations__ = {**command.__annotations__, **{p.name: p.annotation for p in _DISPLAY_PARAMETERS}}
+    return wrapper
+
+
 def reports_errors(command: Callable[_P, _R]) -> Callable[_P, _R]:
     """Turn the library's input errors into one line on stderr and exit status 2."""
 
@@ -66,7 +106,8 @@ def reports_errors(command: Callable[_P, _R]) -> Callable[_P, _R]:
         try:
             return command(*args, **kwargs)
         except (OrbitsError, ValueError, TypeError, KeyError, u.UnitsError, typer.BadParameter) as err:
-            message = err.format_message() if isinstance(err, typer.BadParameter) else str(err).strip("'\"")
+            message = err.format_message() if isinstance(err, typer.BadParameter) else (
+                str(err.args[0]) if isinstance(err, KeyError) and err.args else str(err))
             print(f"orbits: error: {message}", file=sys.stderr)
             raise typer.Exit(2) from None
 

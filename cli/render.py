@@ -1,10 +1,20 @@
-"""Rendering of calculator results: a rich table, or JSON mapping each name to {"value", "unit"}."""
+"""Rendering of calculator results: tables a person reads in 80 columns, or strict JSON with full precision.
+
+Tables show each quantity in the unit orbits.display chooses (natural units by default, `--units si`, a
+per-quantity `--unit NAME=UNIT`, `--digits N`). JSON carries every value exactly as the library returns it, the
+float64 bit for bit with its unit ({name: {"value", "unit"}}, SI with angles in rad); a non-finite value, which
+JSON (RFC 8259) cannot hold, is the string "inf", "-inf" or "nan", which float() reads back.
+"""
 
 import json
-from collections.abc import Mapping
+import math
+import textwrap
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+from rich import box
 from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
@@ -12,101 +22,284 @@ from rich.table import Table
 if TYPE_CHECKING:
     from astropy.units import Quantity
 
+#: the width every table is laid out for
+WIDTH = 80
+
+
+@dataclass(frozen=True)
+class Display:
+    """How tables show quantities: unit system, per-quantity unit overrides and significant digits."""
+
+    system: str = "natural"
+    overrides: Mapping[str, str] = field(default_factory=dict)
+    digits: int = 7
+
+
+#: set once per command by orbits_cli.options.displays, from --units, --unit and --digits
+DISPLAY = Display()
+
+
+def use(display: Display) -> None:
+    """Make `display` the way the following tables are shown."""
+    global DISPLAY
+    DISPLAY = display
+
+
+def console() -> Console:
+    """A console no wider than WIDTH columns, without rich's highlighting of numbers and paths."""
+    width = min(Console().width, WIDTH)
+    return Console(width=width, highlight=False, soft_wrap=False)
+
+
+# ---- JSON ------------------------------------------------------------------------------------------------
+
+
+def json_value(x: Any) -> Any:
+    """A float, a nested list of floats, or for a non-finite float its name as a string ("inf", "-inf", "nan")."""
+    if isinstance(x, (list, tuple)):
+        return [json_value(v) for v in x]
+    if isinstance(x, float) and not math.isfinite(x):
+        return "nan" if math.isnan(x) else ("inf" if x > 0 else "-inf")
+    return x
+
+
+def dumps(data: Any) -> str:
+    """Strict JSON text (RFC 8259: no NaN or Infinity tokens) of `data`, non-finite floats named as strings."""
+    def clean(obj):
+        if isinstance(obj, dict):
+            return {k: clean(v) for k, v in obj.items()}
+        if isinstance(obj, (list, tuple)):
+            return [clean(v) for v in obj]
+        if isinstance(obj, (float, np.floating)):
+            return json_value(float(obj))
+        if isinstance(obj, np.integer):
+            return int(obj)
+        if isinstance(obj, np.ndarray):
+            return clean(obj.tolist())
+        return obj
+
+    return json.dumps(clean(data), indent=2, allow_nan=False)
+
 
 def to_json(quantities: "Mapping[str, Quantity]") -> str:
-    """JSON text {name: {"value": number or nested list, "unit": str}}."""
+    """JSON text {name: {"value": float or nested list, "unit": str}}: the library's float64 values bit for bit,
+    in the units the library returns them (SI, angles in rad); "" for a pure number."""
     out = {}
     for name, q in quantities.items():
-        value = np.asarray(q.value)
-        out[name] = {"value": value.tolist(), "unit": q.unit.to_string()}
-    return json.dumps(out, indent=2)
+        out[name] = {"value": np.asarray(q.value).tolist(), "unit": q.unit.to_string()}
+    return dumps(out)
 
 
-def _format(value):
-    value = np.asarray(value)
-    if value.ndim == 0:
-        return f"{float(value):.16g}"
-    return np.array2string(value, precision=16, max_line_width=100)
+# ---- tables ----------------------------------------------------------------------------------------------
 
 
-def table(title: str, quantities: "Mapping[str, Quantity]") -> None:
-    """Print a two-column table of quantities with their units."""
-    grid = Table(title=title)
-    grid.add_column("quantity", style="cyan")
-    grid.add_column("value", justify="right")
-    grid.add_column("unit")
+def _shown(q, name):
+    from orbits.display import shown
+
+    return shown(q, name, DISPLAY.system, DISPLAY.overrides, DISPLAY.digits)
+
+
+def number(x: float) -> str:
+    """x with the display's significant digits (orbits.display.number)."""
+    from orbits.display import number as display_number
+
+    return display_number(x, DISPLAY.digits)
+
+
+def _label(name: str) -> str:
+    """A column header: the quantity's name with spaces, so that it wraps."""
+    return name.replace("_", " ")
+
+
+def quantity_table(title: str, quantities: "Mapping[str, Quantity]", prefix: str = "") -> Table:
+    """A table of rows quantity | value | unit; `prefix` is what the names lost in grouping (for --unit)."""
+    grid = Table(title=escape(title) or None, title_justify="left", box=box.SIMPLE_HEAD, pad_edge=False)
+    grid.add_column("quantity", overflow="fold")
+    grid.add_column("value", justify="right", overflow="fold")
+    grid.add_column("unit", overflow="fold")
     for name, q in quantities.items():
-        grid.add_row(name, _format(q.value), q.unit.to_string() or "")
-    Console().print(grid)
+        value, unit = _shown(q, prefix + name)
+        grid.add_row(escape(name), value, escape(unit))
+    return grid
 
 
-def emit(title: str, quantities: "Mapping[str, Quantity]", fmt: str) -> None:
-    """Print quantities in the chosen format ("table" or "json")."""
+def _grid(columns):
+    """A table whose headers are wrapped to the width of their numbers (10 columns at least), so that nothing
+    in it wraps again and its measured width is the width it prints at."""
+    grid = Table(box=box.SIMPLE_HEAD, pad_edge=False)
+    for header, cells in columns:
+        lines = textwrap.wrap(header, width=max(10, *map(len, cells)), break_long_words=False)
+        grid.add_column(escape("\n".join(lines)), justify="right", no_wrap=True)
+    for row in zip(*(cells for _, cells in columns)):
+        grid.add_row(*row)
+    return grid
+
+
+def _fits(grid, width):
+    out = Console(width=10 * width)
+    return grid.__rich_measure__(out, out.options).maximum <= width
+
+
+def column_tables(index: tuple[str, list[str]], columns: list[tuple[str, list[str]]]) -> list[Table]:
+    """Tables of one row per element, as many columns to a table as fit WIDTH (the numbers never wrap), each
+    table repeating the index column. `index` and `columns` are (header, [cell texts]) pairs."""
+    tables, current = [], []
+    for column in columns:
+        if current and not _fits(_grid([index, *current, column]), WIDTH):
+            tables.append(_grid([index, *current]))
+            current = []
+        current.append(column)
+    tables.append(_grid([index, *current]))
+    return tables
+
+
+def column(name: str, q: "Quantity", header: str | None = None, like: "Quantity | None" = None
+           ) -> tuple[str, list[str]]:
+    """(header "name [unit]", one cell per element) of a 1-D quantity, in the display unit of q (or of `like`,
+    so that the components of one vector share a unit)."""
+    from orbits.display import number, unit_for, unit_text
+
+    unit = unit_for(q if like is None else like, name, DISPLAY.system, DISPLAY.overrides)
+    cells = [number(v, DISPLAY.digits) for v in np.ravel(q.to_value(unit))]
+    header = _label(name) if header is None else header
+    return header + (f" [{unit_text(unit)}]" if unit_text(unit) else ""), cells
+
+
+def element_tables(index: str, quantities: "Mapping[str, Quantity]") -> list[Table]:
+    """One row per element of the 1-D quantity `index` (e.g. one row per redshift), one column per quantity of
+    the same length, packed into as many tables as 80 columns need; scalars go to a table of their own."""
+    size = np.size(quantities[index])
+    rows, scalars = {}, {}
+    for name, q in quantities.items():
+        (rows if np.ndim(q) == 1 and np.size(q) == size else scalars)[name] = q
+    columns = []
+    for name, q in rows.items():
+        columns.append(column(name, q))
+    tables = column_tables(columns[0], columns[1:])
+    if scalars:
+        tables.append(quantity_table("", scalars))
+    return tables
+
+
+def grouped_tables(quantities: "Mapping[str, Quantity]", groups: Sequence[tuple[str, str]]) -> list[Table]:
+    """One table per group of quantities: `groups` lists (name prefix, heading); the prefix is dropped from the
+    names; quantities matching no prefix come first."""
+    title = ""
+    sections: dict[str, tuple[str, dict]] = {title: ("", {})}
+    for prefix, heading in groups:
+        sections.setdefault(heading, (prefix, {}))
+    for name, q in quantities.items():
+        match = next(((p, h) for p, h in groups if name.startswith(p)), None)
+        if match is None:
+            sections[title][1][name] = q
+        else:
+            sections[match[1]][1][name.removeprefix(match[0])] = q
+    return [quantity_table(heading, table, prefix) for heading, (prefix, table) in sections.items() if table]
+
+
+def print_tables(tables: Sequence[Table], title: str = "") -> None:
+    """Print the title wrapped to the console's width, then the tables."""
+    out = console()
+    if title:
+        out.print(escape(textwrap.fill(title, out.width)))
+    for grid in tables:
+        out.print(grid)
+
+
+def emit(title: str, quantities: "Mapping[str, Quantity]", fmt: str, *, index: str | None = None,
+         groups: Sequence[tuple[str, str]] = ()) -> None:
+    """Print quantities as JSON, or as tables: one row per element of `index` when given, grouped by name
+    prefix when `groups` are given, else one row per quantity."""
+    unknown = sorted(set(DISPLAY.overrides) - set(quantities))
+    if unknown:
+        raise ValueError(f"--unit {', '.join(unknown)}: no such quantity here; choose from {', '.join(quantities)}")
     if fmt == "json":
         print(to_json(quantities))
+    elif index is not None and index in quantities and np.ndim(quantities[index]) == 1:
+        print_tables(element_tables(index, quantities), title)
+    elif groups:
+        print_tables(grouped_tables(quantities, groups), title)
     else:
-        table(title, quantities)
+        print_tables([quantity_table("", quantities)], title)
 
 
-def _number(x):
-    return "-" if x is None else f"{x:.3g}"
+# ---- the validation report ---------------------------------------------------------------------------------
 
 
-def _wide_console():
-    """A console as wide as the terminal, or 140 columns when the output is piped to a file."""
-    console = Console()
-    return console if console.is_terminal else Console(width=140)
+def _error(x):
+    from orbits.display import number
+
+    return "-" if x is None else number(x, 2)
+
+
+def _analytic(check):
+    """The analytic value in its display unit, for the check's label."""
+    if check["analytic"] is None or check["kind"] != "relative error":
+        return ""
+    import astropy.units as u
+
+    from orbits.display import number, quantity_text
+
+    try:
+        return " = " + quantity_text(u.Quantity(check["analytic"], check["unit"] or u.one))
+    except ValueError:  # a code unit such as "1 / time unit": shown as it is
+        return f" = {number(check['analytic'])} {check['unit']}".rstrip()
+
+
+_KINDS = {"relative error": "rel", "relative drift": "rel drift", "absolute drift": "abs drift"}
 
 
 def validation_report(data: dict[str, Any]) -> None:
-    """Print a validation report (the dict of ValidationReport.to_dict) as one table per scene."""
-    console = _wide_console()
+    """Print a validation report (the dict of ValidationReport.to_dict): per scene its verdict, then one line
+    per check led by its verdict, each backend's error and the tolerance; settings follow as plain lines."""
+    out = console()
+    wrap = textwrap.TextWrapper(width=out.width, initial_indent="  ", subsequent_indent="    ")
     for scene in data["scenes"]:
         backends = list(scene["wall_time_s"])[1:]
-        grid = Table(title=f"{scene['name']}: {scene['description']}", title_justify="left")
-        grid.add_column("check", style="cyan", no_wrap=True, min_width=30)
-        grid.add_column("analytic", justify="right", no_wrap=True)
+        verdict = "[green]passed[/green]" if scene["passed"] else "[red]FAILED[/red]"
+        out.print(f"[bold]{escape(scene['name'])}[/bold]: {verdict}")
+        out.print(escape(textwrap.fill(scene["description"], out.width, initial_indent="  ",
+                                       subsequent_indent="  ")))
+        grid = Table(box=box.SIMPLE_HEAD, pad_edge=False, padding=(0, 1))
+        grid.add_column("", no_wrap=True)
+        grid.add_column("check", overflow="fold", ratio=1)
         for name in backends:
-            grid.add_column(f"{name} error", justify="right", no_wrap=True)
-        grid.add_column("ulps", justify="right", no_wrap=True)
+            grid.add_column(escape(name), justify="right", no_wrap=True)
         grid.add_column("tolerance", justify="right", no_wrap=True)
-        grid.add_column("pass", no_wrap=True)
         for check in scene["checks"]:
-            ulps = [check["ulps"][b] for b in backends if check["ulps"][b] is not None]
-            grid.add_row(
-                escape(check["quantity"] + (f" ({check['unit']})" if check["unit"] else "")),
-                _number(check["analytic"]),
-                *(_number(check["errors"][b]) for b in backends),
-                " / ".join(f"{x:.3g}" for x in ulps) or "-",
-                f"{check['tolerance']:.0e} {check['kind'].split()[0][:3]}",
-                "[green]yes[/green]" if check["passed"] else "[red]NO[/red]",
-            )
-        console.print(grid)
+            mark = "[green]pass[/green]" if check["passed"] else "[red]FAIL[/red]"
+            grid.add_row(mark, escape(check["quantity"] + _analytic(check)),
+                         *(_error(check["errors"][b]) for b in backends),
+                         f"{_error(check['tolerance'])} {_KINDS.get(check['kind'], check['kind'])}")
+        out.print(grid)
         setup = scene["setup_time_s"]
         times = ", ".join(
             f"{k} {v * 1e3:.1f} ms" + (f" (+ setup {setup[k] * 1e3:.1f} ms)" if k in setup else "")
             for k, v in scene["wall_time_s"].items()
         )
-        console.print(f"  wall time: {times}")
+        out.print(escape(wrap.fill(f"wall time: {times}")))
         for name in backends:
             settings = ", ".join(f"{k}={v}" for k, v in scene["settings"][name].items())
-            console.print(escape(f"  {name} {scene['versions'][name]}: {settings}; {scene['time_modes'][name]}"))
+            out.print(escape(wrap.fill(f"{name} {scene['versions'][name]}: {settings}; {scene['time_modes'][name]}")))
+        out.print()
     verdict = "[green]all checks passed[/green]" if data["passed"] else "[red]some checks FAILED[/red]"
-    console.print(f"\n{verdict} ({len(data['scenes'])} scenes)")
+    out.print(f"{verdict} ({len(data['scenes'])} scenes)")
 
 
 def precision_tables(data: dict[str, Any]) -> None:
     """Print the work-precision summary: per problem, each method's best error and its fastest run at target."""
-    console = _wide_console()
-    grid = Table(title=f"work-precision: best error, and the fastest run reaching {data['target']:.0e}")
-    for name in ("problem", "method", "best error", "at", "time", f"fastest <= {data['target']:.0e}", "time"):
-        grid.add_column(name, no_wrap=True, justify="left" if name in ("problem", "method") else "right")
+    out = console()
+    target = _error(data["target"])
+    grid = Table(title=f"work-precision: best error, and the fastest run reaching {target}", title_justify="left",
+                 box=box.SIMPLE_HEAD, pad_edge=False)
+    for name in ("problem", "method", "best error", "at", "time", f"fastest <= {target}", "time"):
+        grid.add_column(escape(name), overflow="fold", justify="left" if name in ("problem", "method") else "right")
     for row in data["summary"]:
         fastest = row["fastest_at_target"] or "not reached"
-        grid.add_row(row["problem"], row["method"], f"{row['best_error']:.2e}", row["best_setting"],
-                     f"{row['best_seconds'] * 1e3:.2f} ms", fastest,
-                     "-" if row["fastest_seconds"] is None else f"{row['fastest_seconds'] * 1e3:.2f} ms")
-    console.print(grid)
+        grid.add_row(escape(row["problem"]), escape(row["method"]), _error(row["best_error"]),
+                     escape(str(row["best_setting"])), f"{row['best_seconds'] * 1e3:.3g} ms", escape(str(fastest)),
+                     "-" if row["fastest_seconds"] is None else f"{row['fastest_seconds'] * 1e3:.3g} ms")
+    out.print(grid)
     notes = {r["note"] for r in data["rows"] if r["note"]}
     for note in sorted(notes):
-        console.print(escape(f"  note: {note}"))
+        out.print(escape(textwrap.fill(f"note: {note}", out.width, initial_indent="  ", subsequent_indent="    ")))

@@ -25,7 +25,7 @@ from functools import cached_property
 import astropy.units as u
 import numpy as np
 
-from orbits import inputs, units
+from orbits import display, inputs, units
 from orbits.constants import Body, G
 from orbits.core import binary as binary_core
 from orbits.core import twobody
@@ -45,7 +45,7 @@ def _vector(value, unit, name, shape):
     return np.broadcast_to(vector, shape + (3,)).astype(float)
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, repr=False)
 class Star(Orbit):
     """One star's orbit about the binary's centre of mass, as a Kepler orbit about a fixed centre at the CM.
 
@@ -61,9 +61,12 @@ class Star(Orbit):
         """a**3 / T**2 = G m_j**3 / ((m1 + m2)**2 4 pi**2) (m3/s2), Kepler's third law for this star (XXII.iii)."""
         return binary_core.kepler_constant(self.mu) << units.M3_PER_S2
 
+    def _about(self) -> str:
+        return "about the centre of mass"
 
-@dataclass(frozen=True, eq=False)
-class Binary:
+
+@dataclass(frozen=True, eq=False, repr=False)
+class Binary(display.Displayed):
     """Two finite masses (or arrays of pairs) on a Kepler orbit about their centre of mass.
 
     Fields are float64 SI: the stars' parameters gm1 = G m1 and gm2 = G m2 (m3/s2), the relative Orbit, and the
@@ -360,6 +363,15 @@ class Binary:
         return self.propagate(0 * u.s)
 
     # ---- tables ---------------------------------------------------------------------------------
+    def __repr__(self) -> str:
+        """E.g. "Binary(Earth + Moon, a = 384399 km, e = 0.0549, T = 27.28 d)"."""
+        pair = f"{display.body_name(self.gm1)} + {display.body_name(self.gm2)}"
+        size = ("a = " + display.summary(self.relative.semi_major_axis) if (self.relative.e < 1).all()
+                else "q = " + display.summary(self.relative.periapsis_distance))
+        period = "T = " + display.summary(self.period) if (self.relative.e < 1).all() else ""
+        count = f"{self.relative.e.size} pairs" if self.relative.shape else ""
+        return display.one_line("Binary", count, pair, size, "e = " + display.summary(self.eccentricity), period)
+
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} of the section XXII quantities (or `only` those).
 

@@ -32,7 +32,7 @@ from functools import cached_property
 import astropy.units as u
 import numpy as np
 
-from orbits import inputs, units
+from orbits import display, inputs, units
 from orbits.constants import SPEED_OF_LIGHT, Body, G
 from orbits.core import friedmann, sphere
 from orbits.core.checks import require_positive
@@ -73,8 +73,19 @@ def _densities(Om0, Ol0, Or0, Ok0):
     return om, orad, ok, ol
 
 
-@dataclass(frozen=True, eq=False)
-class Cosmology:
+#: the model each closed form or the quadrature stands for (Cosmology.method)
+MODEL_NAMES = {
+    "matter_only": "Einstein-de Sitter",
+    "lambda_only": "de Sitter",
+    "radiation_only": "Radiation only",
+    "curvature_only": "Milne (empty, open)",
+    "flat_matter_lambda": "Flat matter + Lambda",
+    "quadrature": "Friedmann (quadrature)",
+}
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class Cosmology(display.Displayed):
     """A Friedmann universe: H0 (1/s) and today's density parameters (dimensionless, summing to 1).
 
     Build it with Cosmology.einstein_de_sitter, Cosmology.de_sitter or Cosmology.from_densities. Redshifts z
@@ -191,6 +202,18 @@ class Cosmology:
         return _redshift_of(self.scale_factor(t))
 
     # ---- tables -------------------------------------------------------------------------------
+    @property
+    def description(self) -> str:
+        """E.g. "Einstein-de Sitter, H0 = 48.8896 km/s/Mpc, Om = 1": the model, H0 and the nonzero densities."""
+        h0 = self.hubble_constant.to_value(u.km / u.s / u.Mpc)
+        labels = ("Om", "Or", "Ok", "Ol")
+        values = (self.omega_m, self.omega_r, self.omega_k, self.omega_l)
+        densities = "".join(f", {label} = {value:.6g}" for label, value in zip(labels, values) if value != 0)
+        return f"{MODEL_NAMES[self.method]}, H0 = {h0:.6g} km/s/Mpc{densities}"
+
+    def __repr__(self) -> str:
+        return f"Cosmology({self.description})"
+
     def quantities(
         self,
         z: float | np.ndarray | u.Quantity | None = None,
@@ -263,8 +286,8 @@ def _cosmic_time(t):
 # ---- the Newtonian sphere of XXIV ---------------------------------------------------------------------------
 
 
-@dataclass(frozen=True, eq=False)
-class ExpandingSphere:
+@dataclass(frozen=True, eq=False, repr=False)
+class ExpandingSphere(display.Displayed):
     """A shell of the notes' uniform, pressureless sphere (XXIV), at zero energy; gm = G M (m3/s2) of the mass
     it encloses, a float64 array that broadcasts. Times t are measured from the big bang."""
 
@@ -319,6 +342,13 @@ class ExpandingSphere:
         hubble = self.hubble_parameter(t).to_value(PER_S)
         r = self.radius(t).to_value(units.M)
         return 2.0 * self.gm / (hubble * hubble * r**3) << u.one
+
+    def __repr__(self) -> str:
+        return display.one_line("ExpandingSphere", "GM = " + display.summary(self.gm << units.M3_PER_S2),
+                                "zero energy, r = (9 GM t**2 / 2)**(1/3)")
+
+    def _display_quantities(self) -> dict:
+        return {"gravitational_parameter": self.gm << units.M3_PER_S2}
 
     def quantities(self, t: u.Quantity, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} at time t (time) after the big bang, or `only` those (SPHERE_NAMES)."""

@@ -26,7 +26,7 @@ from functools import cached_property
 import astropy.units as u
 import numpy as np
 
-from orbits import inputs, units
+from orbits import display, inputs, units
 from orbits.binary import Binary
 from orbits.constants import BODIES, EARTH_MEAN_RADIUS, STANDARD_GRAVITY, Body, body
 from orbits.core import escape as escape_core
@@ -76,8 +76,8 @@ def escape_speed(primary: Body | str | u.Quantity | Binary, distance: u.Quantity
     return twobody.escape_speed(r, mu) << units.M_PER_S
 
 
-@dataclass(frozen=True, eq=False)
-class CosmicVelocities:
+@dataclass(frozen=True, eq=False, repr=False)
+class CosmicVelocities(display.Displayed):
     """First, second and third cosmic velocities of a planet (XXI.ix); float64 SI fields that broadcast.
 
     g (m/s2) and radius (m) are the surface gravity and radius; v_orbit (m/s) is the planet's circular speed
@@ -155,6 +155,16 @@ class CosmicVelocities:
             raise OrbitDomainError(f"{quantity} needs the planet's orbital speed about its primary; this body has none")
         return self.v_orbit
 
+    def __repr__(self) -> str:
+        """E.g. "CosmicVelocities(7.904, 11.17799, 16.64822 km/s, g = 9.80665 m / s2, R = 6371 km)"."""
+        speeds = [self.first_cosmic_velocity, self.second_cosmic_velocity]
+        if self.v_orbit is not None:
+            speeds.append(self.third_cosmic_velocity)
+        shown = ", ".join(display.summary(v, unit=u.km / u.s).removesuffix(" km / s") for v in speeds)
+        gravity = "g = " + display.summary(self.g << units.M / units.S**2)
+        radius = "R = " + display.summary(self.radius << units.M)
+        return display.one_line("CosmicVelocities", shown + " km / s", gravity, radius)
+
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those); without `only`, the third velocity is left out when the
         body has no orbit."""
@@ -166,8 +176,8 @@ def _orbital_speed(named):
     return twobody.circular_speed(named.orbit.a, BODIES[named.orbit.primary].gm)
 
 
-@dataclass(frozen=True, eq=False)
-class SynchronousOrbit:
+@dataclass(frozen=True, eq=False, repr=False)
+class SynchronousOrbit(display.Displayed):
     """The circular orbit whose period equals a body's sidereal rotation period (XXI.x); float64 SI fields.
 
     mu (m3/s2), rotation_period (s) and body_radius (m, or None: no altitude then). Any inclination gives a
@@ -231,6 +241,13 @@ class SynchronousOrbit:
     def period(self) -> u.Quantity:
         """T (s), the sidereal rotation period."""
         return self.rotation_period << units.S
+
+    def __repr__(self) -> str:
+        """E.g. "SynchronousOrbit(r = 42164.17 km, altitude = 35786.03 km, T = 23.93447 h, about Earth)"."""
+        inside = self.body_radius is None or np.any(self.orbit_radius.to_value(units.M) <= self.body_radius)
+        altitude = "" if inside else "altitude = " + display.summary(self.altitude)
+        return display.one_line("SynchronousOrbit", "r = " + display.summary(self.orbit_radius), altitude,
+                                "T = " + display.summary(self.period), f"about {display.body_name(self.mu)}")
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those); without `only`, altitude is left out when undefined."""

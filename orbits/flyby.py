@@ -25,7 +25,7 @@ from functools import cached_property
 import astropy.units as u
 import numpy as np
 
-from orbits import inputs, units
+from orbits import display, inputs, units
 from orbits.constants import Body, G
 from orbits.core import binary as binary_core
 from orbits.core import flyby as flyby_core
@@ -54,8 +54,8 @@ def _speed_at_infinity(v_inf):
     return value
 
 
-@dataclass(frozen=True, eq=False)
-class Flyby:
+@dataclass(frozen=True, eq=False, repr=False)
+class Flyby(display.Displayed):
     """Hyperbolic encounter(s): float64 SI fields mu (m3/s2), v_inf (m/s), b (m) that broadcast together.
 
     `mass` (kg) is the moving body's mass (Flyby.past, optional) or the reduced mass (Flyby.between), used by
@@ -237,6 +237,13 @@ class Flyby:
         return self.mass
 
     # ---- tables ---------------------------------------------------------------------------------
+    def __repr__(self) -> str:
+        """E.g. "Flyby(v_inf = 5 km/s, b = 10000 km, deflection = 23.1 deg, q = 6500 km, about Earth)"."""
+        return display.one_line(
+            "Flyby", "v_inf = " + display.summary(self.speed_at_infinity),
+            "b = " + display.summary(self.impact_parameter), "deflection = " + display.summary(self.deflection_angle),
+            "q = " + display.summary(self.periapsis_distance), f"about {display.body_name(self.mu)}")
+
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} of the encounter (or `only` those); `star1_<name>`, `star2_<name>` for the
         stars of Flyby.between. Without `only`, quantities this encounter lacks (no mass, no pair) are left out."""

@@ -21,7 +21,7 @@ from functools import cached_property
 import astropy.units as u
 import numpy as np
 
-from orbits import inputs, units
+from orbits import display, inputs, units
 from orbits.constants import Body, body
 from orbits.core import lagrange
 from orbits.core.checks import require_positive
@@ -44,8 +44,8 @@ def _separation(primary, secondary, separation):
     return np.asarray(target.orbit.a)
 
 
-@dataclass(frozen=True, eq=False)
-class RestrictedThreeBody:
+@dataclass(frozen=True, eq=False, repr=False)
+class RestrictedThreeBody(display.Displayed):
     """Circular restricted three-body problem of a binary; fields are float64 SI arrays that broadcast together.
 
     Build it with RestrictedThreeBody.from_primaries. `gm_primary` >= `gm_secondary` (m3/s2), the separation
@@ -205,6 +205,12 @@ class RestrictedThreeBody:
         return x * r << units.M, y * r << units.M, c * float(self._scale_squared) << units.M_PER_S**2
 
     # ---- tables ---------------------------------------------------------------------------------
+    def __repr__(self) -> str:
+        """E.g. "RestrictedThreeBody(Earth + Moon, mu = 0.01215059, r = 384399 km, T = 27.2845 d)"."""
+        pair = f"{display.body_name(self.gm_primary)} + {display.body_name(self.gm_secondary)}"
+        return display.one_line("RestrictedThreeBody", pair, "mu = " + display.summary(self.mass_ratio),
+                                "r = " + display.summary(self.separation), "T = " + display.summary(self.period))
+
     def quantities(
         self, only: Iterable[str] | None = None, points: Sequence[str] = POINTS
     ) -> dict[str, u.Quantity]:

@@ -18,7 +18,7 @@ from functools import cached_property
 import astropy.units as u
 import numpy as np
 
-from orbits import inputs, units
+from orbits import display, inputs, units
 from orbits.constants import Body, body
 from orbits.core import anomalies, elements, propagate, twobody
 from orbits.core.checks import require_positive
@@ -48,7 +48,7 @@ def _check_shapes(**arrays):
 
 
 @dataclass(frozen=True, eq=False)
-class Orbit:
+class Orbit(display.Displayed):
     """Kepler orbit(s) about a fixed primary; fields are float64 SI arrays that broadcast together.
 
     Build it with Orbit.from_elements, Orbit.from_vectors or Orbit.circular rather than directly.
@@ -375,17 +375,23 @@ class Orbit:
         )
 
     # ---- display --------------------------------------------------------------------------------
-    def __repr__(self):
-        if self.shape == ():
-            a = float(self.p) / ((1 - float(self.e)) * (1 + float(self.e))) if self.e != 1 else np.inf
-            return (f"Orbit(mu={float(self.mu):.6g} m3 / s2, a={a:.6g} m, e={float(self.e):.6g}, "
-                    f"i={np.degrees(float(self.inc)):.4f} deg, nu={np.degrees(float(self.nu)):.4f} deg)")
-        return f"Orbit(shape={self.shape}, e in [{self.e.min():.6g}, {self.e.max():.6g}])"
+    def __repr__(self) -> str:
+        """E.g. "Orbit(6778 x 6778 km, e = 0, i = 51.64 deg, about Earth)": periapsis x apoapsis for ellipses,
+        the periapsis distance for open orbits, ranges for arrays of orbits."""
+        about = self._about()
+        e, i = display.summary(self.eccentricity), "i = " + display.summary(self.inclination)
+        count = f"{self.e.size} orbits" if self.shape else ""
+        if (self.e < 1).all():
+            low, high = self.periapsis_distance, self.apoapsis_distance
+            unit = display.natural_unit(high)
+            low_text = display.summary(low, unit=unit).removesuffix(" " + display.unit_text(unit))
+            size = f"{low_text} x {display.summary(high, unit=unit)}"
+        else:
+            size = "q = " + display.summary(self.periapsis_distance)
+        return display.one_line(type(self).__name__, count, size, f"e = {e}", i, about)
 
-    def _repr_html_(self):
-        from orbits.display import quantities_html
-
-        return quantities_html(repr(self), self.quantities())
+    def _about(self) -> str:
+        return f"about {display.body_name(self.mu)}"
 
     # ---- tables ---------------------------------------------------------------------------------
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:

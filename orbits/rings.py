@@ -20,7 +20,7 @@ from functools import cached_property
 import astropy.units as u
 import numpy as np
 
-from orbits import inputs, units
+from orbits import display, inputs, units
 from orbits.constants import Body, G
 from orbits.core import rings, twobody
 from orbits.core.checks import require_positive
@@ -32,8 +32,8 @@ ROUND_OFF_SEED = 1e-16
 BREAKUP_DEVIATION = 1e-3
 
 
-@dataclass(frozen=True, eq=False)
-class Ring:
+@dataclass(frozen=True, eq=False, repr=False)
+class Ring(display.Displayed):
     """n bodies of GM `gm` (m3/s2) on a circle of radius `r` (m) about a central `gm_central` (m3/s2, 0 for
     none); gm, r and gm_central are float64 arrays that broadcast together. Build it with Ring.from_masses."""
 
@@ -191,6 +191,13 @@ class Ring:
             raise OrbitDomainError(f"{quantity} is defined for unstable rings only; this ring is linearly stable")
 
     # ---- tables ---------------------------------------------------------------------------------
+    def __repr__(self) -> str:
+        """E.g. "Ring(3 x 1 kg, r = 1 m, T = 4.3 h)", with the central mass when there is one."""
+        masses = f"{self.n} x " + display.summary(self.gm / G << units.KG)
+        central = "" if not np.any(self.gm_central) else "about " + display.summary(self.gm_central / G << units.KG)
+        return display.one_line("Ring", masses, central, "r = " + display.summary(self.r << units.M),
+                                "T = " + display.summary(self.period))
+
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{name: Quantity} of the QUANTITY_NAMES this ring has (or `only` those, raising if one is undefined)."""
         return quantity_table(lambda name: getattr(self, name), QUANTITY_NAMES, only)

@@ -51,7 +51,9 @@ def command(
         from orbits.plot import binary_plane
 
         save_plot(lambda: binary_plane(result), plot)
-    render.emit(f"Binary of {m1} and {m2}", result.quantities(inputs.names(only)), fmt.value)
+    groups = [("relative_", "relative orbit (star 2 about star 1)"), ("star1_", "star 1 about the centre of mass"),
+              ("star2_", "star 2 about the centre of mass")]
+    render.emit(f"Binary of {m1} and {m2}", result.quantities(inputs.names(only)), fmt.value, groups=groups)
 
 
 def build(

@@ -7,7 +7,6 @@ import typer
 from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
 
 if TYPE_CHECKING:
-    from collections.abc import Mapping
 
     import numpy
     from astropy.units import Quantity
@@ -15,16 +14,6 @@ if TYPE_CHECKING:
     from orbits.cosmology import Cosmology
 
 NOTES_HUBBLE = "0.5e-10 / yr"  # XXIV.iv's H, which gives the notes' age 1.33e10 yr
-
-_TITLES = {
-    "matter_only": "Einstein-de Sitter",
-    "lambda_only": "de Sitter",
-    "radiation_only": "Radiation only",
-    "curvature_only": "Milne (empty, open)",
-    "flat_matter_lambda": "Flat matter + Lambda",
-    "quadrature": "Friedmann (quadrature)",
-}
-
 
 def command(
     h0: Annotated[
@@ -58,7 +47,7 @@ def command(
         from orbits.plot import scale_factor_curves
 
         save_plot(lambda: scale_factor_curves({title(cosmology): cosmology}, 2 * cosmology.age().to(u.Gyr)), plot)
-    render.emit(title(cosmology), display_units(table), fmt.value)
+    render.emit(title(cosmology), table, fmt.value, index="redshift")
 
 
 def build(h0: str, om: float | None, ol: float | None, orad: float | None, ok: float | None) -> "Cosmology":
@@ -100,19 +89,5 @@ def epoch(z: str | None, t: str | None) -> "dict[str, Quantity | numpy.ndarray |
 
 
 def title(cosmology: "Cosmology") -> str:
-    """E.g. "Einstein-de Sitter, H0 = 48.8896 km/s/Mpc, Om = 1" (the nonzero densities only)."""
-    import astropy.units as u
-
-    h0 = cosmology.hubble_constant.to_value(u.km / u.s / u.Mpc)
-    labels = ("Om", "Or", "Ok", "Ol")
-    values = (cosmology.omega_m, cosmology.omega_r, cosmology.omega_k, cosmology.omega_l)
-    densities = "".join(f", {label} = {value:.6g}" for label, value in zip(labels, values) if value != 0)
-    return f"{_TITLES[cosmology.method]}, H0 = {h0:.6g} km/s/Mpc{densities}"
-
-
-def display_units(quantities: "Mapping[str, Quantity]") -> "dict[str, Quantity]":
-    """The table in astronomers' units: times in Gyr, lengths in Mpc, rates in km/s/Mpc."""
-    import astropy.units as u
-
-    shown = {"time": u.Gyr, "length": u.Mpc, "frequency": u.km / u.s / u.Mpc}
-    return {name: q.to(shown.get(str(q.unit.physical_type), q.unit)) for name, q in quantities.items()}
+    """E.g. "Einstein-de Sitter, H0 = 48.8896 km/s/Mpc, Om = 1" (Cosmology.description)."""
+    return cosmology.description

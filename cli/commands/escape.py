@@ -8,7 +8,7 @@ from typing import Annotated
 import typer
 
 from orbits_cli.commands.binary import MASS_HELP, mass_or_body
-from orbits_cli.options import Format, FormatOption, OnlyOption, reports_errors
+from orbits_cli.options import Format, FormatOption, OnlyOption, displays, reports_errors
 
 app = typer.Typer(
     help="Escape speed, cosmic velocities, synchronous orbits and maximum elongation (notes XXI.ix-xi).",
@@ -120,7 +120,7 @@ def _radius_or_body(text, option):
     return inputs.parse_quantity(text, "length", option)
 
 
-app.command("speed")(reports_errors(speed))
-app.command("cosmic")(reports_errors(cosmic))
-app.command("geo")(reports_errors(geo))
-app.command("elongation")(reports_errors(elongation))
+app.command("speed")(reports_errors(displays(speed)))
+app.command("cosmic")(reports_errors(displays(cosmic)))
+app.command("geo")(reports_errors(displays(geo)))
+app.command("elongation")(reports_errors(displays(elongation)))

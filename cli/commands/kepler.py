@@ -13,9 +13,12 @@ if TYPE_CHECKING:
 def command(
     e: Annotated[float, typer.Option("--e", help="eccentricity (any conic)")],
     mean: Annotated[
-        str | None, typer.Option("--M", help="mean anomaly (Barker's W when e = 1), e.g. '1.2 rad'")
+        str | None, typer.Option("--M", help="mean anomaly, e.g. '1.2 rad' (bare numbers are degrees); Barker's W, "
+                                             "a plain number, when e = 1")
     ] = None,
-    true: Annotated[str | None, typer.Option("--nu", help="true anomaly, e.g. '120 deg'")] = None,
+    true: Annotated[
+        str | None, typer.Option("--nu", help="true anomaly, e.g. '120 deg' (bare numbers are degrees)")
+    ] = None,
     fmt: FormatOption = Format.table,
 ) -> None:
     """Anomaly conversions: from the mean anomaly (--M) or the true anomaly (--nu) to all the others."""
@@ -26,7 +29,6 @@ def command(
 
 def anomalies_from(e: float, mean: str | None, true: str | None) -> "dict[str, Quantity]":
     """{name: Quantity}: mean, eccentric / hyperbolic / parabolic and true anomalies for one e."""
-    import astropy.units as u
 
     from orbits import anomalies, inputs
 
@@ -36,5 +38,4 @@ def anomalies_from(e: float, mean: str | None, true: str | None) -> "dict[str, Q
         return anomalies(e, true_anomaly=inputs.parse_angle(true, "--nu"))
     if e == 1.0:
         return anomalies(e, mean_anomaly=inputs.parse_quantity(mean, "dimensionless", "--M (Barker's W)"))
-    # a bare --M is read in radians, as it always was here; the angle convention is settled with the display units
-    return anomalies(e, mean_anomaly=inputs.parse_quantity(mean, "angle", "--M", bare_unit=u.rad))
+    return anomalies(e, mean_anomaly=inputs.parse_angle(mean, "--M"))

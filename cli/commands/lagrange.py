@@ -32,7 +32,50 @@ def command(
     system = build(primary, secondary, r)
     mu = float(system.mass_ratio.value)
     title = f"Lagrange points of {primary} and {secondary}, mu = {mu:.10g} (rotating frame, origin at the barycentre)"
-    render.emit(title, system.quantities(inputs.names(only), points=inputs.names(points)), fmt.value)
+    quantities = system.quantities(inputs.names(only), points=inputs.names(points))
+    if fmt == Format.json:
+        render.emit(title, quantities, fmt.value)
+    else:
+        render.print_tables(point_tables(system, quantities), title)
+
+
+def point_tables(system: "RestrictedThreeBody", quantities: dict) -> list:
+    """The binary's own quantities, then one row per point: position (in units of r and in length units),
+    distances, Jacobi constant, stability and e-folding time. The eigenvalues are in the JSON output."""
+    import astropy.units as u
+    import numpy as np
+
+    from orbits_cli import render
+
+    points = [p for p in ("L1", "L2", "L3", "L4", "L5") if any(name.startswith(f"{p}_") for name in quantities)]
+    binary = {name: q for name, q in quantities.items() if not name.startswith(tuple(f"{p}_" for p in points))}
+
+    def stack(suffix):
+        return u.Quantity([quantities[f"{p}_{suffix}"] for p in points]) if points and all(
+            f"{p}_{suffix}" in quantities for p in points) else None
+
+    columns = []
+    position = stack("position")
+    if position is not None:
+        scaled = (position / system.separation).to_value(u.one)
+        columns += [("x / r", [render.number(v) for v in scaled[:, 0]]),
+                    ("y / r", [render.number(v) for v in scaled[:, 1]]),
+                    render.column("position", position[:, 0], "x", position),
+                    render.column("position", position[:, 1], "y", position)]
+    for suffix, header in (("distance_to_primary", "to M"), ("distance_to_secondary", "to m"),
+                           ("jacobi_constant", "Jacobi C")):
+        values = stack(suffix)
+        if values is not None:
+            columns.append(render.column(suffix, values, header))
+    rates = stack("growth_rate")
+    if rates is not None:
+        columns.append(("stable", ["yes" if rate == 0 else "no" for rate in rates.value]))
+        times = u.Quantity([quantities.get(f"{p}_e_folding_time", np.inf * u.s) for p in points])
+        columns.append(render.column("e_folding_time", times, "e-folding"))
+    tables = [render.quantity_table("", binary)] if binary else []
+    if columns:
+        tables += render.column_tables(("point", points), columns)
+    return tables
 
 
 def build(primary: str, secondary: str, r: str | None) -> "RestrictedThreeBody":

@@ -5,15 +5,10 @@ from typing import TYPE_CHECKING, Annotated
 import typer
 
 from orbits_cli.options import (
-    EccentricityOption,
     Format,
     FormatOption,
-    InclinationOption,
-    NodeOption,
     OnlyOption,
-    PeriapsisArgumentOption,
     PlotOption,
-    TrueAnomalyOption,
     save_plot,
 )
 
@@ -26,16 +21,16 @@ def command(
         str | None, typer.Argument(metavar="[BODY]", help="a named body (Earth, Moon, Jupiter): its mean orbit")
     ] = None,
     primary: Annotated[
-        str, typer.Option(help="central body: name, mass ('5.97e24 kg') or GM ('3.986e14 m3/s2')")
-    ] = "Sun",
+        str | None, typer.Option(help="central body: name, mass ('5.97e24 kg') or GM ('3.986e14 m3/s2') [default: Sun]")
+    ] = None,
     a: Annotated[str | None, typer.Option("--a", help="semi-major axis, e.g. '1 AU' (negative for hyperbolas)")] = None,
     p: Annotated[str | None, typer.Option("--p", help="semi-latus rectum")] = None,
     q: Annotated[str | None, typer.Option("--q", help="periapsis distance (use for e = 1)")] = None,
-    e: EccentricityOption = 0.0,
-    inc: InclinationOption = "0",
-    raan: NodeOption = "0",
-    argp: PeriapsisArgumentOption = "0",
-    nu: TrueAnomalyOption = "0",
+    e: Annotated[float | None, typer.Option("--e", help="eccentricity [default: 0]")] = None,
+    inc: Annotated[str | None, typer.Option("--inc", help="inclination ('28.5 deg'; bare numbers are degrees)")] = None,
+    raan: Annotated[str | None, typer.Option("--raan", help="longitude of the ascending node [default: 0]")] = None,
+    argp: Annotated[str | None, typer.Option("--argp", help="argument of periapsis [default: 0]")] = None,
+    nu: Annotated[str | None, typer.Option("--nu", help="true anomaly [default: 0]")] = None,
     r: Annotated[
         str | None, typer.Option("--r", help="position vector 'X,Y,Z UNIT' (with --v instead of elements)")
     ] = None,
@@ -60,15 +55,15 @@ def command(
 
 def build(
     body_name: str | None,
-    primary: str,
+    primary: str | None,
     a: str | None,
     p: str | None,
     q: str | None,
-    e: float,
-    inc: str,
-    raan: str,
-    argp: str,
-    nu: str,
+    e: float | None,
+    inc: str | None,
+    raan: str | None,
+    argp: str | None,
+    nu: str | None,
     r: str | None,
     v: str | None,
     mass: str | None,
@@ -79,20 +74,30 @@ def build(
     from orbits_cli import params
 
     mass_q = None if mass is None else parse_quantity(mass, "mass", "--mass")
+    elements = {"--a": a, "--p": p, "--q": q, "--e": e, "--inc": inc, "--raan": raan, "--argp": argp, "--nu": nu}
     if body_name is not None:
+        given = [k for k, x in {**elements, "--primary": primary, "--r": r, "--v": v, "--mass": mass}.items()
+                 if x is not None]
+        if given:
+            verb = "does" if len(given) == 1 else "do"
+            raise typer.BadParameter(f"{', '.join(given)} {verb} not apply to {body_name}: a named body's orbit "
+                                     f"comes from the catalogue; drop BODY to give an orbit of your own")
         orbit = Orbit.from_body(body_name)
         return orbit, f"{body(body_name).name}'s mean orbit"
-    center = parse_primary(primary)
+    center = parse_primary("Sun" if primary is None else primary)
     if (r is None) != (v is None):
         raise typer.BadParameter("give both --r and --v for a state vector")
     if r is not None:
-        if any(x is not None for x in (a, p, q)):
-            raise typer.BadParameter("give either a state vector (--r, --v) or elements (--a/--p/--q), not both")
+        given = [k for k, x in elements.items() if x is not None]
+        if given:
+            raise typer.BadParameter(f"give either a state vector (--r, --v) or elements ({', '.join(given)}), "
+                                     f"not both")
         orbit = Orbit.from_vectors(center, parse_vector(r, "length", "--r"), parse_vector(v, "speed", "--v"),
                                    mass=mass_q)
         return orbit, "Orbit from a state vector"
     if all(x is None for x in (a, p, q)):
         raise typer.BadParameter("give a size (--a, --p or --q), a state vector (--r and --v), or a BODY name")
     sizes = {k: None if x is None else parse_quantity(x, "length", f"--{k}") for k, x in zip("apq", (a, p, q))}
-    orbit = Orbit.from_elements(center, e=e, **params.orientation(inc, raan, argp, nu), mass=mass_q, **sizes)
+    angles = params.orientation(*(x or "0" for x in (inc, raan, argp, nu)))
+    orbit = Orbit.from_elements(center, e=0.0 if e is None else e, **angles, mass=mass_q, **sizes)
     return orbit, "Orbit from elements"

@@ -62,11 +62,11 @@ def test_validation_residuals_one_line_per_scene_and_backend(tmp_path):
 
 def test_html_and_text_display():
     orbit = Orbit.from_elements("Earth", a=7000 * u.km, e=0.1)
-    assert repr(orbit).startswith("Orbit(mu=3.986e+14 m3 / s2, a=7e+06 m, e=0.1")
+    assert repr(orbit) == "Orbit(6300 x 7700 km, e = 0.1, i = 0 deg, about Earth)"  # q x Q, natural units
     page = orbit._repr_html_()
-    assert "<table>" in page and "period" in page and "<td style='text-align:left'>s</td>" in page
+    assert "<table>" in page and "period" in page and "<td style='text-align:left'>min</td>" in page
     many = Orbit.from_elements("Earth", a=[7000, 8000] * u.km, e=0.1)
-    assert repr(many) == "Orbit(shape=(2,), e in [0.1, 0.1])"
+    assert repr(many) == "Orbit(2 orbits, 6300..7200 x 7700..8800 km, e = 0.1, i = 0 deg, about Earth)"
     report = validate([scene.load("flyby")], ("rebound",))
     assert "flyby" in report._repr_html_() and "all checks passed" in report._repr_html_()
     assert repr(report) == "ValidationReport(1 scenes: flyby; passed)"

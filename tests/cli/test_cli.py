@@ -42,7 +42,7 @@ def test_orbit_from_a_state_vector_table():
 
 
 def test_kepler_conversions_both_ways():
-    forward = json.loads(run("kepler", "--e", "0.5", "--M", "1.0", "--format", "json").stdout)
+    forward = json.loads(run("kepler", "--e", "0.5", "--M", "1.0 rad", "--format", "json").stdout)
     nu = forward["true_anomaly"]["value"]
     back = json.loads(run("kepler", "--e", "0.5", "--nu", f"{nu} rad", "--format", "json").stdout)
     assert abs(back["mean_anomaly"]["value"] - 1.0) < 1e-15

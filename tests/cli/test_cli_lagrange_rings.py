@@ -51,7 +51,8 @@ def test_lagrange_given_masses_points_and_only():
 def test_lagrange_table():
     result = run("lagrange", "Sun", "Earth", "--points", "L2")
     assert result.exit_code == 0, result.output
-    assert "L2_distance_to_secondary" in result.stdout and "mu = 3.0034" in result.stdout
+    assert "mu = 3.0034" in result.stdout and "to m [km]" in result.stdout  # one row per point
+    assert any(line.split()[:1] == ["L2"] and "1501" in line for line in result.stdout.splitlines())
 
 
 @pytest.mark.parametrize(
