@@ -67,7 +67,7 @@ def natural_unit(q: u.Quantity, name: str = "") -> u.UnitBase:
         if "hubble" in name:
             return _HUBBLE
         rate = _size(q, 1 / u.s)
-        return 1 / _rung(1.0 / rate if rate > 0 else 0.0, _TIMES)
+        return _rung(1.0 / rate if rate > 0 else 0.0, _TIMES) ** -1
     if unit.is_equivalent(u.m / u.s):
         return u.km / u.s if _size(q, u.m / u.s) >= 1.0 else u.m / u.s
     for si, natural in _FIXED:

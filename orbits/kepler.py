@@ -45,9 +45,7 @@ def anomalies(
              else units.to_si(mean_anomaly, units.RAD, "mean anomaly M"))
         m, e = np.broadcast_arrays(m, e)
         result = _from_mean(m, e, conic)
-    result = {"eccentricity": e << u.one, **result}
-    result["true_anomaly_deg"] = result["true_anomaly"].to(u.deg)
-    return result
+    return {"eccentricity": e << u.one, **result}
 
 
 def _conic(e):

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 import astropy.units as u
 import numpy as np
 
+from orbits import display
 from orbits.io import write_atomic
 
 if TYPE_CHECKING:
@@ -41,8 +42,8 @@ def _finish_plane(ax, unit, x_label):
 
 
 def _length_unit(size_m):
-    """AU for orbits larger than 0.1 AU, km otherwise."""
-    return u.AU if size_m > 0.1 * u.AU.to(u.m) else u.km
+    """The natural length unit of a picture spanning size_m metres (orbits.display: km, AU, pc, ...)."""
+    return display.axis_unit(size_m << u.m)
 
 
 def _conic_points(p, e, r_max, samples=721):
@@ -179,12 +180,13 @@ def scale_factor_curves(
 ) -> tuple[Any, Any]:
     """a(t) against cosmic time for {label: Cosmology}, from the big bang to t_max (time Quantity)."""
     fig, ax = _axes(ax)
-    gyr = t_max.to_value(u.Gyr)
-    times = np.linspace(gyr / samples, gyr, samples) * u.Gyr
+    unit = display.axis_unit(t_max)
+    end = t_max.to_value(unit)
+    times = np.linspace(end / samples, end, samples) * unit
     for label, model in models.items():
-        ax.plot(times.to_value(u.Gyr), model.scale_factor(times).to_value(u.one), label=label)
+        ax.plot(times.to_value(unit), model.scale_factor(times).to_value(u.one), label=label)
     ax.axhline(1.0, color="gray", lw=0.8, ls=":")
-    ax.set_xlabel("time since the big bang [Gyr]")
+    ax.set_xlabel(f"time since the big bang [{display.unit_text(unit)}]")
     ax.set_ylabel("scale factor a [dimensionless]")
     ax.grid(alpha=0.3)
     ax.legend(loc="best", fontsize="small")

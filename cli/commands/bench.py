@@ -12,11 +12,10 @@ RepeatsOption = Annotated[int, typer.Option(help="timing repeats (best is kept)"
 
 def _emit(data, table, fmt, output):
     """Print the table (or the JSON), and write the JSON atomically to `output` if given."""
-    import json
-
     from orbits.io import write_atomic
+    from orbits_cli import render
 
-    text = json.dumps(data, indent=2)
+    text = render.dumps(data)
     print(text if fmt == Format.json else table)
     if output:
         write_atomic(output, text + "\n")

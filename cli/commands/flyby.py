@@ -37,7 +37,8 @@ def command(
         from orbits.plot import flyby_plane
 
         save_plot(lambda: flyby_plane(result), plot)
-    render.emit(title, result.quantities(inputs.names(only)), fmt.value)
+    groups = [("star1_", "the primary, in the centre-of-mass frame"), ("star2_", "the moving body, in that frame")]
+    render.emit(title, result.quantities(inputs.names(only)), fmt.value, groups=groups)
 
 
 def build(

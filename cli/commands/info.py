@@ -1,6 +1,5 @@
 """`orbits info`: versions, cache locations and where the constants come from."""
 
-import json
 import os
 import platform
 from importlib import metadata
@@ -40,18 +39,20 @@ def collect() -> dict[str, Any]:
 
 def show(fmt: str) -> None:
     """Print the facts as a table or JSON."""
-    from rich.console import Console
+    from rich import box
     from rich.table import Table
+
+    from orbits_cli import render
 
     facts = collect()
     if fmt == "json":
-        print(json.dumps(facts, indent=2))
+        print(render.dumps(facts))
         return
-    grid = Table(title="orbits info", show_header=False)
-    grid.add_column("item", style="cyan")
-    grid.add_column("value")
+    grid = Table(show_header=False, box=box.SIMPLE, pad_edge=False)
+    grid.add_column("item", overflow="fold")
+    grid.add_column("value", overflow="fold")
     grid.add_row("python", f"{facts['python']} on {facts['platform']}")
     for section in ("versions", "caches", "constants"):
         for key, value in facts[section].items():
             grid.add_row(key, value)
-    Console().print(grid)
+    render.print_tables([grid], "orbits info")

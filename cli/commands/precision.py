@@ -19,10 +19,10 @@ def command(
 ) -> None:
     """Sweep each integrator's accuracy knob on the same problems; error against run time, with a summary."""
     import dataclasses
-    import json
 
     from orbits.io import write_atomic
     from orbits.tools import precision
+    from orbits_cli import render
     from orbits_cli.render import precision_tables
 
     chosen = [p for p in precision.problems(long=not quick) if problem is None or problem in p.name]
@@ -31,7 +31,7 @@ def command(
     rows = precision.run(chosen, precision.methods(quick=quick))
     data = {"target": target, "rows": [_without_nan(dataclasses.asdict(r)) for r in rows],
             "summary": precision.summary(rows, target)}
-    text = json.dumps(data, indent=2, allow_nan=False)
+    text = render.dumps(data)
     if output:
         write_atomic(output, text + "\n")
     if plot:

@@ -24,11 +24,11 @@ def command(
     ] = None,
 ) -> None:
     """Cross-check the analytic answers of the built-in scenes (or the given ones) against N-body codes."""
-    import json
     import sys
 
     from orbits.io import write_atomic
     from orbits.validate import available, builtin_names, load, validate
+    from orbits_cli import render
 
     names = scenes or builtin_names()
     loaded = [load(name) for name in names]  # every scene is checked before anything runs
@@ -41,13 +41,13 @@ def command(
     report = _run(validate, loaded, chosen, show_progress=fmt == Format.table and sys.stdout.isatty())
     data = report.to_dict()
     if output:
-        write_atomic(output, json.dumps(data, indent=2) + "\n")
+        write_atomic(output, render.dumps(data) + "\n")
     if plot:
         from orbits.plot import validation_residuals
 
         save_plot(lambda: validation_residuals(report), plot)
     if fmt == Format.json:
-        print(json.dumps(data, indent=2))
+        print(render.dumps(data))
     else:
         from orbits_cli.render import validation_report
 
