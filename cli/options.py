@@ -37,9 +37,29 @@ PeriapsisArgumentOption = Annotated[
 ]
 TrueAnomalyOption = Annotated[str, typer.Option("--nu", help="true anomaly")]
 
-PlotOption = Annotated[
-    str | None, typer.Option("--plot", help="also draw a picture to this .png, .svg or .pdf file (atomically)")
-]
+def _writable(option: str):
+    """A parse-time check that a file option can be written, so that a bad target fails before any work."""
+
+    def check(path: str | None) -> str | None:
+        if path is not None:
+            from orbits import OrbitDomainError
+            from orbits.io import check_target
+
+            if option == "--plot" and str(path).rsplit(".", 1)[-1].lower() not in ("png", "svg", "pdf"):
+                raise typer.BadParameter(f"plot file {path!r} must end in .png, .svg or .pdf")
+            try:
+                check_target(path, option)
+            except OrbitDomainError as err:
+                raise typer.BadParameter(str(err).removeprefix(f"{option}: ")) from None
+        return path
+
+    return check
+
+
+PlotOption = Annotated[str | None, typer.Option(
+    "--plot", callback=_writable("--plot"), help="also draw a picture to this .png, .svg or .pdf file (atomically)")]
+OutputOption = Annotated[str | None, typer.Option(
+    "--output", callback=_writable("--output"), help="also write the JSON to this file (atomically)")]
 
 
 def save_plot(draw: "Callable[[], tuple[Figure, Axes]]", path: str) -> None:
@@ -99,12 +119,20 @@ def reports_errors(command: Callable[_P, _R]) -> Callable[_P, _R]:
 
     @functools.wraps(command)
     def wrapper(*args, **kwargs):
+        import warnings
+
         import astropy.units as u
 
         from orbits import OrbitsError
 
         try:
-            return command(*args, **kwargs)
+            with warnings.catch_warnings():
+                warnings.simplefilter("error", RuntimeWarning)  # a float64 overflow is an error, never a warning
+                return command(*args, **kwargs)
+        except RuntimeWarning as err:
+            print(f"orbits: error: the computation left float64 ({err}); the inputs are outside what orbits can "
+                  f"compute", file=sys.stderr)
+            raise typer.Exit(2) from None
         except (OrbitsError, ValueError, TypeError, KeyError, u.UnitsError, typer.BadParameter) as err:
             message = err.format_message() if isinstance(err, typer.BadParameter) else (
                 str(err.args[0]) if isinstance(err, KeyError) and err.args else str(err))

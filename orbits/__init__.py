@@ -35,6 +35,7 @@ _HOMES = {
     "OrbitDomainError": "orbits.core.errors",
     "OrbitsError": "orbits.core.errors",
     "SceneError": "orbits.core.errors",
+    "UnknownNameError": "orbits.core.errors",
 }
 
 __all__ = [*_HOMES, "__version__"]

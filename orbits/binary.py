@@ -29,7 +29,6 @@ from orbits import display, inputs, units
 from orbits.constants import Body, G
 from orbits.core import binary as binary_core
 from orbits.core import twobody
-from orbits.core.checks import require_positive
 from orbits.core.errors import OrbitDomainError
 from orbits.orbit import Orbit
 from orbits.tables import quantity_table
@@ -321,8 +320,7 @@ class Binary(display.Displayed):
         relative to leading order in d / r, d the separation (tests/api/test_binary_api.py checks this against
         the two-star potential).
         """
-        r = units.to_si(distance, units.M, "distance r")
-        require_positive(r, "distance r", "m")
+        r = inputs.positive(distance, units.M, "distance r")
         return twobody.escape_speed(r, self.relative.mu) << units.M_PER_S
 
     # ---- state vectors --------------------------------------------------------------------------
@@ -394,8 +392,7 @@ def _semi_major_axis_from_period(period, e, mu, given):
     """a (Quantity, m) of the relative orbit from its period; TypeError if a size was given as well."""
     if any(x is not None for x in given):
         raise TypeError("give exactly one size of a, p, q, period; got period and another")
-    t = units.to_si(period, units.S, "period T")
-    require_positive(t, "period T", "s")
+    t = inputs.positive(period, units.S, "period T")
     binary_core.require_bound(units.to_number(e, "eccentricity e"), "a period")
     return binary_core.semi_major_axis_from_period(t, mu) << units.M
 

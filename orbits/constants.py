@@ -11,6 +11,8 @@ from dataclasses import dataclass
 
 import astropy.constants as const
 
+from orbits.core.errors import UnknownNameError
+
 #: Newtonian constant of gravitation (m3 / (kg s2)), CODATA 2018 via astropy.
 G = const.G.si.value
 
@@ -135,4 +137,4 @@ def body(name: str) -> Body:
     for key, value in BODIES.items():
         if key.lower() == str(name).lower():
             return value
-    raise KeyError(f"unknown body {name!r}; known bodies: {', '.join(BODIES)}")
+    raise UnknownNameError(f"unknown body {name!r}; known bodies: {', '.join(BODIES)}")

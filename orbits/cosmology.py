@@ -303,8 +303,7 @@ class ExpandingSphere(display.Displayed):
         """The shell at `radius` (length) when the Hubble parameter is H (1/time): v = H r = sqrt(2 G M / r)
         gives G M = H**2 r**3 / 2."""
         h = _hubble(hubble, "Hubble parameter H")
-        r = units.to_si(radius, units.M, "shell radius r")
-        require_positive(r, "shell radius r", "m")
+        r = inputs.positive(radius, units.M, "shell radius r")
         return cls(0.5 * h * h * r**3)
 
     def _time(self, t):

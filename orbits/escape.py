@@ -31,7 +31,6 @@ from orbits.binary import Binary
 from orbits.constants import BODIES, EARTH_MEAN_RADIUS, STANDARD_GRAVITY, Body, body
 from orbits.core import escape as escape_core
 from orbits.core import twobody
-from orbits.core.checks import require_positive
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
 
@@ -44,14 +43,12 @@ def _named(primary):
 
 
 def _length(value, name):
-    result = units.to_si(value, units.M, name)
-    require_positive(result, name, "m")
+    result = inputs.positive(value, units.M, name)
     return result
 
 
 def _speed(value, name):
-    result = units.to_si(value, units.M_PER_S, name)
-    require_positive(result, name, "m / s")
+    result = inputs.positive(value, units.M_PER_S, name)
     return result
 
 
@@ -94,8 +91,8 @@ class CosmicVelocities(display.Displayed):
     ) -> "CosmicVelocities":
         """The notes' model from g (acceleration) and R (length); defaults: g0 = 9.80665 m/s2, R = 6371 km and
         Earth's circular heliocentric speed sqrt(G M_sun / a_earth) = 29.785 km/s (Standish mean a)."""
-        g = np.asarray(STANDARD_GRAVITY) if g is None else units.to_si(g, units.M_PER_S / units.S, "surface gravity g")
-        require_positive(g, "surface gravity g", "m / s2")
+        g = (np.asarray(STANDARD_GRAVITY) if g is None
+             else inputs.positive(g, units.M_PER_S / units.S, "surface gravity g"))
         radius = np.asarray(EARTH_MEAN_RADIUS) if radius is None else _length(radius, "radius R")
         speed = _orbital_speed(BODIES["Earth"]) if orbital_speed is None else _speed(orbital_speed, "orbital speed")
         return cls(g, radius, speed)
@@ -201,8 +198,8 @@ class SynchronousOrbit(display.Displayed):
         mu = np.asarray(named.gm) if named is not None else inputs.gravitational_parameter(primary, "primary mass M")
         if period is None and named is None:
             raise TypeError("a mass or GM has no rotation: give period=..., e.g. period=23.93 * u.h")
-        t = np.asarray(named.rotation_period) if period is None else units.to_si(period, units.S, "rotation period T")
-        require_positive(t, "rotation period T", "s")
+        t = (np.asarray(named.rotation_period) if period is None
+             else inputs.positive(period, units.S, "rotation period T"))
         size = None if named is None else np.asarray(named.radius)
         size = size if radius is None else _length(radius, "body radius R")
         return cls(mu, t, size)

@@ -29,7 +29,6 @@ from orbits import display, inputs, units
 from orbits.constants import Body, G
 from orbits.core import binary as binary_core
 from orbits.core import flyby as flyby_core
-from orbits.core.checks import require_positive
 from orbits.core.errors import OrbitDomainError
 from orbits.orbit import PRIMARY, Orbit
 from orbits.tables import quantity_table
@@ -40,17 +39,13 @@ def _impact_parameter(b, periapsis, v_inf, mu):
     if (b is None) == (periapsis is None):
         raise TypeError("give exactly one of the impact parameter b and the closest approach periapsis")
     if b is not None:
-        value = units.to_si(b, units.M, "impact parameter b")
-        require_positive(value, "impact parameter b", "m")
-        return value
-    value = units.to_si(periapsis, units.M, "closest approach periapsis")
-    require_positive(value, "closest approach periapsis", "m")
+        return inputs.positive(b, units.M, "impact parameter b")
+    value = inputs.positive(periapsis, units.M, "closest approach periapsis")
     return flyby_core.impact_parameter(value, v_inf, mu)
 
 
 def _speed_at_infinity(v_inf):
-    value = units.to_si(v_inf, units.M_PER_S, "speed at infinity v_inf")
-    require_positive(value, "speed at infinity v_inf", "m / s")
+    value = inputs.positive(v_inf, units.M_PER_S, "speed at infinity v_inf")
     return value
 
 
@@ -189,14 +184,12 @@ class Flyby(display.Displayed):
 
     def speed_at(self, r: u.Quantity) -> u.Quantity:
         """v = sqrt(v_inf**2 + 2 mu / r) (m/s) at distance r (length) (XXI.vi; (m + M) sigma in XXII.vi)."""
-        r_si = units.to_si(r, units.M, "distance r")
-        require_positive(r_si, "distance r", "m")
+        r_si = inputs.positive(r, units.M, "distance r")
         return flyby_core.speed_at_distance(r_si, self.v_inf, self.mu) << units.M_PER_S
 
     def potential_energy_at(self, r: u.Quantity) -> u.Quantity:
         """U = -mu m / r (J) at distance r (length): -G M m / r, or -G m1 m2 / r for two masses."""
-        r_si = units.to_si(r, units.M, "distance r")
-        require_positive(r_si, "distance r", "m")
+        r_si = inputs.positive(r, units.M, "distance r")
         return -self.mu * self._require_mass("potential energy U") / r_si << units.J
 
     def kinetic_energy_at(self, r: u.Quantity) -> u.Quantity:

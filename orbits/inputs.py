@@ -17,7 +17,7 @@ import numpy as np
 
 from orbits import units
 from orbits.constants import BODIES, Body, G, body
-from orbits.core.checks import check_finite, require_positive
+from orbits.core.checks import check_finite, require_magnitude, require_positive
 from orbits.core.errors import OrbitDomainError
 
 #: the SI unit of each kind of quantity a string may hold, and a unit to suggest when the unit is missing
@@ -85,6 +85,8 @@ def parse_vector(text: str, kind: str, name: str) -> u.Quantity:
     if values.shape != (3,):
         raise OrbitDomainError(f"{name}: {text!r} needs three comma-separated components, e.g. '7000,0,0 km'")
     check_finite(values, name, unit_text)
+    if not unit_text.strip():
+        raise OrbitDomainError(f"{name}: {text!r} has no unit; write e.g. '{text.strip()} {_kind(kind)[1]}'")
     return parse_quantity(f"1 {unit_text}", kind, name) * values
 
 
@@ -119,19 +121,40 @@ def gravitational_parameter(value: Body | str | u.Quantity, name: str = "primary
     if isinstance(value, Body):
         return np.asarray(value.gm, dtype=float)
     if isinstance(value, u.Quantity) and value.unit.is_equivalent(units.M3_PER_S2):
-        gm = units.to_si(value, units.M3_PER_S2, name)
-        require_positive(gm, name, "m3 / s2")
-        return gm
-    mass = units.to_si(value, units.KG, name)
-    require_positive(mass, name, "kg")
-    return G * mass
+        return positive(value, units.M3_PER_S2, name)
+    return G * positive(value, units.KG, name)
 
 
 def positive(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
-    """float64 array of a Quantity in `unit` (SI), checked finite and > 0."""
+    """float64 array of a Quantity in `unit` (SI), checked finite, > 0 and within MAGNITUDE_RANGE (so that what is
+    computed from it neither overflows nor underflows)."""
     si = units.to_si(value, unit, name)
     require_positive(si, name, unit.to_string())
+    require_magnitude(si, name, unit.to_string())
     return si
+
+
+def angle(value: u.Quantity, name: str) -> np.ndarray:
+    """float64 array of an angle Quantity in rad, checked finite."""
+    si = units.to_si(value, units.RAD, name)
+    check_finite(si, name, "rad")
+    return si
+
+
+def vector(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
+    """float64 array (..., 3) of a vector Quantity in `unit` (SI): finite, each nonzero length within
+    MAGNITUDE_RANGE."""
+    si = units.to_si(value, unit, name)
+    check_finite(si, name, unit.to_string())
+    if si.shape[-1:] != (3,):
+        raise OrbitDomainError(f"{name} must have a last axis of length 3; got shape {si.shape}")
+    length = np.linalg.norm(si, axis=-1)
+    require_magnitude(length[length > 0], f"|{name}|", unit.to_string())
+    return si
+
+
+#: the largest eccentricity accepted: Kepler's hyperbolic equation is verified up to it (tests/core/test_kepler.py)
+MAX_ECCENTRICITY = 1e12
 
 
 def semi_latus_rectum(
@@ -152,6 +175,7 @@ def semi_latus_rectum(
     size = value * (1.0 - e) * (1.0 + e)
     if not ((size > 0.0) & (size < np.inf)).all():  # a valid a gives 0 < size < inf: check in detail otherwise
         _check_semi_major_axis(value, e)
+    require_magnitude(np.abs(value), "semi-major axis |a|", "m")
     return size
 
 
@@ -179,6 +203,10 @@ def eccentricity(e: float | np.ndarray | u.Quantity) -> np.ndarray:
     if not np.isfinite(e).all() or (e < 0).any():
         bad = e[~(np.isfinite(e) & (e >= 0))].flat[0]
         raise OrbitDomainError(f"eccentricity e = {float(bad)!r} is outside [0, inf)")
+    if (e > MAX_ECCENTRICITY).any():
+        bad = e[e > MAX_ECCENTRICITY].flat[0]
+        raise OrbitDomainError(f"eccentricity e = {float(bad)!r} is outside [0, {MAX_ECCENTRICITY:g}], the range "
+                               f"where Kepler's equation is verified")
     return e
 
 

@@ -38,11 +38,11 @@ def anomalies(
     if (mean_anomaly is None) == (true_anomaly is None):
         raise TypeError("give exactly one of mean_anomaly and true_anomaly")
     if true_anomaly is not None:
-        nu, e = np.broadcast_arrays(units.to_si(true_anomaly, units.RAD, "true anomaly nu"), e)
+        nu, e = np.broadcast_arrays(inputs.angle(true_anomaly, "true anomaly nu"), e)
         result = _from_true(nu, e, conic)
     else:
         m = (units.to_number(mean_anomaly, "Barker's mean anomaly W") if conic == "parabola"
-             else units.to_si(mean_anomaly, units.RAD, "mean anomaly M"))
+             else inputs.angle(mean_anomaly, "mean anomaly M"))
         m, e = np.broadcast_arrays(m, e)
         result = _from_mean(m, e, conic)
     return {"eccentricity": e << u.one, **result}

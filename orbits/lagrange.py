@@ -24,8 +24,7 @@ import numpy as np
 from orbits import display, inputs, units
 from orbits.constants import Body, body
 from orbits.core import lagrange
-from orbits.core.checks import require_positive
-from orbits.core.errors import OrbitDomainError
+from orbits.core.errors import OrbitDomainError, UnknownNameError
 
 POINTS = lagrange.POINTS
 PER_SECOND = 1 / u.s
@@ -34,8 +33,7 @@ PER_SECOND = 1 / u.s
 def _separation(primary, secondary, separation):
     """r (m): the given length, or the catalogued mean distance a of a named secondary about that primary."""
     if separation is not None:
-        value = units.to_si(separation, units.M, "separation r")
-        require_positive(value, "separation r", "m")
+        value = inputs.positive(separation, units.M, "separation r")
         return value
     target = body(secondary) if isinstance(secondary, str) else secondary
     centre = body(primary).name if isinstance(primary, str) else getattr(primary, "name", None)
@@ -80,7 +78,7 @@ class RestrictedThreeBody(display.Displayed):
         lagrange.check_mass_ratio(gm_2 / (gm_1 + gm_2))
         distance = _separation(primary, secondary, separation)
         angles = [
-            units.to_si(x, units.RAD, name)
+            inputs.angle(x, name)
             for x, name in ((inc, "inclination i"), (raan, "ascending node Omega"), (phase, "phase"))
         ]
         fields = np.broadcast_arrays(gm_1, gm_2, distance, *angles)
@@ -219,7 +217,7 @@ class RestrictedThreeBody(display.Displayed):
         POINT_NAMES, which expand over `points`."""
         unknown = [p for p in points if p not in POINTS]
         if unknown:
-            raise KeyError(f"unknown points {unknown}; choose from {', '.join(POINTS)}")
+            raise UnknownNameError(f"unknown points {unknown}; choose from {', '.join(POINTS)}")
         names = []
         for name in BINARY_NAMES + [f"{p}_{n}" for p in points for n in POINT_NAMES] if only is None else only:
             if name in POINT_NAMES:
@@ -227,7 +225,8 @@ class RestrictedThreeBody(display.Displayed):
             elif name in QUANTITY_NAMES:
                 names.append(name)
             else:
-                raise KeyError(f"unknown quantity {name!r}; choose from {', '.join(BINARY_NAMES + list(POINT_NAMES))}")
+                allowed = ", ".join(BINARY_NAMES + list(POINT_NAMES))
+                raise UnknownNameError(f"unknown quantity {name!r}; choose from {allowed}")
         result = {}
         for name in names:
             value = getattr(self, name) if name in BINARY_NAMES else self._point_quantity(*name.split("_", 1))

@@ -21,7 +21,6 @@ import numpy as np
 from orbits import display, inputs, units
 from orbits.constants import Body, body
 from orbits.core import anomalies, elements, propagate, twobody
-from orbits.core.checks import require_positive
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
 
@@ -85,7 +84,7 @@ class Orbit(display.Displayed):
         _check_shapes(e=e, a=a, p=p, q=q, inc=inc, raan=raan, argp=argp, nu=nu)
         size = inputs.semi_latus_rectum(e + 0.0, a=a, p=p, q=q)
         angles = [
-            units.to_si(x, units.RAD, name)
+            inputs.angle(x, name)
             for x, name in (
                 (inc, "inclination i"),
                 (raan, "longitude of the ascending node Omega"),
@@ -108,8 +107,8 @@ class Orbit(display.Displayed):
     ) -> "Orbit":
         """Orbit through the state r (length, shape (..., 3)) and v (speed, shape (..., 3))."""
         mu = inputs.gravitational_parameter(primary, PRIMARY)
-        r_si = units.to_si(r, units.M, "position r")
-        v_si = units.to_si(v, units.M_PER_S, "velocity v")
+        r_si = inputs.vector(r, units.M, "position r")
+        v_si = inputs.vector(v, units.M_PER_S, "velocity v")
         fields = elements.state_to_elements(r_si, v_si, mu)
         shape = fields[0].shape
         return cls(np.broadcast_to(mu, shape).astype(float), *fields, mass=_mass(mass, shape))
@@ -126,6 +125,7 @@ class Orbit(display.Displayed):
         mass: u.Quantity | None = None,
     ) -> "Orbit":
         """Circular orbit of the given radius (e = 0, so nu is the argument of latitude)."""
+        inputs.positive(radius, units.M, "orbit radius r")
         return cls.from_elements(primary, p=radius, e=0.0, inc=inc, raan=raan, nu=nu, mass=mass)
 
     @classmethod
@@ -245,8 +245,7 @@ class Orbit(display.Displayed):
 
     def speed_at(self, r: u.Quantity) -> u.Quantity:
         """Vis-viva speed sqrt(mu (2/r - 1/a)) (m/s) at distance r (length) from the star."""
-        r_si = units.to_si(r, units.M, "distance r")
-        require_positive(r_si, "distance r", "m")
+        r_si = inputs.positive(r, units.M, "distance r")
         with np.errstate(invalid="ignore"):
             v = twobody.speed_at_radius(r_si, self.p, self.e, self.mu)
         if not np.isfinite(v).all():
@@ -420,8 +419,7 @@ def _owned(x, shape):
 def _mass(mass, shape):
     if mass is None:
         return None
-    value = units.to_si(mass, units.KG, "orbiting body mass m")
-    require_positive(value, "orbiting body mass m", "kg")
+    value = inputs.positive(mass, units.KG, "orbiting body mass m")
     return np.broadcast_to(value, shape).astype(float)
 
 

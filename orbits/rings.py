@@ -23,7 +23,6 @@ import numpy as np
 from orbits import display, inputs, units
 from orbits.constants import Body, G
 from orbits.core import rings, twobody
-from orbits.core.checks import require_positive
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
 
@@ -58,8 +57,7 @@ class Ring(display.Displayed):
         """
         n = rings.check_count(n)
         gm = inputs.gravitational_parameter(mass, "ring body mass m")
-        radius_si = units.to_si(radius, units.M, "ring radius r")
-        require_positive(radius_si, "ring radius r", "m")
+        radius_si = inputs.positive(radius, units.M, "ring radius r")
         gm_central = 0.0 if central_mass is None else inputs.gravitational_parameter(central_mass, "central mass M")
         fields = np.broadcast_arrays(gm, radius_si, gm_central)
         return cls(n, *(np.array(x, dtype=float) for x in fields))
@@ -124,7 +122,7 @@ class Ring(display.Displayed):
         phase + 2 pi k / n in the xy plane, counter-clockwise; the barycentre and central mass at rest at 0."""
         if np.ndim(self.r) != 0:
             raise OrbitDomainError("state_vectors needs a single ring; this object holds an array of them")
-        angle = float(units.to_si(phase, units.RAD, "phase"))
+        angle = float(inputs.angle(phase, "phase"))
         r, v = rings.state_vectors(self.n, float(self.r), float(self.speed.value), angle)
         return r << units.M, v << units.M_PER_S
 

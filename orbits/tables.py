@@ -3,14 +3,14 @@
 from collections.abc import Callable, Collection, Iterable
 from typing import Any
 
-from orbits.core.errors import OrbitDomainError
+from orbits.core.errors import OrbitDomainError, UnknownNameError
 
 
 def check_names(names: Iterable[str], allowed: Collection[str]) -> None:
     """Raise KeyError listing the allowed names if any of `names` is not one of them."""
     unknown = [n for n in names if n not in allowed]
     if unknown:
-        raise KeyError(f"unknown quantities {unknown}; choose from {', '.join(allowed)}")
+        raise UnknownNameError(f"unknown quantities {unknown}; choose from {', '.join(allowed)}")
 
 
 def quantity_table(

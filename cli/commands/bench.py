@@ -4,9 +4,8 @@ from typing import Annotated
 
 import typer
 
-from orbits_cli.options import Format, FormatOption
+from orbits_cli.options import Format, FormatOption, OutputOption
 
-OutputOption = Annotated[str | None, typer.Option(help="also write the rows as JSON to this file (atomically)")]
 RepeatsOption = Annotated[int, typer.Option(help="timing repeats (best is kept)")]
 
 

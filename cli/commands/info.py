@@ -1,14 +1,6 @@
 """`orbits info`: versions, cache locations and where the constants come from."""
 
-import os
-import platform
-from importlib import metadata
-from pathlib import Path
-from typing import Any
-
 from orbits_cli.options import Format, FormatOption
-
-_PACKAGES = ["orbits", "numpy", "astropy", "rebound", "heyoka", "typer", "rich", "mpmath"]
 
 
 def command(fmt: FormatOption = Format.table) -> None:
@@ -16,35 +8,15 @@ def command(fmt: FormatOption = Format.table) -> None:
     show(fmt.value)
 
 
-def _version(name):
-    try:
-        return metadata.version(name)
-    except metadata.PackageNotFoundError:
-        return "not installed"
-
-
-def collect() -> dict[str, Any]:
-    """Facts about this installation, without importing the heavy backends."""
-    from orbits.constants import BODIES
-
-    heyoka_cache = os.environ.get("HEYOKA_CACHE_DIR") or str(Path.home() / ".cache" / "heyoka")
-    return {
-        "python": platform.python_version(),
-        "platform": platform.platform(),
-        "versions": {name: _version(name) for name in _PACKAGES},
-        "caches": {"heyoka compiled integrators (HEYOKA_CACHE_DIR)": heyoka_cache},
-        "constants": {"G": "CODATA 2018 (astropy.constants)", **{b.name: b.source for b in BODIES.values()}},
-    }
-
-
 def show(fmt: str) -> None:
     """Print the facts as a table or JSON."""
     from rich import box
     from rich.table import Table
 
+    from orbits.system import info
     from orbits_cli import render
 
-    facts = collect()
+    facts = info()
     if fmt == "json":
         print(render.dumps(facts))
         return

@@ -4,7 +4,7 @@ from typing import Annotated
 
 import typer
 
-from orbits_cli.options import Format, FormatOption, PlotOption, save_plot
+from orbits_cli.options import Format, FormatOption, OutputOption, PlotOption, save_plot
 
 
 def command(
@@ -13,7 +13,7 @@ def command(
         str | None, typer.Option(help="only the problems whose name contains this text, e.g. 'L4' or 'e=0.9'")
     ] = None,
     target: Annotated[float, typer.Option(help="error the summary asks each method to reach")] = 1e-10,
-    output: Annotated[str | None, typer.Option(help="also write every run as JSON to this file (atomically)")] = None,
+    output: OutputOption = None,
     plot: PlotOption = None,
     fmt: FormatOption = Format.table,
 ) -> None:

@@ -5,7 +5,7 @@ from typing import Annotated
 
 import typer
 
-from orbits_cli.options import Format, FormatOption, PlotOption, save_plot
+from orbits_cli.options import Format, FormatOption, OutputOption, PlotOption, save_plot
 
 
 def command(
@@ -13,7 +13,7 @@ def command(
         list[str] | None, typer.Argument(metavar="[SCENE]...", help="built-in scene names or .toml/.json files")
     ] = None,
     backend: Annotated[str, typer.Option(help="comma-separated backends")] = "rebound,heyoka",
-    output: Annotated[str | None, typer.Option(help="also write the JSON report to this file (atomically)")] = None,
+    output: OutputOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
     sweep: Annotated[
@@ -33,6 +33,8 @@ def command(
     names = scenes or builtin_names()
     loaded = [load(name) for name in names]  # every scene is checked before anything runs
     chosen = [b.strip() for b in backend.split(",") if b.strip()]
+    if not chosen:
+        raise typer.BadParameter(f"--backend {backend!r}: give at least one of rebound, heyoka")
     for name in chosen:
         if not available(name):
             raise typer.BadParameter(f"--backend: {name} is not installed (pip install {name})")

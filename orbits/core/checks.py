@@ -45,3 +45,21 @@ def require_positive(x: ArrayLike, name: str, unit: str) -> None:
         raise OrbitDomainError(
             f"{name} = {value!r} {unit} is outside the allowed range (0, inf) {unit}: it must be positive"
         )
+
+
+#: the magnitudes, in SI units, that every positive dimensional input must lie within: products and quotients of
+#: a few of them (energies, periods, speeds) then stay inside float64 (about 1e-308 to 1e308)
+MAGNITUDE_RANGE = (1e-60, 1e60)
+
+
+def require_magnitude(x: ArrayLike, name: str, unit: str) -> None:
+    """Raise OrbitDomainError unless every positive x lies in MAGNITUDE_RANGE; the message says why it matters."""
+    x = np.asarray(x, dtype=float)
+    low, high = MAGNITUDE_RANGE
+    bad = (x < low) | (x > high)
+    if np.any(bad):
+        value = float(x[bad].flat[0])
+        raise OrbitDomainError(
+            f"{name} = {value!r} {unit} is outside the range orbits computes in, [{low:g}, {high:g}] {unit}: "
+            f"quantities derived from it would overflow or underflow float64"
+        )

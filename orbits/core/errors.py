@@ -24,3 +24,12 @@ class ConvergenceError(OrbitsError, RuntimeError):
 
 class SceneError(OrbitsError, ValueError):
     """A scene file or dictionary is invalid; the message names the source, the field and what is allowed."""
+
+
+class UnknownNameError(OrbitDomainError, KeyError):
+    """A name (a body, a quantity, a Lagrange point) that is not one of those known; the message lists them.
+
+    It is a KeyError too, so that code looking names up the dictionary way catches it."""
+
+    def __str__(self) -> str:
+        return str(self.args[0]) if self.args else ""

@@ -186,3 +186,13 @@ def test_the_readme_shows_what_the_calculator_prints():
         shown_lines.append(line[4:].rstrip())
     printed = [line.rstrip() for line in run(command).splitlines()]
     assert [x for x in printed if x] == [x for x in shown_lines if x]
+
+
+def test_the_validation_report_fits_80_columns_and_leads_with_the_verdicts():
+    report = run("validate circular lagrange_L4_L5")
+    lines = report.splitlines()
+    assert max(len(line) for line in lines) <= 80
+    assert lines[0] == "circular: passed" and "lagrange_L4_L5: passed" in lines
+    checks = [line for line in lines if line.lstrip().startswith(("pass ", "FAIL "))]
+    assert len(checks) == 9 and all(line.lstrip().startswith("pass") for line in checks)
+    assert "period[satellite] = 97.14195 min" in report  # the analytic value in its display unit
