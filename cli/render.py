@@ -269,7 +269,7 @@ def validation_report(data: dict[str, Any]) -> None:
         for check in scene["checks"]:
             mark = "[green]pass[/green]" if check["passed"] else "[red]FAIL[/red]"
             grid.add_row(mark, escape(check["quantity"] + _analytic(check)),
-                         *(_error(check["errors"][b]) for b in backends),
+                         *(_error(check["errors"].get(b)) for b in backends),
                          f"{_error(check['tolerance'])} {_KINDS.get(check['kind'], check['kind'])}")
         out.print(grid)
         setup = scene["setup_time_s"]

@@ -3,6 +3,7 @@
 import importlib.util
 import json
 import math
+import re
 import sys
 
 import mpmath
@@ -134,10 +135,17 @@ def test_worst_errors_measures_ulps_and_shifts_revolutions():
     assert math.isnan(bench._worst_errors(np.array([math.nan]), refs, periodic=False)[0])
 
 
+def table_rows(table):
+    """The lines of the table proper (header and section rules excluded), before the legend and notes."""
+    lines = table.splitlines()
+    return [line for line in lines[1 : lines.index("")] if not line.startswith("-- ")]
+
+
 def test_format_and_json(rows):
     table = bench.format_rows(rows)
-    assert table.splitlines()[0].split()[:3] == ["method", "dataset", "M/s"]
-    assert all(m in table for m in METHODS) and len(table.splitlines()) == len(rows) + 2
+    assert table.splitlines()[0].split()[:3] == ["method", "M/s", "ratio"]
+    assert all(f"-- {d} --" in table for d in DATASETS)
+    assert all(m in table for m in METHODS) and len(table_rows(table)) == len(rows)
     records = bench.rows_to_json(rows)
     json.dumps(records, allow_nan=False)
     assert records[0].keys() >= {
@@ -174,9 +182,10 @@ def test_orbits_rows_are_exact_on_every_set(rows):
 
 
 def test_kepler_table_gives_ratios_to_orbits(rows):
-    lines = bench.format_rows(rows).splitlines()
-    assert "vs orbits" in lines[0]
-    assert all(line.split()[2:4][1] == "1.000" for line in lines[2:] if line.startswith("orbits  "))
+    table = bench.format_rows(rows)
+    assert "ratio" in table.splitlines()[0] and "ratio: throughput over that of orbits" in " ".join(table.split())
+    orbits = [line.split() for line in table_rows(table) if line.startswith("orbits [")]
+    assert len(orbits) == len(DATASETS) and all(cells[3] == "1.00" for cells in orbits)
 
 
 # --- propagation, API, CLI, validation -------------------------------------------------------------
@@ -213,7 +222,7 @@ def test_elliptic_only_peers_give_nan_on_open_orbits(propagate_rows):
 
 def test_propagate_table_and_json(propagate_rows):
     table = bench.format_propagate(propagate_rows)
-    assert len(table.splitlines()) == len(propagate_rows) + 2 and "max |dr|/r" in table
+    assert len(table_rows(table)) == len(propagate_rows) and "max |dr|/r" in table
     json.dumps(bench.rows_to_json(propagate_rows), allow_nan=False)
 
 
@@ -226,7 +235,9 @@ def test_api_rows_compare_the_same_calls():
         ("Orbit.from_elements", 2000),
     ]
     assert all(r.core_seconds > 0 and r.api_seconds > 0 for r in rows)
-    assert bench.format_api(rows).splitlines()[0].split()[:2] == ["case", "n"]
+    table = bench.format_api(rows)
+    assert table.splitlines()[0].split()[:2] == ["n", "core"]
+    assert all(f"-- {r.case} --" in table for r in rows)
 
 
 def test_cli_rows_time_fresh_processes():
@@ -241,7 +252,8 @@ def test_validate_rows_split_the_time_by_stage():
     assert scenes and all({"analytic", "rebound integration", "heyoka setup"} <= r.stages.keys() for r in scenes)
     assert all(abs(sum(r.stages.values()) - r.total_seconds) < 1e-9 for r in scenes)
     assert rows[-1].scene == "all" and rows[-1].total_seconds >= sum(r.total_seconds for r in scenes)
-    assert len(bench.format_validate(rows).splitlines()) == len(rows) + 2
+    lines = bench.format_validate(rows).splitlines()
+    assert all(any(line.startswith(f"{r.scene}  ") for line in lines) for r in rows)
 
 
 def test_all_runs_every_benchmark_and_serialises():
@@ -257,3 +269,111 @@ def test_all_runs_every_benchmark_and_serialises():
     text = bench.format_report(report)
     assert all(f"== {name} ==" in text for name in bench.BENCHMARKS)
     json.dumps(bench.report_to_json(report), allow_nan=False)
+
+
+# --- 80-column tables -------------------------------------------------------------------------------
+
+LONG_NAME = "a peer solver with an unusually long and descriptive method name (all cores, float128)"
+LONG_NOTE = (
+    "a deliberately long note that names the compiler, its flags, the thread count, the accuracy knob and why "
+    "the package could not be imported on this machine, far beyond any column"
+)
+LONG_COMMAND = (
+    "orbits orbit --primary Earth --a 42164 km --e 0.0001 --i 0.1 deg --raan 75 deg --argp 10 deg "
+    "--nu 30 deg --only period,speed,apoapsis,periapsis,specific_energy --format table"
+)
+
+
+def _kepler_rows():
+    """Rows of every status on three sets, with extreme figures, long names and long notes."""
+    # method, note, setup s, throughput /s, rel err, ulp, NaN
+    methods = [
+        ("orbits", "compiled, 1 thread", 0.51, 2.713e7, 1.75e-16, 1.02, 0),
+        ("heyoka lagrange_prop (all cores)", "", 0.0, 1.23456e9, 1.91e1, 1.2e17, 12),
+        (LONG_NAME, LONG_NOTE, 12.5, 999.96, math.nan, math.nan, 666_667),
+        ("rebound.M_to_E", "per-call Python API", 0.0, 4.2e3, 3.42e-4, 94.6, 0),
+    ]
+    nan4 = [math.nan] * 4
+    rows = []
+    for dataset in ("easy", "hard", "a data set with a long name"):
+        for method, note, setup, per_s, rel, ulp, n_nan in methods:
+            seconds = 1e6 / per_s
+            rows.append(bench.BenchRow(method, dataset, 10**6, seconds, per_s, rel, ulp, n_nan, "ok", note, setup))
+        rows.append(bench.BenchRow("exoplanet-core", dataset, 0, *nan4, 0, "skipped", LONG_NOTE))
+        rows.append(bench.BenchRow("pykep", dataset, 10, *nan4, 0, "raised", f"raised ValueError: {LONG_NOTE}"))
+    return rows
+
+
+def _propagate_rows():
+    return [
+        bench.PropagateRow(r.method, r.dataset, r.n, r.seconds, r.throughput_per_s, r.max_rel_error, r.max_ulp * 1e-3,
+                           r.n_nan, r.status, r.note, r.setup_seconds)
+        for r in _kepler_rows()
+    ]
+
+
+def _api_rows():
+    cases = ["Orbit.from_elements vs elements_to_state", "Orbit.propagate of a long batch vs " + LONG_NAME]
+    return [
+        bench.ApiRow(case, n, core, core * (1 + f), core * f, f)
+        for n, core, f in ((1, 2.4e-5, 0.796), (100_000, 0.0105, -0.0051), (1_000_000, 0.18296571, 12.3456))
+        for case in cases
+    ]
+
+
+def _cli_rows():
+    return [bench.CliRow("orbits --help", 10, 0.153, 0.148, 0.2), bench.CliRow(LONG_COMMAND, 10, 1.632, 1.507, None)]
+
+
+def _validate_rows():
+    backends = ("rebound", "heyoka", "a_third_backend")
+    stages = {"analytic": 0.71}
+    stages.update({f"{b} {stage}": 0.0333 for b in backends for stage in ("setup", "integration")})
+    stages["other"] = -0.0025
+    scenes = ["binary", "lagrange_beyond_routh", "a_scene_with_a_very_long_name_from_a_user_file"]
+    rows = [bench.ValidateRow(scene, "sequential", stages, 1.473) for scene in scenes]
+    rows.append(bench.ValidateRow("all", "sequential", {}, 8.472))
+    sweep = {"cluster start": 0.27, "scenes": 4.06}
+    rows += [bench.ValidateRow("all", f"sweep, 2 worker {workers}", sweep, 4.3) for workers in ("threads", "processes")]
+    return rows
+
+
+def _shown(text, table):
+    """Whether text appears in the table as whole words, whatever the line breaks in either."""
+    return re.search(r"(?<!\w)" + re.escape(" ".join(text.split())) + r"(?!\w)", " ".join(table.split()))
+
+
+def _texts(kind, rows):
+    """The free text of each row that its table must show in full: names and notes."""
+    if kind in ("kepler", "propagate"):
+        return [t for r in rows for t in (r.method, r.note, r.dataset)]
+    if kind == "api":
+        return [r.case for r in rows]
+    if kind == "cli":
+        return [r.command for r in rows]
+    return [r.scene for r in rows] + [r.mode for r in rows] + [w for r in rows for s in r.stages for w in s.split()]
+
+
+REPRESENTATIVE = {
+    "kepler": _kepler_rows,
+    "propagate": _propagate_rows,
+    "api": _api_rows,
+    "cli": _cli_rows,
+    "validate": _validate_rows,
+}
+
+
+@pytest.mark.parametrize("kind", [*REPRESENTATIVE, "all"])
+def test_tables_fit_80_columns_and_cut_nothing(kind):
+    assert len(LONG_NAME) > 80 and len(LONG_NOTE) > 80 and len(LONG_COMMAND) > 80  # wider than any column
+    report = {name: make() for name, make in REPRESENTATIVE.items()}
+    if kind == "all":
+        table, texts = bench.format_report(report), [t for name, rows in report.items() for t in _texts(name, rows)]
+    else:
+        table, texts = bench.BENCHMARKS[kind][1](report[kind]), _texts(kind, report[kind])
+    assert isinstance(table, str) and table.strip()
+    too_wide = [line for line in table.splitlines() if len(line) > bench.WIDTH]
+    assert not too_wide and bench.WIDTH == 80, "\n".join(too_wide)
+    missing = [text for text in texts if text and not _shown(text, table)]
+    assert not missing, (missing, table)
+    assert "..." not in table and "\u2026" not in table

@@ -26,6 +26,7 @@ import shutil
 import statistics
 import subprocess
 import sys
+import textwrap
 import time
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
@@ -442,27 +443,155 @@ def bench_kepler(
 
 # --- reporting ------------------------------------------------------------------------------------
 
+#: Width of every plain-text table: a line never exceeds it, and no text is cut to fit (it wraps).
+WIDTH = 80
+_GAP = "  "
+
+
+def _wrap(text, width, indent="", subsequent=None, split_words=True):
+    """Lines of text, at most `width` wide; words are split only if one alone is wider than the line (and
+    split_words, else that line is wider)."""
+    wrapper = textwrap.TextWrapper(
+        width, initial_indent=indent, subsequent_indent=indent if subsequent is None else subsequent,
+        break_on_hyphens=False, break_long_words=split_words,
+    )
+    return wrapper.wrap(text) or [indent.rstrip()]
+
+
+def _fixed(x, digits):
+    """x in fixed notation with at least `digits` significant digits (all the integer digits if more)."""
+    if not math.isfinite(x):
+        return str(x)
+    if x == 0:
+        return "0"
+    return f"{x:.{max(0, digits - 1 - math.floor(math.log10(abs(x))))}f}"
+
+
+def _sig(x, digits=3):
+    """x to `digits` significant digits: fixed notation from 0.001 to 10**digits, scientific beyond."""
+    if math.isfinite(x) and x != 0 and not 1e-3 <= abs(x) < 10**digits:
+        return f"{x:.{digits - 1}e}"
+    return _fixed(x, digits)
+
+
+def _mega(per_second):
+    """A throughput in millions per second: 4 significant digits from 1 M/s, 3 below."""
+    x = per_second / 1e6
+    return _fixed(x, 4) if abs(x) >= 1 else _sig(x, 3)
+
+
+def _table(header, rows, stack=False, width=WIDTH, first="<"):
+    """Lines of a plain-text table at most `width` wide.
+
+    header: the column titles; rows: lists of cells, the first left-aligned and wrapped (continuation lines
+    indented, the other cells on the last) to what the other columns leave of `width`, the others
+    right-aligned; or strings, section titles drawn as rules across the table.  stack=True wraps the titles
+    word by word over several header lines, so that a column is only as wide as its longest title word or
+    cell; first=">" right-aligns the first column too (numbers)."""
+    cells = [r for r in rows if not isinstance(r, str)]
+    widths = [
+        max([len(w) for w in (title.split() if stack else [title])] + [len(r[j]) for r in cells])
+        for j, title in enumerate(header)
+    ]
+    rest = sum(widths[1:]) + len(_GAP) * (len(widths) - 1)
+    widths[0] = max(min(widths[0], width - rest), 12)
+    total = sum(widths) + len(_GAP) * (len(widths) - 1)
+    titles = [_wrap(t, w) if stack else [t] for t, w in zip(header, widths)]
+    depth = max(map(len, titles))
+    titles = [[""] * (depth - len(t)) + t for t in titles]
+    lines = [_row([t[i] for t in titles], widths, first) for i in range(depth)]
+    if not rows or not isinstance(rows[0], str):
+        lines.append("-" * total)
+    for r in rows:
+        if isinstance(r, str):
+            lines.extend(_section(r, max(total, len(r) + 6), width))
+        else:
+            lines.extend(_cells(r, widths, first, width))
+    return lines
+
+
+def _row(cells, widths, align="<"):
+    first, *others = cells
+    text = f"{first:{align}{widths[0]}}" + "".join(f"{_GAP}{c:>{w}}" for c, w in zip(others, widths[1:]))
+    return text.rstrip()
+
+
+def _cells(cells, widths, align="<", width=WIDTH):
+    """A table row: its first cell wrapped to its column, the others on its last line (so that the text reads
+    on without figures in between); a text with a word wider than its column takes whole lines instead, and
+    the figures a line of their own under it."""
+    first = _wrap(cells[0], widths[0], subsequent="  ", split_words=False)
+    if max(map(len, first)) > widths[0]:
+        first = [*_wrap(cells[0], width, subsequent="  "), ""]
+    return first[:-1] + [_row([first[-1], *cells[1:]], widths, align)]
+
+
+def _section(title, rule, width):
+    """A section title drawn into a rule: '-- title ------' (wrapped if the title is wider than `width`)."""
+    if len(title) + 6 > width:
+        return _wrap(title, width, "-- ", "   ")
+    return [f"-- {title} " + "-" * (min(rule, width) - len(title) - 4)]
+
+
+def _notes(texts, width=WIDTH):
+    """The footnote list: '[n] text' with hanging indents; `texts` maps each text to its number."""
+    if not texts:
+        return []
+    mark_width = len(f"[{len(texts)}]")
+    lines = []
+    for text, number in texts.items():
+        mark = f"[{number}]"
+        lines.extend(_wrap(text, width, f"{mark:>{mark_width}} ", " " * (mark_width + 1)))
+    return lines
+
+
+def _mark(texts, text):
+    """' [n]', the footnote number of text (a new one if unseen), or '' for no text."""
+    if not text:
+        return ""
+    return f" [{texts.setdefault(text, len(texts) + 1)}]"
+
 
 def _solves(row):
     """Whether the row timed a method that returned at least one finite anomaly."""
     return row.status == "ok" and row.n_nan < row.n
 
 
+def _by_dataset(rows, reference, stats):
+    """Table rows of a throughput benchmark: a section per data set (in order of appearance), one row per
+    method with its footnote mark, then the footnote texts {text: number}."""
+    texts, table = {}, []
+    for dataset in dict.fromkeys(r.dataset for r in rows):
+        table.append(dataset)
+        for r in (r for r in rows if r.dataset == dataset):
+            if r.status == "ok":
+                ratio = _sig(r.throughput_per_s / reference[dataset], 3) if dataset in reference else "-"
+                cells = [_mega(r.throughput_per_s), ratio, *stats(r), str(r.n_nan)]
+            else:
+                cells = ["-"] * 5
+            table.append([r.method + _mark(texts, _note(r)), *cells])
+    return table, texts
+
+
+_RATIO = "ratio: throughput over that of orbits (1 thread) on the same set; above 1 is faster."
+
+
 def format_rows(rows: Sequence[BenchRow]) -> str:
-    """Plain-text table of bench_kepler: throughput (M/s), ratio to orbits on one thread on the same set
-    (above 1: faster than orbits), worst relative and ulp errors, NaN count, notes."""
+    """Plain-text table of bench_kepler, at most 80 columns: a section per data set, throughput (M/s), ratio
+    to orbits on one thread on the same set (above 1: faster than orbits), worst relative and ulp errors,
+    NaN count; the notes in a numbered list under the table."""
     reference = {r.dataset: r.throughput_per_s for r in rows if r.method == "orbits" and _solves(r)}
-    header = f"{'method':<24}{'dataset':<12}{'M/s':>9}{'vs orbits':>10}{'max rel err':>13}{'max ulp':>11}"
-    header += f"{'NaN':>8}  note"
-    lines = [header, "-" * len(header)]
-    for r in rows:
-        if r.status == "ok":
-            ratio = f"{r.throughput_per_s / reference[r.dataset]:>10.3f}" if r.dataset in reference else f"{'-':>10}"
-            stats = f"{r.throughput_per_s / 1e6:>9.3f}{ratio}{r.max_rel_error:>13.2e}{r.max_ulp:>11.3g}{r.n_nan:>8d}"
-        else:
-            stats = f"{'-':>9}{'-':>10}{'-':>13}{'-':>11}{'-':>8}"
-        lines.append(f"{r.method:<24}{r.dataset:<12}{stats}  {_note(r)}")
-    return "\n".join(lines)
+    table, texts = _by_dataset(rows, reference, _kepler_stats)
+    lines = _table(["method", "M/s", "ratio", "rel err", "ulp", "NaN"], table)
+    legend = (
+        f"M/s: millions of pairs solved per second. {_RATIO} rel err, ulp: worst relative and ulp errors "
+        "against mpmath. NaN: non-finite results."
+    )
+    return "\n".join(lines + [""] + _wrap(legend, WIDTH) + _notes(texts))
+
+
+def _kepler_stats(row):
+    return [f"{row.max_rel_error:.2e}", _sig(row.max_ulp)]
 
 
 def _note(row):
@@ -739,21 +868,21 @@ def bench_propagate(n: int = 1_000_000, n_ref: int = 200, seed: int = 0, repeats
 
 
 def format_propagate(rows: Sequence[PropagateRow]) -> str:
-    """Plain-text table of bench_propagate: M states/s, ratio to orbits on one thread on the same set,
-    worst relative position and velocity errors, NaN count, notes."""
+    """Plain-text table of bench_propagate, at most 80 columns: a section per data set, M states/s, ratio to
+    orbits on one thread on the same set, worst relative position and velocity errors, NaN count; the notes
+    in a numbered list under the table."""
     reference = {r.dataset: r.throughput_per_s for r in rows if r.method == "orbits" and r.status == "ok"}
-    header = f"{'method':<34}{'dataset':<10}{'M/s':>9}{'vs orbits':>10}{'max |dr|/r':>12}{'max |dv|/v':>12}"
-    header += f"{'NaN':>9}  note"
-    lines = [header, "-" * len(header)]
-    for r in rows:
-        if r.status == "ok":
-            ratio = f"{r.throughput_per_s / reference[r.dataset]:>10.3f}" if r.dataset in reference else f"{'-':>10}"
-            stats = f"{r.throughput_per_s / 1e6:>9.3f}{ratio}{r.max_position_error:>12.2e}{r.max_velocity_error:>12.2e}"
-            stats += f"{r.n_nan:>9d}"
-        else:
-            stats = f"{'-':>9}{'-':>10}{'-':>12}{'-':>12}{'-':>9}"
-        lines.append(f"{r.method:<34}{r.dataset:<10}{stats}  {_note(r)}")
-    return "\n".join(lines)
+    table, texts = _by_dataset(rows, reference, _propagation_stats)
+    lines = _table(["method", "M/s", "ratio", "|dr|/r", "|dv|/v", "NaN"], table)
+    legend = (
+        f"M/s: millions of states propagated per second. {_RATIO} |dr|/r, |dv|/v: max |dr|/r and max |dv|/v, "
+        "the worst relative position and velocity errors against mpmath. NaN: non-finite results."
+    )
+    return "\n".join(lines + [""] + _wrap(legend, WIDTH) + _notes(texts))
+
+
+def _propagation_stats(row):
+    return [f"{row.max_position_error:.2e}", f"{row.max_velocity_error:.2e}"]
 
 
 # --- unit-aware API overhead ----------------------------------------------------------------------
@@ -823,15 +952,17 @@ def bench_api(sizes: Iterable[int] = (1, 100_000, 1_000_000), seed: int = 0, rep
 
 
 def format_api(rows: Sequence[ApiRow]) -> str:
-    """Plain-text table of bench_api (times in microseconds)."""
-    header = f"{'case':<44}{'n':>9}{'core us':>13}{'API us':>13}{'overhead us':>13}{'overhead':>10}"
-    lines = [header, "-" * len(header)]
-    for r in rows:
-        lines.append(
-            f"{r.case:<44}{r.n:>9d}{r.core_seconds * 1e6:>13.1f}{r.api_seconds * 1e6:>13.1f}"
-            f"{r.overhead_seconds * 1e6:>13.1f}{r.overhead_fraction:>10.1%}"
-        )
-    return "\n".join(lines)
+    """Plain-text table of bench_api, at most 80 columns: a section per case, a row per size; times per call
+    in microseconds (4 significant digits), overhead in microseconds and as a percentage of the core time."""
+    table = []
+    for case in dict.fromkeys(r.case for r in rows):
+        table.append(case)
+        for r in (r for r in rows if r.case == case):
+            times = (_fixed(t * 1e6, 4) for t in (r.core_seconds, r.api_seconds, r.overhead_seconds))
+            table.append([str(r.n), *times, _fixed(r.overhead_fraction * 100, 3) + "%"])
+    lines = _table(["n", "core us", "API us", "overhead us", "overhead"], table, first=">")
+    legend = "us: microseconds per call, best of the repeats. overhead: API minus core, in us and as a share of core."
+    return "\n".join(lines + [""] + _wrap(legend, WIDTH))
 
 
 # --- command-line cold start ----------------------------------------------------------------------
@@ -878,13 +1009,13 @@ def bench_cli(runs: int = 10, commands: Sequence[tuple[list[str], float | None]]
 
 
 def format_cli(rows: Sequence[CliRow]) -> str:
-    """Plain-text table of bench_cli."""
-    header = f"{'command':<70}{'runs':>6}{'median s':>10}{'min s':>8}{'target s':>10}"
-    lines = [header, "-" * len(header)]
-    for r in rows:
-        target = f"{r.target_seconds:>10.2f}" if r.target_seconds else f"{'-':>10}"
-        lines.append(f"{r.command:<70}{r.runs:>6d}{r.median_seconds:>10.3f}{r.min_seconds:>8.3f}{target}")
-    return "\n".join(lines)
+    """Plain-text table of bench_cli, at most 80 columns (a long command wraps onto indented lines)."""
+    table = [
+        [r.command, str(r.runs), f"{r.median_seconds:.3f}", f"{r.min_seconds:.3f}",
+         f"{r.target_seconds:.2f}" if r.target_seconds else "-"]
+        for r in rows
+    ]
+    return "\n".join(_table(["command", "runs", "median s", "min s", "target s"], table))
 
 
 # --- validation: where the time goes --------------------------------------------------------------
@@ -956,17 +1087,55 @@ def _sweep_rows(scenes, backend_names):
 
 
 def format_validate(rows: Sequence[ValidateRow]) -> str:
-    """Plain-text table of bench_validate: seconds per stage, one line per scene and run."""
-    stages = list(dict.fromkeys(k for r in rows for k in r.stages))
-    widths = [max(len(s), 8) + 2 for s in stages]
-    scene_width = max(len(r.scene) for r in rows) + 2
-    header = f"{'scene':<{scene_width}}{'mode':<27}" + "".join(f"{s:>{w}}" for s, w in zip(stages, widths))
-    header += f"{'total s':>10}"
-    lines = [header, "-" * len(header)]
+    """Plain-text tables of bench_validate, at most 80 columns: seconds in total and per stage, one line per
+    scene or run.  Consecutive rows with compatible stages share a table, titled by what they have in common
+    (e.g. the mode "sequential") and labelled by what varies (the scene, or the mode of the sweeps); a table
+    with more stages than 80 columns hold continues, label repeated, in further blocks under it."""
+    sections = []  # [(stage names, rows)]
     for r in rows:
-        cells = "".join(f"{r.stages[s]:>{w}.4f}" if s in r.stages else " " * w for s, w in zip(stages, widths))
-        lines.append(f"{r.scene:<{scene_width}}{r.mode:<27}{cells}{r.total_seconds:>10.3f}")
-    return "\n".join(lines)
+        if sections and (r.stages.keys() <= set(sections[-1][0]) or set(sections[-1][0]) <= r.stages.keys()):
+            stages, group = sections.pop()
+            sections.append((list(dict.fromkeys([*stages, *r.stages])), [*group, r]))
+        else:
+            sections.append((list(r.stages), [r]))
+    return "\n\n".join("\n".join(_validate_section(stages, group)) for stages, group in sections)
+
+
+def _validate_section(stages, rows):
+    """Lines of one table of format_validate."""
+    fields = {"scene": [r.scene for r in rows], "mode": [r.mode for r in rows]}
+    varying = [name for name, values in fields.items() if len(set(values)) > 1] or ["scene"]
+    label = ", ".join(varying)
+    labels = [", ".join(values) for values in zip(*(fields[name] for name in varying))]
+    common = "; ".join(f"{name} {values[0]}" for name, values in fields.items() if name not in varying)
+    columns = [("total", [f"{r.total_seconds:.3f}" for r in rows])]
+    columns += [(s, [f"{r.stages[s]:.4f}" if s in r.stages else "" for r in rows]) for s in stages]
+    lines = _wrap(f"{common}: seconds, in total and per stage" if common else "seconds, in total and per stage", WIDTH)
+    for i, block in enumerate(_blocks(max(map(len, [label, *labels])), columns)):
+        table = [[name, *(cells[j] for _, cells in block)] for j, name in enumerate(labels)]
+        table = [row for row in table if any(row[1:])]  # a run without these stages is in the first block
+        lines += [""] * (i > 0) + _table([label, *(title for title, _ in block)], table, stack=True)
+    return lines
+
+
+def _blocks(label_width, columns, width=WIDTH):
+    """columns [(title, cells)] split into as few consecutive blocks as fit beside the label column in
+    `width`, as evenly as possible."""
+    need = [max([len(w) for w in title.split()] + [len(c) for c in cells]) + len(_GAP) for title, cells in columns]
+    room = max(width - min(label_width, 3 * width // 5), max(need, default=0))
+
+    def pack(capacity):
+        blocks, used = [[]], 0
+        for column, w in zip(columns, need):
+            if blocks[-1] and used + w > capacity:
+                blocks.append([])
+                used = 0
+            blocks[-1].append(column)
+            used += w
+        return blocks
+
+    fewest = len(pack(room))
+    return next(pack(c) for c in range(max(need, default=0), room + 1) if len(pack(c)) == fewest)
 
 
 # --- everything -----------------------------------------------------------------------------------

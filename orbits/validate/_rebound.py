@@ -21,16 +21,22 @@ from orbits.core.errors import OrbitDomainError
 from orbits.nbody import NBodyProblem, NBodyResult
 
 INTEGRATORS = ("ias15", "whfast", "bs")
+#: IAS15's step-size rules. PRS23 (the default) stalls on a ring of small bodies about a dominant central mass
+#: (it reacts to the round-off in the central body's acceleration: a ring of 7 about 1000 times their mass
+#: made no progress in 60 s); "global" integrates that ring in 800 steps (tests/validation/test_long_runs.py).
+ADAPTIVE_MODES = ("PRS23", "global", "individual", "aarseth85")
 
 
 def integrate(
-    problem: NBodyProblem, integrator: str = "ias15", epsilon: float = 1e-9, dt: float | None = None
+    problem: NBodyProblem, integrator: str = "ias15", epsilon: float = 1e-9, dt: float | None = None,
+    adaptive_mode: str = "PRS23",
 ) -> NBodyResult:
     """Integrate ``problem`` with rebound and return the states at ``problem.times`` (WHFast: at steps x dt).
 
     ``epsilon`` is the accuracy parameter of IAS15, and the relative and absolute tolerance of the
     Gragg-Bulirsch-Stoer integrator "bs" (ignored by WHFast); ``dt`` is the WHFast step, required for WHFast
-    and rejected by the adaptive integrators, which choose their own steps.
+    and rejected by the adaptive integrators, which choose their own steps; ``adaptive_mode`` is IAS15's
+    step-size rule (ADAPTIVE_MODES).
     """
     import rebound
 
@@ -43,7 +49,8 @@ def integrate(
     if integrator in ("ias15", "bs"):
         if dt is not None:
             raise OrbitDomainError(f"dt = {dt} is a WHFast setting; {integrator} chooses its own steps (pass dt=None)")
-        settings = _configure_ias15(sim, epsilon) if integrator == "ias15" else _configure_bs(sim, epsilon)
+        settings = (_configure_ias15(sim, epsilon, adaptive_mode) if integrator == "ias15"
+                    else _configure_bs(sim, epsilon))
         setup_time = time.perf_counter() - start
         times, positions, velocities, wall_time = _run_ias15(sim, problem.times)
         time_mode = "exact finish time: integrate(t, exact_finish_time=1) lands sim.t on each requested time"
@@ -84,16 +91,18 @@ def _simulation(rebound, problem: NBodyProblem):
     return sim
 
 
-def _configure_ias15(sim, epsilon: float) -> dict:
+def _configure_ias15(sim, epsilon: float, adaptive_mode: str = "PRS23") -> dict:
     """Select IAS15 with every setting pinned; return those settings."""
     if not (np.isfinite(epsilon) and epsilon > 0.0):
         raise OrbitDomainError(f"epsilon = {epsilon} must be finite and > 0 (0 would switch IAS15 to fixed steps)")
+    if adaptive_mode not in ADAPTIVE_MODES:
+        raise OrbitDomainError(f"adaptive_mode = {adaptive_mode!r} is not one of IAS15's: {', '.join(ADAPTIVE_MODES)}")
     sim.integrator = "ias15"
     sim.integrator.epsilon = float(epsilon)
     sim.integrator.min_dt = 0.0
-    sim.integrator.adaptive_mode = "PRS23"
+    sim.integrator.adaptive_mode = adaptive_mode
     sim.dt = 1e-3
-    return {"epsilon": float(epsilon), "min_dt": 0.0, "adaptive_mode": "PRS23", "initial_dt": 1e-3}
+    return {"epsilon": float(epsilon), "min_dt": 0.0, "adaptive_mode": adaptive_mode, "initial_dt": 1e-3}
 
 
 def _configure_bs(sim, epsilon: float) -> dict:

@@ -8,6 +8,7 @@ integrators stop at the last time needed and output only at the times the checks
 massless in both backends.
 """
 
+import math
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
@@ -124,26 +125,39 @@ def validate_scene(
     """SceneReport comparing the predictions of `scene` (a data Scene or a ModelScene) with each named backend."""
     settings = {**DEFAULT_SETTINGS, **(settings or {})}
     the_plan = plan(scene)
-    results = {name: backends.integrate(name, the_plan.problem, **settings[name]) for name in backend_names}
+    results, failures = {}, {}
+    for name in backend_names:
+        try:
+            results[name] = backends.integrate(name, the_plan.problem, **settings[name])
+        except (RuntimeError, FloatingPointError, OverflowError, MemoryError) as err:  # a run that blew up
+            failures[name] = f"{type(err).__name__}: {err}".splitlines()[0]
     trajectories = {name: the_plan.code_units.trajectory(result) for name, result in results.items()}
-    checks, residuals = [], {}
-    if the_plan.residuals is not None:
+    checks, residuals = [_failed_run(name, reason, backend_names) for name, reason in failures.items()], {}
+    if the_plan.residuals is not None and trajectories:
         residuals = {name: the_plan.residuals(t) for name, t in trajectories.items()}
         errors = {name: float(np.max(series)) for name, series in residuals.items()}
         checks.append(Check("positions |dr|/r_max", "", None, errors, errors, the_plan.positions_tolerance,
                             "relative error"))
-    checks.extend(_gather({name: the_plan.measure(t) for name, t in trajectories.items()}))
+    if trajectories:
+        checks.extend(_gather({name: the_plan.measure(t) for name, t in trajectories.items()}))
     return SceneReport(
         name=the_plan.name, description=the_plan.description, checks=checks,
-        wall_times={"analytic": the_plan.predict_seconds, **{n: r.wall_time for n, r in results.items()}},
+        wall_times={"analytic": the_plan.predict_seconds, **{n: r.wall_time for n, r in results.items()},
+                    **{n: math.nan for n in failures}},
         setup_times={n: r.setup_time for n, r in results.items()},
-        settings={n: r.settings for n, r in results.items()},
-        versions={n: r.version for n, r in results.items()},
-        time_modes={n: r.time_mode for n, r in results.items()},
+        settings={**{n: r.settings for n, r in results.items()}, **{n: settings[n] for n in failures}},
+        versions={**{n: r.version for n, r in results.items()}, **{n: "-" for n in failures}},
+        time_modes={**{n: r.time_mode for n, r in results.items()}, **{n: f"failed: {failures[n]}" for n in failures}},
         code_units=the_plan.code_units,
         residual_times=the_plan.residual_times if residuals else np.zeros(0),
         residuals=residuals,
     )
+
+
+def _failed_run(name: str, reason: str, backend_names: Sequence[str]) -> Check:
+    """A failed check saying why backend `name` gave no trajectory (the other backends' columns read 0)."""
+    errors = {n: (math.inf if n == name else 0.0) for n in backend_names}
+    return Check(f"{name} integration failed: {reason}", "", None, errors, errors, 0.0, "absolute drift")
 
 
 def _gather(per_backend: dict[str, list[Measurement]]) -> list[Check]:
