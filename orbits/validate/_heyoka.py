@@ -66,7 +66,7 @@ def integrate(
     ta.state[:] = np.hstack([problem.positions, problem.velocities]).ravel().astype(dtype)
     ta.pars[:] = problem.gm[: problem.n_active].astype(dtype)
     start = time.perf_counter()
-    outcome, *_, states = ta.propagate_grid(grid)
+    outcome, *_, states = ta.propagate_grid(grid, callback=_interruptible)
     wall_time = time.perf_counter() - start
     if outcome != heyoka.taylor_outcome.time_limit:
         raise RuntimeError(
@@ -94,6 +94,12 @@ def integrate(
         version=heyoka.__version__,
         time_mode="propagate_grid from t = 0 lands exactly on each requested time",
     )
+
+
+def _interruptible(ta) -> bool:
+    """Called by heyoka after every step; being Python, it lets a pending Ctrl-C raise KeyboardInterrupt at once
+    (without it heyoka runs to the end of the grid first). About 5 us a step; it never stops the run itself."""
+    return True
 
 
 def clear_cache() -> None:
