@@ -145,9 +145,10 @@ def measured_period(scene: "Scene", i: int, t: float, position: np.ndarray, velo
 
 
 def measured_closest_approach(scene: "Scene", i: int, position: np.ndarray, velocity: np.ndarray) -> float:
-    """Osculating periapsis distance p / (1 + e) (m) of body i's relative orbit at a state near periapsis."""
-    p, e, *_ = osculating(scene, i, position, velocity)
-    return float(p / (1 + e))
+    """The separation |r_i - r_primary| (m) of the integrated state at the predicted periapsis time: the distance
+    actually reached there (an osculating p / (1 + e) would be conserved, and the initial state would pass)."""
+    r, _ = relative_state(scene, i, position, velocity)
+    return float(np.linalg.norm(r))
 
 
 def length_scale(scene: "Scene", positions: np.ndarray) -> float:

@@ -28,9 +28,13 @@ float64 here, once. Schema (TOML):
 
 An `orbit` gives the body's state relative to an earlier-listed primary, as the relative Kepler orbit
 with mu = G (M_primary + m_body) (exact for an isolated pair); use exactly one of a, p, q.
+
+Only the keys above are accepted, in every table: a misspelt or misplaced key is an error naming the key, the
+table and the nearest allowed key, never a silent default.
 """
 
 import contextlib
+import difflib
 import json
 import tomllib
 from collections.abc import Iterator
@@ -50,6 +54,15 @@ ASKS = ("positions", "conserved", "period", "closest_approach")
 DEFAULT_TOLERANCE = {"positions": 1e-10, "energy": 1e-11, "angular_momentum": 1e-11, "lrl": 1e-10,
                      "period": 1e-10, "closest_approach": 1e-10}
 BUILTIN_DIR = Path(__file__).parent / "scenes"
+#: the keys each table of a data scene may hold (anything else is refused, with the nearest allowed key)
+KEYS = ("name", "description", "asks", "time", "tolerance", "bodies")
+BODY_KEYS = ("name", "body", "gm", "mass", "position", "velocity", "test_particle", "orbit")
+ORBIT_KEYS = ("primary", "a", "p", "q", "e", "inc", "raan", "argp", "nu")
+TIME_KEYS = ("periods", "span", "outputs", "times")
+#: the keys of a model scene file (orbits.validate.models), named here so a typo in either kind finds its key
+MODEL_KEYS = ("name", "description", "model", "parameters")
+MAX_OUTPUTS = 1_000_000
+MAX_PERIODS = 1_000_000
 
 
 @dataclass(frozen=True)
@@ -120,18 +133,101 @@ def builtin_names() -> list[str]:
 
 
 def read(name_or_path: str | Path) -> tuple[dict, str]:
-    """(parsed dictionary, source path) of a built-in scene name or a .toml / .json file, read once."""
+    """(parsed dictionary, source path) of a built-in scene name or a .toml / .json file, read once.
+
+    Every failure is a one-line SceneError naming the file: missing, a folder, unreadable, not UTF-8 text,
+    not valid TOML / JSON, or a JSON document that is not an object.
+    """
+    if not str(name_or_path).strip():
+        raise SceneError(f"{str(name_or_path)!r}: empty scene name; give a built-in scene "
+                         f"({', '.join(builtin_names())}) or a .toml / .json file")
     path = Path(name_or_path)
     if not path.suffix and (BUILTIN_DIR / f"{name_or_path}.toml").exists():
         path = BUILTIN_DIR / f"{name_or_path}.toml"
+    if path.is_dir():
+        raise SceneError(f"{path}: is a folder, not a scene file (.toml or .json)")
     if not path.exists():
         raise SceneError(f"{name_or_path}: no such scene file, and not a built-in scene ({', '.join(builtin_names())})")
-    text = path.read_text()
+    kind = "JSON" if path.suffix == ".json" else "TOML"
     try:
-        data = json.loads(text) if path.suffix == ".json" else tomllib.loads(text)
-    except (json.JSONDecodeError, tomllib.TOMLDecodeError) as err:
-        raise SceneError(f"{path}: not valid {'JSON' if path.suffix == '.json' else 'TOML'}: {err}") from None
+        raw = path.read_bytes()
+    except OSError as err:
+        raise SceneError(f"{path}: cannot read the file: {err.strerror or err}") from None
+    try:
+        text = raw.decode("utf-8-sig")  # a leading byte-order mark is harmless
+    except UnicodeDecodeError as err:
+        raise SceneError(f"{path}: not UTF-8 text (byte 0x{raw[err.start]:02x} at position {err.start}); "
+                         f"save the scene as UTF-8 {kind}") from None
+    try:
+        data = json.loads(text) if kind == "JSON" else tomllib.loads(text)
+    except ValueError as err:  # JSONDecodeError, TOMLDecodeError, or an integer of more than 4300 digits
+        raise SceneError(f"{path}: not valid {kind}: {str(err).split(';')[0]}") from None
+    except RecursionError:
+        raise SceneError(f"{path}: not valid {kind}: nested too deeply") from None
+    if not isinstance(data, dict):
+        raise SceneError(f"{path}: a scene must be a table (JSON object), not {_json_kind(data)}")
     return data, str(path)
+
+
+def _json_kind(value: object) -> str:
+    """How a JSON value reads in a message: null, true, a list, a number, a string ..."""
+    if value is None or isinstance(value, bool):
+        return json.dumps(value)
+    if isinstance(value, list):
+        return "a list"
+    if isinstance(value, (int, float)):
+        return f"a number ({value!r})"
+    if isinstance(value, str):
+        return "a string"
+    return f"a {type(value).__name__}"
+
+
+def unknown_keys(data: dict, allowed: tuple[str, ...], where: str, source: str,
+                 elsewhere: dict[str, str] | None = None, synonyms: dict[str, str] | None = None) -> None:
+    """SceneError for the first key of `data` not in `allowed`, naming the nearest allowed key (a typo's fix).
+
+    `where` names the table ("bodies[1]", "time"; "" for the top level). `elsewhere` maps keys that belong in
+    another table to where they belong, suggested when no allowed key is near: 'outputs' (a key of [time]).
+    `synonyms` maps other names of an allowed key to it (ecc -> e), which spelling alone would not find.
+    """
+    for key in data:
+        if key in allowed:
+            continue
+        lower = str(key).lower()
+        close = [k for k in allowed if k.lower() == lower] or [v for k, v in (synonyms or {}).items() if k == lower]
+        close = close or difflib.get_close_matches(str(key), allowed, n=1)
+        other = difflib.get_close_matches(str(key), list(elsewhere or {}), n=1)
+        if close:
+            hint = f"; did you mean {close[0]!r}?"
+        elif key in (elsewhere or {}):
+            hint = f" ({elsewhere[key]});"
+        elif other:
+            hint = f"; did you mean {other[0]!r} ({elsewhere[other[0]]})?"
+        else:
+            hint = ";"
+        place = f"{where}: unknown key" if where else "unknown top-level key"
+        raise SceneError(f"{source}: {place} {key!r}{hint} allowed: {', '.join(allowed)}")
+
+
+#: other names of the orbit elements, suggested for an unknown key of an orbit table
+_ORBIT_SYNONYMS = {"ecc": "e", "eccentricity": "e", "i": "inc", "incl": "inc", "inclination": "inc",
+                   "sma": "a", "semi_major_axis": "a", "semimajor_axis": "a", "semi_latus_rectum": "p",
+                   "periapsis": "q", "pericenter": "q", "periapsis_distance": "q", "node": "raan", "omega": "argp",
+                   "arg_periapsis": "argp", "w": "argp", "anomaly": "nu", "true_anomaly": "nu", "f": "nu",
+                   "center": "primary", "centre": "primary", "central_body": "primary"}
+
+_BODY_SYNONYMS = {"mu": "gm", "massless": "test_particle", "test": "test_particle", "testparticle": "test_particle",
+                  "pos": "position", "r": "position", "vel": "velocity", "v": "velocity", "elements": "orbit"}
+
+#: keys that belong in another table than the top level of a data scene, for unknown_keys' suggestions
+_ELSEWHERE = {
+    **{key: "a key of [[bodies]]" for key in BODY_KEYS},
+    **{key: "a key of a body's orbit table" for key in ORBIT_KEYS},
+    **{key: "a key of [time]" for key in TIME_KEYS},
+    **{key: "a key of [tolerance]" for key in DEFAULT_TOLERANCE},
+    "model": 'a model scene names its model = "<name>"',
+    "parameters": 'a model scene\'s table, with model = "<name>"',
+}
 
 
 def load(name_or_path: str | Path) -> "Scene":
@@ -142,25 +238,61 @@ def load(name_or_path: str | Path) -> "Scene":
 def from_dict(data: dict, source: str = "<scene>") -> Scene:
     """Validate a scene dictionary (the parsed TOML/JSON) and convert it to SI."""
     ctx = _Context(source)
+    if not isinstance(data, dict):
+        raise SceneError(f"{source}: a scene must be a table (JSON object), not {_json_kind(data)}")
+    if "model" in data:
+        raise SceneError(f"{source}: model: a model scene; load it with orbits.validate.scenes.load "
+                         f"(`orbits validate` does)")
+    unknown_keys(data, KEYS, "", source, {key: where for key, where in _ELSEWHERE.items() if key not in KEYS})
     name = ctx.string(data, "name")
+    description = data.get("description", "")
+    if not isinstance(description, str):
+        ctx.fail("description", f"{show(description)} must be a string")
     asks = tuple(ctx.get(data, "asks", list))
     for ask in asks:
         if ask not in ASKS:
-            ctx.fail("asks", f"unknown ask {ask!r}; allowed: {', '.join(ASKS)}")
+            ctx.fail("asks", f"unknown ask {show(ask)}{_did_you_mean(ask, ASKS)}; allowed: {', '.join(ASKS)}")
     if not asks:
         ctx.fail("asks", f"ask for at least one of: {', '.join(ASKS)}")
     bodies = _bodies(ctx, ctx.get(data, "bodies", list))
     times = _times(ctx, ctx.get(data, "time", dict), bodies)
     tolerance = dict(DEFAULT_TOLERANCE)
-    for key, value in data.get("tolerance", {}).items():
+    for key, value in (ctx.get(data, "tolerance", dict) if "tolerance" in data else {}).items():
         if key not in DEFAULT_TOLERANCE:
-            ctx.fail(f"tolerance.{key}", f"unknown check; allowed: {', '.join(DEFAULT_TOLERANCE)}")
+            ctx.fail(f"tolerance.{key}",
+                     f"unknown check{_did_you_mean(key, DEFAULT_TOLERANCE)}; allowed: {', '.join(DEFAULT_TOLERANCE)}")
         if not isinstance(value, (int, float)) or isinstance(value, bool) or not value > 0:
-            ctx.fail(f"tolerance.{key}", f"{value!r} must be a positive number (relative error)")
-        tolerance[key] = float(value)
+            ctx.fail(f"tolerance.{key}", f"{show(value)} must be a positive number (relative error)")
+        tolerance[key] = float(value) if _finite(value) else np.inf  # an int too large for a float: no bound
     if ("period" in asks or "closest_approach" in asks) and not any(b.orbit for b in bodies):
         ctx.fail("asks", "period and closest_approach need at least one body with an `orbit` table")
-    return Scene(name, str(data.get("description", "")), bodies, times, asks, tolerance)
+    return Scene(name, description, bodies, times, asks, tolerance)
+
+
+def show(value: object) -> str:
+    """A value as a message shows it: NumPy scalars as the plain Python number (-1.3e+20, not np.float64(...))."""
+    if isinstance(value, np.generic):
+        value = value.item()
+    if isinstance(value, int) and not isinstance(value, bool) and value.bit_length() > 64:
+        return f"an integer of about {int(value.bit_length() * 0.30103) + 1} digits"
+    text = repr(value)
+    return text if len(text) <= 80 else f"{text[:60]}... ({type(value).__name__} of {len(text)} characters)"
+
+
+def _finite(value: object) -> bool:
+    """True for a finite int or float (bool excluded; an int too large for a float is not finite)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return False
+    try:
+        return bool(np.isfinite(float(value)))
+    except OverflowError:
+        return False
+
+
+def _did_you_mean(value: object, allowed) -> str:
+    """" (did you mean 'x'?)" naming the allowed word nearest a misspelt one, or ""."""
+    close = difflib.get_close_matches(str(value), list(allowed), n=1)
+    return f" (did you mean {close[0]!r}?)" if close else ""
 
 
 class _Context:
@@ -174,10 +306,11 @@ class _Context:
 
     def get(self, data: dict, key: str, kind: type, where: str | None = None) -> Any:
         where = where or key
+        what = {dict: "table", list: "list", str: "string"}.get(kind, kind.__name__)
         if key not in data:
-            self.fail(where, f"missing (a {kind.__name__} is required)")
+            self.fail(where, f"missing (a {what} is required)")
         if not isinstance(data[key], kind):
-            self.fail(where, f"{data[key]!r} must be a {kind.__name__}")
+            self.fail(where, f"{show(data[key])} must be a {what}")
         return data[key]
 
     def string(self, data: dict, key: str, where: str | None = None) -> str:
@@ -185,15 +318,19 @@ class _Context:
 
     def quantity(self, text: str, kind: str, where: str, bare_unit: u.UnitBase | None = None) -> float:
         """The SI value (float) of a quantity string of the given kind (orbits.inputs.KINDS)."""
-        with self.field(where):
-            value = inputs.parse_quantity(text, kind, where, bare_unit)
-        return float(value.to_value(inputs.KINDS[kind][0]))
+        with self.field(where), np.errstate(over="ignore"):
+            value = float(inputs.parse_quantity(text, kind, where, bare_unit).to_value(inputs.KINDS[kind][0]))
+        if not np.isfinite(value):
+            self.fail(where, f"{show(text)} overflows float64 in SI units ({inputs.KINDS[kind][0]})")
+        return value
 
     def vector(self, text: str, kind: str, where: str) -> np.ndarray:
         """The SI value (3,) of a vector string 'X,Y,Z UNIT' of the given kind."""
-        with self.field(where):
-            value = inputs.parse_vector(text, kind, where)
-        return value.to_value(inputs.KINDS[kind][0])
+        with self.field(where), np.errstate(over="ignore"):
+            value = inputs.parse_vector(text, kind, where).to_value(inputs.KINDS[kind][0])
+        if not np.all(np.isfinite(value)):
+            self.fail(where, f"{show(text)} overflows float64 in SI units ({inputs.KINDS[kind][0]})")
+        return value
 
     @contextlib.contextmanager
     def field(self, where: str) -> Iterator[None]:
@@ -201,13 +338,13 @@ class _Context:
         try:
             yield
         except (OrbitsError, TypeError, u.UnitsError) as err:
-            message = str(err).removeprefix(f"{where}: ")
+            message = str(err).removeprefix(f"{where}: ").removeprefix(f"{where} = ")  # the field is named once
             self.fail(where, message)
 
     def number(self, data: dict, key: str, where: str, default: float | None = None, low: float = -np.inf) -> float:
         value = data.get(key, default)
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not np.isfinite(value) or value < low:
-            self.fail(where, f"{value!r} must be a finite number >= {low}")
+        if not _finite(value) or value < low:
+            self.fail(where, f"{show(value)} must be a finite number >= {low:g}")
         return float(value)
 
 
@@ -217,9 +354,10 @@ def _gm(ctx, spec, where):
         ctx.fail(where, f"give exactly one of body, gm, mass; got {given or 'none'}")
     key = given[0]
     if key == "body":
-        named = inputs.find_body(spec["body"])
+        named = inputs.find_body(spec["body"]) if isinstance(spec["body"], str) else None
         if named is None:
-            ctx.fail(f"{where}.body", f"unknown body {spec['body']!r}; known: {', '.join(BODIES)}")
+            ctx.fail(f"{where}.body", f"unknown body {show(spec['body'])}{_did_you_mean(spec['body'], BODIES)}; "
+                     f"known: {', '.join(BODIES)}")
         return named.gm
     kind = "gravitational parameter" if key == "gm" else "mass"
     with ctx.field(f"{where}.{key}"):
@@ -234,13 +372,14 @@ def _bodies(ctx, entries):
     for k, spec in enumerate(entries):
         where = f"bodies[{k}]"
         if not isinstance(spec, dict):
-            ctx.fail(where, "must be a table")
+            ctx.fail(where, f"{show(spec)} must be a table")
+        unknown_keys(spec, BODY_KEYS, where, ctx.source, synonyms=_BODY_SYNONYMS)
         name = ctx.string(spec, "name", f"{where}.name")
         if name in names:
             ctx.fail(f"{where}.name", f"{name!r} is used twice")
         test_particle = spec.get("test_particle", False)
         if not isinstance(test_particle, bool):
-            ctx.fail(f"{where}.test_particle", f"{test_particle!r} must be true or false")
+            ctx.fail(f"{where}.test_particle", f"{show(test_particle)} must be true or false")
         if test_particle and any(key in spec for key in ("body", "gm", "mass")):
             ctx.fail(where, "a test particle is massless: remove body, gm and mass")
         gm = 0.0 if test_particle else _gm(ctx, spec, where)
@@ -251,6 +390,13 @@ def _bodies(ctx, entries):
         ctx.fail("bodies", "at least one body must be massive (not test_particle)")
     if any(b.test_particle for b in built[: len(massive)]):
         ctx.fail("bodies", "list massive bodies before test particles (test particles come last)")
+    if len(built) < 2:
+        ctx.fail("bodies", "a scene needs at least two bodies (a body alone has nothing to validate)")
+    for k, body in enumerate(built):
+        for j in range(k):
+            if np.array_equal(body.position, built[j].position):
+                ctx.fail(f"bodies[{k}]", f"{body.name!r} starts at the position of bodies[{j}] "
+                         f"({built[j].name!r}); two bodies cannot start at the same point")
     return tuple(built)
 
 
@@ -264,7 +410,8 @@ def _state(ctx, spec, where, name, gm, test_particle, built, names):
     orbit = spec["orbit"]
     ow = f"{where}.orbit"
     if not isinstance(orbit, dict):
-        ctx.fail(ow, "must be a table")
+        ctx.fail(ow, f"{show(orbit)} must be a table")
+    unknown_keys(orbit, ORBIT_KEYS, ow, ctx.source, synonyms=_ORBIT_SYNONYMS)
     primary_name = ctx.string(orbit, "primary", f"{ow}.primary")
     if primary_name not in names:
         ctx.fail(f"{ow}.primary", f"{primary_name!r} must name a body listed earlier ({', '.join(names) or 'none'})")
@@ -279,7 +426,8 @@ def _state(ctx, spec, where, name, gm, test_particle, built, names):
     if e >= 1 and 1 + e * np.cos(angles[3]) <= 0:
         ctx.fail(f"{ow}.nu", f"{orbit.get('nu')!r} lies on or beyond the asymptote of the e = {e} conic")
     mu = primary.gm + gm
-    r_rel, v_rel = elements.elements_to_state(p, e, *angles, mu)
+    with ctx.field(ow):
+        r_rel, v_rel = elements.elements_to_state(p, e, *angles, mu)
     spec_orbit = OrbitSpec(names.index(primary_name), p, e, *angles)
     return BodySpec(name, gm, primary.position + r_rel, primary.velocity + v_rel, test_particle, spec_orbit)
 
@@ -291,19 +439,30 @@ def _semi_latus_rectum(ctx, orbit, e, where):
     key = next(iter(sizes))
     with ctx.field(f"{where}.{key}"):
         value = inputs.parse_quantity(sizes[key], "length", f"{where}.{key}")
-        return float(inputs.semi_latus_rectum(np.float64(e), **{key: value}))
+        with np.errstate(over="ignore"):
+            p = float(inputs.semi_latus_rectum(np.float64(e), **{key: value}))
+    if not np.isfinite(p):
+        ctx.fail(where, f"the semi-latus rectum p of {key} = {show(sizes[key])} and e = {show(e)} overflows float64")
+    return p
 
 
 def _times(ctx, spec, bodies):
+    unknown_keys(spec, TIME_KEYS, "time", ctx.source)
     if "times" in spec:
+        others = [key for key in ("periods", "span", "outputs") if key in spec]
+        if others:
+            ctx.fail("time", f"give either a list of times or periods/span with outputs, not both; "
+                     f"remove {', '.join(others)}")
         if not isinstance(spec["times"], list) or not spec["times"]:
             ctx.fail("time.times", "must be a non-empty list of times like '1 d'")
+        if len(spec["times"]) > MAX_OUTPUTS:
+            ctx.fail("time.times", f"{len(spec['times'])} times; at most {MAX_OUTPUTS} are allowed")
         times = np.array([ctx.quantity(t, "time", f"time.times[{i}]") for i, t in enumerate(spec["times"])])
     else:
         span = _span(ctx, spec, bodies)
         outputs = spec.get("outputs", 100)
-        if isinstance(outputs, bool) or not isinstance(outputs, int) or not 1 <= outputs <= 1_000_000:
-            ctx.fail("time.outputs", f"{outputs!r} must be an integer in [1, 1000000]")
+        if isinstance(outputs, bool) or not isinstance(outputs, int) or not 1 <= outputs <= MAX_OUTPUTS:
+            ctx.fail("time.outputs", f"{show(outputs)} must be an integer in [1, {MAX_OUTPUTS}]")
         times = np.linspace(0.0, span, outputs + 1)[1:]
     if np.any(times <= 0) or np.any(np.diff(times) <= 0):
         ctx.fail("time", "output times must be positive and strictly increasing")
@@ -316,12 +475,14 @@ def _span(ctx, spec, bodies):
     if "span" in spec:
         span = ctx.quantity(spec["span"], "time", "time.span")
         if not span > 0:
-            ctx.fail("time.span", f"{spec['span']!r} must be positive")
+            ctx.fail("time.span", f"{show(spec['span'])} must be positive")
         return span
     periods = ctx.number(spec, "periods", "time.periods", low=0.0)
     orbiting = [b for b in bodies if b.orbit is not None]
     if periods <= 0 or not orbiting or orbiting[0].orbit.e >= 1:
         ctx.fail("time.periods", "needs a positive number and a first orbit that is an ellipse (e < 1)")
+    if periods > MAX_PERIODS:
+        ctx.fail("time.periods", f"{show(spec['periods'])} is more than {MAX_PERIODS} periods: too long a run")
     first = orbiting[0]
     mu = bodies[first.orbit.primary].gm + first.gm
     return periods * float(twobody.period(first.orbit.p, first.orbit.e, mu))

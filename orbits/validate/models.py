@@ -4,18 +4,25 @@ A model scene is an NBodyProblem in code units plus what the model predicts: pos
 times and, optionally, model-specific Measurements (a measured quantity against its prediction). The
 problems are built in orbits.validate.builders; this module registers them under scene names, so
 `orbits validate` runs them beside the data scenes of orbits/scenes/, and a TOML/JSON file can ask for one
-with `model = "<name>"` and a `[parameters]` table passed to the builder.
+with `model = "<name>"` and a `[parameters]` table passed to the builder. Every parameter is checked against
+PARAMETER_RULES (type and range, with upper bounds that keep a run bounded) before the builder runs.
 """
 
+import difflib
+import inspect
+import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
 
-from orbits.core.errors import SceneError
+from orbits.core import lagrange
+from orbits.core.errors import OrbitsError, SceneError
 from orbits.nbody import NBodyProblem
+from orbits.scene import MODEL_KEYS, show, unknown_keys
 from orbits.validate.builders import (
+    POINTS,
     expanding_sphere_problem,
     fitted_growth_rate,
     lagrange_test_particles_problem,
@@ -64,6 +71,9 @@ def _plan_model_scene(model: ModelScene) -> Plan:
 
 def _expanding_universe(n_shells=8, duration=20.0, outputs=40):
     """The notes' sphere of test shells (XXIV) expanding at the zero-energy speed about a unit mass."""
+    if outputs * (n_shells + 1) > MAX_STATES:
+        raise ParameterError(None, f"outputs x bodies = {outputs} x {n_shells + 1} = {outputs * (n_shells + 1)} "
+                             f"stored states, more than {MAX_STATES}: lower outputs or n_shells")
     start = time.perf_counter()
     problem, expected = expanding_sphere_problem(n_shells, duration=duration, n_times=outputs + 1)
     seconds = time.perf_counter() - start
@@ -130,9 +140,19 @@ def _lagrange_unstable(mass_ratio=None, points=("L1", "L2", "L3"), offset=1e-10,
     """Test particles `offset` off unstable points along the growing mode, until 1e-4: the fitted e-folding
     rate against the eigenvalue of the linearised motion."""
     mu = _earth_moon_mass_ratio() if mass_ratio is None else float(mass_ratio)
+    rates = dict(zip(POINTS, lagrange.growth_rates(mu), strict=True))
+    stable = [p for p in points if not rates[p] > 0.0]
+    if stable:
+        unstable = [p for p in POINTS if rates[p] > 0.0]
+        raise ParameterError("points", f"{stable[0]!r} is linearly stable at mu = {mu:.6g} and would not depart; "
+                             f"the unstable points there are {', '.join(unstable)}")
+    slowest = min(points, key=rates.get)
+    horizon = math.log(MAX_OFFSET / offset) / rates[slowest]
+    if not horizon <= MAX_HORIZON:
+        raise ParameterError(None, f"{slowest} departs at {rates[slowest]:.4g} / time unit at mu = {mu:.6g}: growing "
+                             f"from offset = {offset:g} to {MAX_OFFSET:g} takes t = {horizon:.4g} time units, more "
+                             f"than {MAX_HORIZON:.4g} ({MAX_PERIODS} binary periods); raise offset or mass_ratio")
     start = time.perf_counter()
-    _, probes = lagrange_test_particles_problem(mu, [1.0], list(points), offset)
-    horizon = max(np.log(1e-4 / offset) / p.growth_rate for p in probes)
     times = np.linspace(0.0, horizon, outputs + 1)[1:]
     problem, expectations = lagrange_test_particles_problem(mu, times, list(points), offset)
     seconds = time.perf_counter() - start
@@ -211,16 +231,170 @@ def builtin_names() -> list[str]:
     return sorted(MODELS)
 
 
-def build(name: str, parameters: dict[str, object] | None = None, source: str = "<scene>") -> ModelScene:
-    """The model scene `name` built with `parameters` (SceneError naming the source if unknown or invalid)."""
-    if name not in MODELS:
-        raise SceneError(f"{source}: model: unknown model {name!r}; known: {', '.join(builtin_names())}")
+# ---- parameters of a model scene ------------------------------------------------------------------------------
+MAX_OUTPUTS = 1_000_000
+#: outputs x bodies: the states one trajectory stores (positions alone take 24 bytes each)
+MAX_STATES = 10_000_000
+MAX_SHELLS = 1000
+#: code units; the shells then reach r ~ 1e4, and runs stay short (a millisecond per 1e5 time units)
+MAX_DURATION = 1e6
+#: binary periods (2 pi code units each) of a Lagrange-point run, and so the longest departure of unstable points
+MAX_PERIODS = 10_000
+MAX_HORIZON = 2 * math.pi * MAX_PERIODS
+#: the unstable points are followed until their deviation reaches this (units of the binary's separation)
+MAX_OFFSET = 1e-4
+#: below this (Sun-Earth is 3e-6) the secondary's Hill sphere shrinks towards the 1e-4 departure threshold
+MIN_MASS_RATIO = 1e-7
+#: a smaller offset is lost in the round-off (1e-16) of positions of order 1
+MIN_OFFSET = 1e-14
+
+
+class ParameterError(OrbitsError, ValueError):
+    """A model parameter, or a combination of them (`name` None), that the model cannot run."""
+
+    def __init__(self, name: str | None, message: str):
+        super().__init__(message)
+        self.name = name
+
+
+def _number(value: object) -> float | None:
+    """The float value of an int or float (bool refused: None); inf for an int too large for a float."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
+        return None
     try:
-        return MODELS[name](**(parameters or {}))
-    except TypeError as err:
+        return float(value)
+    except OverflowError:
+        return math.inf
+
+
+def _count(low: int, high: int, why: str = "") -> Callable[[object], int]:
+    """Rule of a count: an integer (bool refused) in [low, high]."""
+
+    def check(value):
+        if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+            raise ValueError(f"{show(value)} must be an integer in [{low}, {high}]")
+        if not low <= value <= high:
+            raise ValueError(f"{show(value)} is outside [{low}, {high}]{why}")
+        return int(value)
+
+    return check
+
+
+def _positive(high: float, unit: str, high_open: bool = False, low: float = 0.0) -> Callable[[object], float]:
+    """Rule of a duration, a number of periods or an offset: a finite number in (0, high], or [low, high] for
+    low > 0; high_open excludes high."""
+    allowed = f"{f'[{low:g}' if low > 0 else '(0'}, {high:g}{')' if high_open else ']'} {unit}"
+
+    def check(value):
+        x = _number(value)
+        if x is None:
+            raise ValueError(f"{show(value)} must be a number in {allowed}")
+        if not (x >= low if low > 0 else x > 0.0) or not (x < high if high_open else x <= high):
+            raise ValueError(f"{show(value)} is outside {allowed}")
+        return x
+
+    return check
+
+
+def _mass_ratio(value: object) -> float | None:
+    """Rule of a mass ratio mu = m / (M + m) in [MIN_MASS_RATIO, 0.5] (None: the Earth-Moon value)."""
+    if value is None:
+        return None
+    x = _number(value)
+    if x is None or not MIN_MASS_RATIO <= x <= 0.5:
+        raise ValueError(f"{show(value)} must be a number in [{MIN_MASS_RATIO:g}, 0.5]: mu = m / (M + m), m the "
+                         f"lighter of the pair")
+    return x
+
+
+def _points(value: object) -> tuple[str, ...]:
+    """Rule of a list of Lagrange points: a non-empty list of distinct names among L1 ... L5."""
+    allowed = ", ".join(POINTS)
+    if not isinstance(value, (list, tuple)) or not value:
+        raise ValueError(f'{show(value)} must be a non-empty list of Lagrange points like ["L1", "L2"]; '
+                         f"allowed: {allowed}")
+    for point in value:
+        if not isinstance(point, str) or point not in POINTS:
+            close = difflib.get_close_matches(str(point).upper(), POINTS, n=1)
+            hint = f" (did you mean {close[0]!r}?)" if close else ""
+            raise ValueError(f"{show(point)} is not a Lagrange point{hint}; allowed: {allowed}")
+    if len(set(value)) != len(value):
+        raise ValueError(f"{show(value)} names a point twice; give each point once")
+    return tuple(value)
+
+
+_OUTPUTS = _count(1, MAX_OUTPUTS)
+#: what each parameter of each model accepts (the names are those of the builder's signature)
+PARAMETER_RULES: dict[str, dict[str, Callable[[object], object]]] = {
+    "expanding_universe": {"n_shells": _count(1, MAX_SHELLS), "duration": _positive(MAX_DURATION, "time units"),
+                           "outputs": _OUTPUTS},
+    "lagrange_L4_L5": {"periods": _positive(MAX_PERIODS, "binary periods"), "outputs": _OUTPUTS},
+    "lagrange_unstable": {"mass_ratio": _mass_ratio, "points": _points,
+                          "offset": _positive(MAX_OFFSET, "(units of the separation)", high_open=True, low=MIN_OFFSET),
+                          "outputs": _OUTPUTS},
+    "lagrange_beyond_routh": {"outputs": _OUTPUTS},
+    **{f"ring_{n}": {"outputs": _count(10, MAX_OUTPUTS, ": the shape check needs outputs before a third of the "
+                                      "break-up time")} for n in range(3, 9)},
+}
+
+
+def parameters_of(name: str) -> tuple[str, ...]:
+    """The parameters the model scene `name` takes (those of its builder's signature)."""
+    return tuple(inspect.signature(MODELS[name]).parameters)
+
+
+def build(name: str, parameters: dict[str, object] | None = None, source: str = "<scene>") -> ModelScene:
+    """The model scene `name` built with `parameters`, each checked first against PARAMETER_RULES.
+
+    Every refusal is a SceneError naming the source and the field: an unknown model, an unknown parameter
+    (with the nearest and the allowed ones) or a value out of type or range.
+    """
+    if not isinstance(name, str) or name not in MODELS:
+        close = difflib.get_close_matches(str(name), builtin_names(), n=1)
+        hint = f" (did you mean {close[0]!r}?)" if close else ""
+        raise SceneError(f"{source}: model: unknown model {show(name)}{hint}; known: {', '.join(builtin_names())}")
+    allowed = parameters_of(name)
+    if parameters is None:
+        parameters = {}
+    if not isinstance(parameters, dict):
+        raise SceneError(f"{source}: parameters: {show(parameters)} must be a table of {name}'s parameters "
+                         f"({', '.join(allowed)})")
+    for key in parameters:
+        if key not in allowed:
+            close = difflib.get_close_matches(str(key), allowed, n=1)
+            hint = f"; did you mean {close[0]!r}?" if close else ";"
+            raise SceneError(f"{source}: parameters: unknown parameter {show(key)} of model {name!r}{hint} "
+                             f"allowed: {', '.join(allowed) or 'none'}")
+    checked = {}
+    for key, value in parameters.items():
+        try:
+            checked[key] = PARAMETER_RULES[name][key](value)
+        except ValueError as err:
+            raise SceneError(f"{source}: parameters.{key}: {err}") from None
+    try:
+        return MODELS[name](**checked)
+    except ParameterError as err:
+        raise SceneError(f"{source}: parameters{'.' + err.name if err.name else ''}: {err}") from None
+    except (OrbitsError, ValueError, TypeError) as err:  # a rule the table above missed: still one line
         raise SceneError(f"{source}: parameters: {err}") from None
 
 
 def from_dict(data: dict, source: str = "<scene>") -> ModelScene:
-    """The model scene a parsed scene file names with `model = "<name>"` and an optional `[parameters]` table."""
-    return build(data["model"], data.get("parameters", {}), source=source)
+    """The model scene a parsed scene file names with `model = "<name>"` and an optional `[parameters]` table.
+
+    The file may hold only MODEL_KEYS (name and description are accepted and, as ever, the model names the scene).
+    """
+    model = data.get("model")
+    known = isinstance(model, str) and model in MODELS
+    misplaced = {key: f"a parameter of {model}: put it under [parameters]" for key in parameters_of(model)} if known \
+        else {}
+    unknown_keys(data, MODEL_KEYS, "", source, misplaced)
+    if not isinstance(model, str):
+        raise SceneError(f"{source}: model: {show(model)} must be a string naming a model; "
+                         f"known: {', '.join(builtin_names())}")
+    for key in ("name", "description"):
+        if key in data and not isinstance(data[key], str):
+            raise SceneError(f"{source}: {key}: {show(data[key])} must be a string")
+    if "parameters" in data and not isinstance(data["parameters"], dict):
+        raise SceneError(f"{source}: parameters: {show(data['parameters'])} must be a table")
+    return build(model, data.get("parameters", {}), source=source)

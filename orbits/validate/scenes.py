@@ -8,13 +8,16 @@ output times plus the instants a check needs (t = T for a period, the periapsis 
 and measures what the scene asks for on each backend's trajectory.
 """
 
+import difflib
 import os
 import time
+from pathlib import Path
 
 import numpy as np
 
 from orbits import predict
 from orbits import scene as data_scenes
+from orbits.core.errors import SceneError
 from orbits.nbody import NBodyProblem
 from orbits.scene import Scene
 from orbits.validate import models
@@ -30,10 +33,26 @@ def load(name_or_path: str | os.PathLike[str]) -> "Scene | models.ModelScene":
     """A data Scene or a ModelScene from a built-in name or a .toml/.json file, read and parsed once."""
     if str(name_or_path) in models.MODELS:
         return models.build(str(name_or_path))
+    known = builtin_names()
+    if not str(name_or_path).strip():
+        raise SceneError(f"{str(name_or_path)!r}: empty scene name; give a built-in scene ({', '.join(known)}) "
+                         f"or a .toml / .json file")
+    if _looks_like_a_name(name_or_path) and str(name_or_path) not in known:
+        close = difflib.get_close_matches(str(name_or_path), known, n=1)
+        hint = f" (did you mean {close[0]!r}?)" if close else ""
+        raise SceneError(f"{name_or_path}: no such scene file, and not a built-in scene{hint}; built-in scenes: "
+                         f"{', '.join(known)}")
     data, source = data_scenes.read(name_or_path)
     if "model" in data:
         return models.from_dict(data, source)
     return data_scenes.from_dict(data, source)
+
+
+def _looks_like_a_name(name_or_path: str | os.PathLike[str]) -> bool:
+    """True for a bare word (no suffix, no folder) that names no existing file: meant as a built-in scene."""
+    text = str(name_or_path)
+    path = Path(text)
+    return not path.suffix and path.name == text and not path.exists()
 
 
 def code_units(scene: Scene) -> CodeUnits:
