@@ -5,7 +5,11 @@ Code units throughout: G = 1, so ``gm`` holds the masses. Nothing here imports r
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import operator
+import time
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 import numpy as np
@@ -122,3 +126,31 @@ class NBodyResult:
     settings: dict
     version: str
     time_mode: str
+
+
+# ---- progress of a running integration -------------------------------------------------------------------
+
+_progress: contextvars.ContextVar = contextvars.ContextVar("orbits_nbody_progress", default=None)
+
+
+@contextlib.contextmanager
+def reporting(callback: Callable[[float], None]) -> Iterator[None]:
+    """While inside, integrations report the fraction of the problem's time span done to `callback` (at most
+    ten times a second, and once at the end)."""
+    token = _progress.set((callback, [0.0]))
+    try:
+        yield
+    finally:
+        _progress.reset(token)
+
+
+def report(done: float, total: float) -> None:
+    """Called by the adapters as they go: tell the current `reporting` callback done / total (throttled)."""
+    hook = _progress.get()
+    if hook is None or total <= 0:
+        return
+    callback, last = hook
+    now = time.perf_counter()
+    if done >= total or now - last[0] >= 0.1:
+        last[0] = now
+        callback(min(1.0, float(done) / float(total)))

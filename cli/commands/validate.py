@@ -74,17 +74,31 @@ def _sweeper(address):
 
 
 def _run(validate, scenes, backend_names, show_progress):
+    """Run the validation; on a terminal, a live bar per scene that follows each integration as it goes."""
     if not show_progress:
         return validate(scenes, backend_names)
-    from rich.progress import Progress
+    from rich.progress import BarColumn, Progress, TaskProgressColumn, TextColumn, TimeElapsedColumn
 
-    with Progress(transient=True) as progress:
+    from orbits.nbody import reporting
+
+    columns = (TextColumn("{task.description}"), BarColumn(), TaskProgressColumn(), TimeElapsedColumn())
+    with Progress(*columns, transient=True) as progress:
         task = progress.add_task("validating", total=len(scenes))
         names = [scene.name for scene in scenes]
+        current = {"index": 0, "runs": 0, "last": 0.0}  # scene, backends finished in it, last fraction
 
         def advance(name):
-            progress.update(task, description=f"validating {name}", completed=names.index(name))
+            current.update(index=names.index(name), runs=0, last=0.0)
+            progress.update(task, description=f"validating {name}", completed=current["index"])
 
-        report = validate(scenes, backend_names, progress=advance)
+        def integrating(fraction):
+            if fraction < current["last"]:  # the next backend started
+                current["runs"] += 1
+            current["last"] = fraction
+            share = (current["runs"] + fraction) / max(1, len(backend_names))
+            progress.update(task, completed=current["index"] + min(1.0, share))
+
+        with reporting(integrating):
+            report = validate(scenes, backend_names, progress=advance)
         progress.update(task, completed=len(scenes))
     return report

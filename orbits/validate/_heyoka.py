@@ -24,7 +24,7 @@ import time
 import numpy as np
 
 from orbits.core.errors import OrbitDomainError
-from orbits.nbody import NBodyProblem, NBodyResult
+from orbits.nbody import NBodyProblem, NBodyResult, report
 
 COMPACT_MODE_MIN_BODIES = 4
 
@@ -66,7 +66,8 @@ def integrate(
     ta.state[:] = np.hstack([problem.positions, problem.velocities]).ravel().astype(dtype)
     ta.pars[:] = problem.gm[: problem.n_active].astype(dtype)
     start = time.perf_counter()
-    outcome, *_, states = ta.propagate_grid(grid, callback=_interruptible)
+    end = float(grid[-1])
+    outcome, *_, states = ta.propagate_grid(grid, callback=lambda ta: _interruptible(ta, end))
     wall_time = time.perf_counter() - start
     if outcome != heyoka.taylor_outcome.time_limit:
         raise RuntimeError(
@@ -96,9 +97,11 @@ def integrate(
     )
 
 
-def _interruptible(ta) -> bool:
-    """Called by heyoka after every step; being Python, it lets a pending Ctrl-C raise KeyboardInterrupt at once
-    (without it heyoka runs to the end of the grid first). About 5 us a step; it never stops the run itself."""
+def _interruptible(ta, end: float) -> bool:
+    """Called by heyoka after every step: reports progress, and, being Python, lets a pending Ctrl-C raise
+    KeyboardInterrupt at once (without it heyoka runs to the end of the grid first). About 5 us a step; it never
+    stops the run itself."""
+    report(float(ta.time), end)
     return True
 
 

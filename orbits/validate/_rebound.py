@@ -18,7 +18,7 @@ import time
 import numpy as np
 
 from orbits.core.errors import OrbitDomainError
-from orbits.nbody import NBodyProblem, NBodyResult
+from orbits.nbody import NBodyProblem, NBodyResult, report
 
 INTEGRATORS = ("ias15", "whfast", "bs")
 #: IAS15's step-size rules. PRS23 (the default) stalls on a ring of small bodies about a dominant central mass
@@ -167,6 +167,7 @@ def _run_ias15(sim, times: np.ndarray):
         sim.integrate(float(t), exact_finish_time=1)
         reached[k] = sim.t
         positions[k], velocities[k] = _snapshot(sim)
+        report(t, times[-1])
     return reached, positions, velocities, time.perf_counter() - start
 
 
@@ -194,4 +195,5 @@ def _run_whfast(sim, times: np.ndarray, dt: float):
         sim.steps(int(n - done))
         done = n
         positions[k], velocities[k] = _snapshot(sim)
+        report(n, counts[-1])
     return counts * float(dt), positions, velocities, time.perf_counter() - start

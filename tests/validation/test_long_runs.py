@@ -59,3 +59,15 @@ def test_the_nearest_output_time_is_found_by_bisection():
     found = _nearest(grid, times)
     assert np.all(np.abs(grid[found] - times) == np.abs(grid[brute] - times))
     assert list(_nearest(grid[:1], [5.0, -1.0])) == [0, 0]
+
+
+@pytest.mark.parametrize("backend", ["rebound", "heyoka"])
+def test_integrations_report_their_progress(backend):
+    """What the command line's live bar shows: fractions of the span that only grow and end at 1."""
+    from orbits.nbody import reporting
+
+    problem, _ = ring_problem(7, np.linspace(0, 2000 * np.pi, 400)[1:], 1000.0)
+    seen = []
+    with reporting(seen.append):
+        backends.integrate(backend, problem, **SETTINGS[backend])
+    assert seen[-1] == 1.0 and all(a <= b for a, b in zip(seen, seen[1:])) and 0 < seen[0] < 1
