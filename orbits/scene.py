@@ -476,6 +476,10 @@ def _span(ctx, spec, bodies):
         span = ctx.quantity(spec["span"], "time", "time.span")
         if not span > 0:
             ctx.fail("time.span", f"{show(spec['span'])} must be positive")
+        shortest = min((_period(b, bodies) for b in bodies if b.orbit is not None and b.orbit.e < 1), default=None)
+        if shortest is not None and span > MAX_PERIODS * shortest:
+            ctx.fail("time.span", f"{show(spec['span'])} is {span / shortest:.3g} periods of the fastest orbit "
+                                  f"({shortest:.6g} s); at most {MAX_PERIODS} are allowed: too long a run")
         return span
     periods = ctx.number(spec, "periods", "time.periods", low=0.0)
     orbiting = [b for b in bodies if b.orbit is not None]
@@ -483,6 +487,10 @@ def _span(ctx, spec, bodies):
         ctx.fail("time.periods", "needs a positive number and a first orbit that is an ellipse (e < 1)")
     if periods > MAX_PERIODS:
         ctx.fail("time.periods", f"{show(spec['periods'])} is more than {MAX_PERIODS} periods: too long a run")
-    first = orbiting[0]
-    mu = bodies[first.orbit.primary].gm + first.gm
-    return periods * float(twobody.period(first.orbit.p, first.orbit.e, mu))
+    return periods * _period(orbiting[0], bodies)
+
+
+def _period(body, bodies):
+    """T (s) of a body's relative orbit about its primary (an ellipse), mu = G (M_primary + m)."""
+    mu = bodies[body.orbit.primary].gm + body.gm
+    return float(twobody.period(body.orbit.p, body.orbit.e, mu))

@@ -71,3 +71,15 @@ def test_integrations_report_their_progress(backend):
     with reporting(seen.append):
         backends.integrate(backend, problem, **SETTINGS[backend])
     assert seen[-1] == 1.0 and all(a <= b for a, b in zip(seen, seen[1:])) and 0 < seen[0] < 1
+
+
+def test_a_span_of_more_than_a_million_periods_is_refused_at_load_time(tmp_path):
+    """A 90-minute orbit for 1e12 yr would run for days: refused before anything runs."""
+    from orbits.core.errors import SceneError
+    from orbits.scene import BUILTIN_DIR
+
+    source = (BUILTIN_DIR / "circular.toml").read_text()
+    path = tmp_path / "long.toml"
+    path.write_text(source.replace("periods = 100", 'span = "1e12 yr"').replace("outputs = 200", "outputs = 10"))
+    with pytest.raises(SceneError, match=r"time.span: '1e12 yr' is 5.\d+e\+15 periods of the fastest orbit"):
+        scenes.load(path)
