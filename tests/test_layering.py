@@ -20,8 +20,8 @@ import textwrap
 
 import pytest
 
-BASE = {"orbits.units", "orbits.constants", "orbits.inputs", "orbits.nbody", "orbits.io", "orbits.tables", "orbits.system",
-        "orbits.display"}
+BASE = {"orbits.units", "orbits.constants", "orbits.inputs", "orbits.nbody", "orbits.io", "orbits.tables",
+        "orbits.display", "orbits.system"}
 FACADE = "orbits"
 HEAVY = ("astropy", "rebound", "heyoka", "numba", "matplotlib", "dask", "distributed", "mpmath", "scipy")
 

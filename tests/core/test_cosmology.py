@@ -129,6 +129,55 @@ def test_eds_random_redshifts_within_4_ulp_past_and_future():
     assert worst_ulps(eds.comoving_distance(z, t_h), distances) <= EDS_ULPS
 
 
+#: Subnormal redshifts where the EdS lookback time and comoving distance miss 4 ulp (t_H = T_H, d_H = D_H), with
+#: the worst of the two measured: log1p(z) and 1.5 log1p(z) are then subnormal and keep only a few bits.
+EDS_SUBNORMAL_FAILURES = {1e-309: "27 ulp", 1e-310: "431 ulp", 1e-315: "2.8e7 ulp", 5e-324: "7.6e15 ulp (33 %)"}
+
+
+@pytest.mark.parametrize(
+    "z",
+    [2.2250738585072014e-308, 1e-308]
+    + [
+        pytest.param(
+            z,
+            marks=pytest.mark.xfail(
+                strict=True,
+                raises=AssertionError,
+                reason=f"EdS lookback and comoving distance lose bits at subnormal z (z = {z:g}: {ulps})",
+            ),
+        )
+        for z, ulps in EDS_SUBNORMAL_FAILURES.items()
+    ],
+)
+def test_eds_at_the_bottom_of_the_float_range(z):
+    """Within 4 ulp down to the smallest normal z, 2.2e-308, and 1e-308 (measured 0.33, 0.37 and 0.11 ulp for age,
+    lookback and distance); not at every z >= 0: below 1e-308 the subnormal z loses bits (xfail cases)."""
+    eds = Friedmann(1.0)
+    ages, lookbacks, distances = eds_references([z], T_H, D_H)
+    assert worst_ulps(eds.age(z, T_H), ages) <= EDS_ULPS
+    assert worst_ulps(eds.lookback_time(z, T_H), lookbacks) <= EDS_ULPS
+    assert worst_ulps(eds.comoving_distance(z, D_H), distances) <= EDS_ULPS
+
+
+def test_lambda_cdm_age_at_recombination_against_mpmath_and_astropy():
+    """Planck18's parameters with massless neutrinos (radiation Or0 = Ogamma0 + Onu0) at z = 1100: the age is
+    within 4e-15 of mpmath (measured 2.0e-16). astropy.cosmology integrates that age numerically and is not exact:
+    measured 5.2e-7 off (astropy 8.0.2; 1.4e-13 at z = 10), checked within a factor 10 either way so that a change
+    in astropy shows up here."""
+    import astropy.units as u
+    from astropy.cosmology import Planck18
+
+    planck = Planck18.clone(m_nu=0 * u.eV)
+    densities = (planck.Om0, planck.Ogamma0 + planck.Onu0, planck.Ok0, planck.Ode0)
+    t_h = planck.hubble_time.si.value
+    _, _, (age,) = quadrature_references(densities, [1100.0])
+    exact = age * mpmath.mpf(t_h)
+    ours = Friedmann(*densities).age(1100.0, t_h)
+    assert float(mpref.rel_error(ours, exact)) <= 4e-15
+    astropy_error = float(mpref.rel_error(planck.age(1100).si.value, exact))
+    assert 5.2e-8 <= astropy_error <= 5.2e-6, astropy_error
+
+
 def test_eds_at_infinite_and_zero_redshift():
     """z = inf: D_C = 2 c / H0 exactly, age 0, lookback = the age today; z = 0: all zero but the age."""
     eds = Friedmann(1.0)

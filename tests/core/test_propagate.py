@@ -1,62 +1,203 @@
-"""Universal-variable propagator against the mpmath reference, conservation laws and hard corners."""
+"""Universal-variable propagator against the mpmath reference (orbits.tools.reference), conservation laws and
+hard corners.
+
+Every comparison with mpmath runs on both paths, called directly: the compiled numba kernel (which must not defer
+to NumPy) and the NumPy implementation (what ORBITS_JIT=0, read once per process, selects).
+Position and velocity are bounded separately, each relative to the reference's own norm.
+"""
 
 import math
 
+import mpmath
 import mpref
 import numpy as np
 import pytest
 
 from orbits.core import elements
-from orbits.core.errors import DegenerateOrbitError, OrbitDomainError
-from orbits.core.propagate import propagate, stumpff
+from orbits.core.errors import ConvergenceError, DegenerateOrbitError, OrbitDomainError
+from orbits.core.propagate import _propagate_compiled, _propagate_numpy, propagate, stumpff
 
 MU_EARTH = 3.986004418e14
+EPS = 2.0**-52
+PATHS = ["compiled", "numpy"]
+
+#: Relative position error of the mpmath comparisons below, on either path (measured 1.1e-15 at most, on a
+#: near-parabolic orbit); over 1000 periods ELLIPTIC_POSITION_RTOL (measured 5.6e-16).
+POSITION_RTOL = 1e-14
+ELLIPTIC_POSITION_RTOL = 5e-15
+NEAR_PARABOLIC_VELOCITY_RTOL = 4e-14  # measured 3.7e-15 (1 - e = 1e-12, 1e4 time units)
+LONG_FLIGHT_VELOCITY_RTOL = 1.5e-13  # measured 1.4e-14
+HYPERBOLIC_VELOCITY_RTOL = 2e-15  # measured 1.9e-16 (positions 9.4e-16)
+EXTREME_SCALE_RTOL = 1e-14  # measured 8.7e-16 (positions, scale 1e30) and 6.7e-16 (velocities, 1e-30)
 
 
-def as_float(vector):
-    return np.array([float(x) for x in vector])
+def propagate_on(path, r0, v0, mu, dt):
+    """propagate on the compiled kernel ("compiled": it must not hand the state back to NumPy) or on the NumPy
+    implementation ("numpy", what ORBITS_JIT=0 runs)."""
+    if path == "numpy":
+        return _propagate_numpy(r0, v0, mu, dt)
+    pytest.importorskip("numba")
+    result = _propagate_compiled(r0, v0, mu, dt)
+    assert result is not None, "the compiled kernel deferred to the NumPy implementation"
+    return result
 
 
-def relative_state_error(r0, v0, mu, dt):
-    r, v = propagate(r0, v0, mu, dt)
-    r_ref, v_ref = (as_float(x) for x in mpref.propagate(r0, v0, mu, dt))
-    return max(np.linalg.norm(r - r_ref) / np.linalg.norm(r_ref), np.linalg.norm(v - v_ref) / np.linalg.norm(v_ref))
+def state_errors(path, r0, v0, mu, dt):
+    """(|r - r_ref| / |r_ref|, |v - v_ref| / |v_ref|) of propagate on `path` against mpmath. The differences are
+    taken in mpmath, so that a wildly wrong state (|r| ~ 1e262 m) gives a finite error instead of an overflow."""
+    r, v = propagate_on(path, r0, v0, mu, dt)
+    r_ref, v_ref = mpref.propagate(r0, v0, mu, dt)
+
+    def relative(x, ref):
+        return float(mpmath.norm([mpmath.mpf(float(a)) - b for a, b in zip(x, ref)]) / mpmath.norm(ref))
+
+    return relative(r, r_ref), relative(v, v_ref)
 
 
-@pytest.mark.parametrize("e", [0.0, 0.0167, 0.5, 0.9, 0.99])
-@pytest.mark.parametrize("periods", [0.37, -0.81, 1000.3])
-def test_elliptic_against_mpmath_over_1000_periods(e, periods):
-    p = 7.0e6 * (1 - e * e) / (1 - e * e) * 1.3
-    r0, v0 = elements.elements_to_state(p, e, 0.9, 1.1, 2.2, 0.3, MU_EARTH)
-    a = p / (1 - e * e)
-    dt = periods * 2 * math.pi * math.sqrt(a**3 / MU_EARTH)
-    assert relative_state_error(r0, v0, MU_EARTH, dt) <= 1e-12
+def elliptic_state(e, periods, nu=0.3):
+    """(r0, v0, dt): an orbit of semi-latus rectum 9.1e6 m about the Earth, dt = `periods` of its periods."""
+    p = 9.1e6
+    r0, v0 = elements.elements_to_state(p, e, 0.9, 1.1, 2.2, nu, MU_EARTH)
+    return r0, v0, periods * 2 * math.pi * math.sqrt((p / (1 - e * e)) ** 3 / MU_EARTH)
 
 
+@pytest.mark.parametrize("path", PATHS)
+@pytest.mark.parametrize("e", [0.0, 0.0167, 0.5, 0.9, 0.99, 0.999, 0.9999, 0.99999, 0.999999])
+@pytest.mark.parametrize("periods", [0.37, -0.81, 1000.3, -1000.3])
+def test_elliptic_against_mpmath_over_1000_periods(path, e, periods):
+    """Positions to 5e-15 relative (measured 5.6e-16 at most, both paths); velocities to 40 eps / sqrt(1 - e)
+    relative (measured at most 4.1 eps / sqrt(1 - e), at e = 0.0167; 4.1e-13 at e = 1 - 1e-6, 1.7e-13 at
+    e = 0.99999). The velocity is the f-and-g sum, which cancels where the speed is small, hence the
+    1 / sqrt(1 - e)."""
+    r0, v0, dt = elliptic_state(e, periods)
+    position, velocity = state_errors(path, r0, v0, MU_EARTH, dt)
+    assert position <= ELLIPTIC_POSITION_RTOL, position
+    assert velocity <= 40 * EPS / math.sqrt(1 - e), velocity
+
+
+@pytest.mark.parametrize("path", PATHS)
+@pytest.mark.parametrize("e", [0.999, 0.9999, 0.99999, 0.999999])
+@pytest.mark.parametrize("periods", [1000.5, -1000.5])
+def test_velocity_at_apoapsis_after_1000_periods_is_as_good_as_its_conditioning(path, e, periods):
+    """At apoapsis the speed is (1 - e) / (1 + e) of the periapsis speed: a relative change of eps in r0 or v0
+    moves it by about eps (1 + e) / (1 - e), so that is what any float64 propagator can promise there.
+    Measured: at most 0.67 eps (1 + e) / (1 - e) (1.3e-10 at e = 1 - 1e-6, 1.1e-11 at e = 0.99999), bound 7;
+    positions as over the whole orbit (measured 3.8e-16)."""
+    r0, v0, dt = elliptic_state(e, periods)
+    position, velocity = state_errors(path, r0, v0, MU_EARTH, dt)
+    assert position <= ELLIPTIC_POSITION_RTOL, position
+    assert velocity <= 7 * EPS * (1 + e) / (1 - e), velocity
+
+
+@pytest.mark.parametrize("path", PATHS)
 @pytest.mark.parametrize("one_minus_e", [1e-6, 1e-12, 0.0, -1e-12, -1e-6])
 @pytest.mark.parametrize("steps", [-3.0, 0.5, 5.0, 1e4])
-def test_near_parabolic_both_sides(one_minus_e, steps):
+def test_near_parabolic_both_sides(path, one_minus_e, steps):
     p = 1.4e7
     r0, v0 = elements.elements_to_state(p, 1 - one_minus_e, 0.4, 0.2, 0.1, -1.5, MU_EARTH)
     dt = steps * math.sqrt(p**3 / MU_EARTH)
-    assert relative_state_error(r0, v0, MU_EARTH, dt) <= 1e-12
+    position, velocity = state_errors(path, r0, v0, MU_EARTH, dt)
+    assert position <= POSITION_RTOL, position
+    assert velocity <= NEAR_PARABOLIC_VELOCITY_RTOL, velocity
 
 
-@pytest.mark.parametrize("e", [1.5, 5.0, 100.0])
-def test_hyperbolic(e):
+# issue 14: the NumPy propagator (ORBITS_JIT=0) fails on these long flights of near-parabolic hyperbolas, which the
+# compiled kernel gets right to 1e-14. (e - 1, dt [s]) -> the exception it raises (ConvergenceError: the universal
+# Kepler solve stops after 60 iterations), or AssertionError where it returns a wrong state (|r| ~ 1e209..1e262 m).
+NUMPY_FAILURES = {
+    (1e-7, 1e9): ConvergenceError,
+    (1e-7, -1e9): ConvergenceError,
+    (1e-6, 1e9): AssertionError,  # |r| = 5.6e262 m instead of 1.2e11 m
+    (1e-6, -1e9): AssertionError,
+    (1e-5, 1e8): ConvergenceError,
+    (1e-5, -1e8): ConvergenceError,
+    (1e-5, 1e9): AssertionError,  # |r| = 1.8e209 m
+    (1e-5, -1e9): AssertionError,
+    (1e-4, 1e8): AssertionError,  # |r| = 5.7e260 m instead of 2.7e10 m
+    (1e-4, -1e8): AssertionError,
+    (1e-3, 1e7): ConvergenceError,
+    (1e-3, -1e7): ConvergenceError,
+}
+HYPERBOLA_EXCESS = [1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2]
+LONG_FLIGHTS = [1e3, -1e3, 1e5, -1e5, 1e7, -1e7, 1e8, -1e8, 1e9, -1e9]
+
+
+def long_flight_cases():
+    for e_minus_one in HYPERBOLA_EXCESS:
+        for dt in LONG_FLIGHTS:
+            for path in PATHS:
+                failure = NUMPY_FAILURES.get((e_minus_one, dt)) if path == "numpy" else None
+                marks = []
+                if failure is not None:
+                    reason = (
+                        "issue 14: the NumPy propagator fails near-parabolic long flights "
+                        f"(e - 1 = {e_minus_one:g}, dt = {dt:g} s: {failure.__name__})"
+                    )
+                    marks = [pytest.mark.xfail(strict=True, raises=failure, reason=reason)]
+                yield pytest.param(path, e_minus_one, dt, marks=marks, id=f"{path}-{e_minus_one:g}-{dt:g}")
+
+
+@pytest.mark.parametrize("path, e_minus_one, dt", list(long_flight_cases()))
+def test_near_parabolic_hyperbolas_over_long_flights(path, e_minus_one, dt):
+    """e - 1 from 1e-7 to 1e-2, |dt| from 1e3 s (near periapsis) to 1e9 s (4e5 times sqrt(p**3 / mu), far out on
+    the asymptote). Measured on both paths, outside the NumPy failures: positions 8.4e-16, velocities
+    1.4e-14 (e - 1 = 1e-7, dt = 1e9 s, where the speed is nearly its limit at infinity and its conditioning large)."""
+    r0, v0 = elements.elements_to_state(1.4e7, 1 + e_minus_one, 0.4, 0.2, 0.1, -1.5, MU_EARTH)
+    position, velocity = state_errors(path, r0, v0, MU_EARTH, dt)
+    assert position <= POSITION_RTOL, position
+    assert velocity <= LONG_FLIGHT_VELOCITY_RTOL, velocity
+
+
+#: Hyperbolas started close to their outgoing asymptote (1 + e cos nu = 0.10 and 0.056; p = 1, mu = 1), propagated
+#: back through periapsis. Perturbing r0 and v0 by 1 ulp moves the exact position by 5.6e-15 and 8.9e-15, but
+#: both paths are off by 4.8e-13..6.3e-13 and 2.9e-12..3.3e-12 (the first is what HYPOTHESIS_PROFILE=thorough finds
+#: against tests/stability/test_properties.py; the second came from a random sweep of that property).
+NEAR_ASYMPTOTE = [
+    (3.75, 1.8125, 0.0, -6.0),
+    (4.917159047191641, 1.7636714398227258, 1.461125977417036, -23.081713280304694),
+]
+
+
+@pytest.mark.parametrize("path", PATHS)
+@pytest.mark.parametrize("e, nu, inc, dt", NEAR_ASYMPTOTE)
+@pytest.mark.xfail(
+    strict=True,
+    raises=AssertionError,
+    reason="the propagator loses digits on hyperbolas started near their asymptote (3e-12 vs 1e-14 conditioning)",
+)
+def test_hyperbola_started_near_its_asymptote(path, e, nu, inc, dt):
+    r0, v0 = elements.elements_to_state(1.0, e, inc, 0.3, 0.7, nu, 1.0)
+    position, velocity = state_errors(path, r0, v0, 1.0, dt)
+    assert position <= POSITION_RTOL, position
+
+
+def hyperbolic_cases():
+    for e in (1.5, 5.0, 100.0):
+        for dt in (1e3, -2e3, 1e7):
+            for path in PATHS:
+                marks = []
+                if path == "compiled" and (e, dt) == (100.0, 1e7):
+                    # the result of propagate is right (the NumPy fallback recomputes it); the kernel's own solve is not
+                    reason = "the compiled kernel's safeguarded solve hits its 60-iteration cap (e = 100, dt = 1e7 s)"
+                    marks = [pytest.mark.xfail(strict=True, raises=AssertionError, reason=reason)]
+                yield pytest.param(path, e, dt, marks=marks, id=f"{path}-{e:g}-{dt:g}")
+
+
+@pytest.mark.parametrize("path, e, dt", list(hyperbolic_cases()))
+def test_hyperbolic(path, e, dt):
     r0, v0 = elements.elements_to_state(2e7, e, 1.0, 0.0, 0.5, -0.5, MU_EARTH)
-    for dt in (1e3, -2e3, 1e7):
-        assert relative_state_error(r0, v0, MU_EARTH, dt) <= 1e-12
+    position, velocity = state_errors(path, r0, v0, MU_EARTH, dt)
+    assert position <= POSITION_RTOL, position
+    assert velocity <= HYPERBOLIC_VELOCITY_RTOL, velocity
 
 
+@pytest.mark.parametrize("path", PATHS)
 @pytest.mark.parametrize("scale", [1e-30, 1.0, 1e30])
-def test_extreme_scales(scale):  # EDGE 42: scale-free (mu scaled as L**3 keeps the time unit)
+def test_extreme_scales(path, scale):  # EDGE 42: scale-free (mu scaled as L**3 keeps the time unit)
     r0, v0 = np.array([1.0, 0.2, 0.1]) * scale, np.array([-0.2, 0.9, 0.3]) * scale
     mu = 1.1 * scale**3 if scale != 1e30 else 1.1e90
-    r, v = propagate(r0, v0, mu, 7.3)
-    r_ref, v_ref = propagate(r0 / scale, v0 / scale, 1.1, 7.3)
-    np.testing.assert_allclose(r / scale, r_ref, rtol=1e-14)
-    np.testing.assert_allclose(v / scale, v_ref, rtol=1e-14)
+    position, velocity = state_errors(path, r0, v0, mu, 7.3)
+    assert position <= EXTREME_SCALE_RTOL and velocity <= EXTREME_SCALE_RTOL, (position, velocity)
 
 
 def test_zero_step_returns_the_state_exactly():
@@ -71,13 +212,13 @@ def test_conserves_energy_angular_momentum_and_eccentricity_vector():
     r, v = propagate(r0, v0, MU_EARTH, dt)
     energy = 0.5 * np.sum(v * v, -1) - MU_EARTH / np.linalg.norm(r, axis=-1)
     e0 = 0.5 * v0 @ v0 - MU_EARTH / np.linalg.norm(r0)
-    assert np.max(np.abs(energy / e0 - 1)) <= 1e-13
+    assert np.max(np.abs(energy / e0 - 1)) <= 1e-14  # measured 1.3e-15
     h = np.cross(r, v)
-    assert np.max(np.abs(h - np.cross(r0, v0))) <= 1e-13 * np.linalg.norm(np.cross(r0, v0))
+    assert np.max(np.abs(h - np.cross(r0, v0))) <= 1e-14 * np.linalg.norm(np.cross(r0, v0))  # measured 1.3e-15
     assert (
         np.max(np.abs(elements.eccentricity_vector(r, v, MU_EARTH) - elements.eccentricity_vector(r0, v0, MU_EARTH)))
-        <= 1e-13
-    )
+        <= 1e-14
+    )  # measured 1.2e-15
 
 
 def test_forward_then_back_returns_home():
@@ -86,7 +227,7 @@ def test_forward_then_back_returns_home():
     r0, v0 = elements.elements_to_state(1e7, 0.3, 0.3, 0.1, 0.2, 0.1, MU_EARTH)
     r1, v1 = propagate(r0, v0, MU_EARTH, 3.4e4)
     r2, v2 = propagate(r1, v1, MU_EARTH, -3.4e4)
-    np.testing.assert_allclose(r2, r0, rtol=1e-13, atol=1e-13 * np.linalg.norm(r0))
+    np.testing.assert_allclose(r2, r0, rtol=1e-13, atol=1e-13 * np.linalg.norm(r0))  # measured 8.3e-15 of |r0|
 
 
 def test_broadcasting_over_states_and_times():
@@ -108,7 +249,7 @@ def test_stumpff_functions_against_their_definitions():
     for k, ck in enumerate((c0, c1, c2, c3)):
         ref = np.where(z > 0, pos[k], neg[k])
         far = np.abs(z) >= 0.7  # the naive forms are only trustworthy away from z = 0
-        np.testing.assert_allclose(ck[far], ref[far], rtol=1e-13)
+        np.testing.assert_allclose(ck[far], ref[far], rtol=2e-15)  # measured 2.2e-16
     np.testing.assert_allclose((c0[3], c1[3], c2[3], c3[3]), (1, 1, 0.5, 1 / 6), rtol=0)
 
 

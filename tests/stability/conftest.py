@@ -1,16 +1,16 @@
 """The stability suite records the worst error of each family and prints a summary at the end of the run."""
 
-import os
 
 import pytest
+import sizes
 
 WORST = {}
 
 
 @pytest.fixture
 def slow_scale():
-    """Size factor of the `slow` tests: ORBITS_SLOW_SCALE (default 0.05, CI's bounded form; 1 = full size)."""
-    return float(os.environ.get("ORBITS_SLOW_SCALE", "0.05"))
+    """Size factor of the `slow` tests (tests/sizes.py: ORBITS_SLOW_SCALE, 0.05 when unset, 1 = full size)."""
+    return sizes.slow_scale()
 
 
 @pytest.fixture

@@ -454,7 +454,7 @@ def test_row24_iteration_cap_raises_with_the_inputs_and_the_bracket(monkeypatch)
 
 @pytest.mark.parametrize("one_minus_e", [1e-6, 1e-9, 1e-12, 1e-14, -1e-14, -1e-12, -1e-9, -1e-6])
 def test_row40_near_parabolic_round_trip_uses_p(one_minus_e, record):
-    """Row 40 / issue 9: state -> elements -> state to 1e-12 relative down to |1 - e| = 1e-14."""
+    """Row 40 / issue 9: state -> elements -> state to 3e-14 relative down to |1 - e| = 1e-14 (measured 2.8e-15)."""
     e = 1 - one_minus_e
     worst = 0.0
     for nu in np.linspace(-2.5, 2.5, 11):
@@ -464,17 +464,21 @@ def test_row40_near_parabolic_round_trip_uses_p(one_minus_e, record):
         r2, v2 = elements.elements_to_state(*elements.state_to_elements(r, v, 1.0), 1.0)
         worst = max(worst, np.linalg.norm(r2 - r) / np.linalg.norm(r), np.linalg.norm(v2 - v) / np.linalg.norm(v))
     record("near-parabolic round trip (p as size element)", 11, worst, "relative")
-    assert worst <= 1e-12
+    assert worst <= 3e-14
 
 
-@pytest.mark.parametrize("scale", [2.0**-100, 2.0**100])
+@pytest.mark.parametrize("scale", [2.0**-100, 1.0, 2.0**100])
 def test_row42_extreme_scales(scale, record):
-    """Row 42: 8e-31 m and 1.3e30 m orbits propagate like the unit orbit, to 1e-15 relative. The scales are
-    powers of two, so the scaled inputs are exact and any difference is the propagator's own."""
-    r0, v0 = np.array([1.0, 0.2, 0.1]), np.array([-0.2, 0.9, 0.3])
+    """Row 42: 8e-31 m, 1 m and 1.3e30 m orbits (mu scaled as L**3, which keeps the time unit) against the mpmath
+    reference, to 7e-15 relative in position and velocity (measured 6.8e-16 and 5.4e-16 at every scale)."""
+    r0, v0 = np.array([1.0, 0.2, 0.1]) * scale, np.array([-0.2, 0.9, 0.3]) * scale
     mu = 1.1 * scale**3
-    r, v = propagate(r0 * scale, v0 * scale, mu, 7.3)
-    r_unit, v_unit = propagate(r0, v0, 1.1, 7.3)
-    worst = max(np.max(np.abs(r / scale / r_unit - 1)), np.max(np.abs(v / scale / v_unit - 1)))
-    record("extreme length scales (2**-100 m, 2**100 m)", 1, worst, "relative")
-    assert worst <= 1e-15
+    r, v = propagate(r0, v0, mu, 7.3)
+    r_ref, v_ref = reference.propagate(r0, v0, mu, 7.3)
+
+    def relative(x, ref):
+        return float(mpmath.norm([mpmath.mpf(float(a)) - b for a, b in zip(x, ref)]) / mpmath.norm(ref))
+
+    worst = max(relative(r, r_ref), relative(v, v_ref))
+    record("extreme length scales (2**-100 m .. 2**100 m) vs mpmath", 1, worst, "relative")
+    assert worst <= 7e-15

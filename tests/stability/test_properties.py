@@ -5,7 +5,7 @@ import math
 
 import astropy.units as u
 import numpy as np
-from hypothesis import given
+from hypothesis import assume, given
 from hypothesis import strategies as st
 
 from orbits import Orbit
@@ -17,8 +17,7 @@ eccentricity = st.one_of(st.floats(0, 0.99), st.floats(1.0 + 1e-9, 5.0))
 
 @given(e=eccentricity, nu=st.floats(-2.0, 2.0), inc=st.floats(0, math.pi), steps=st.floats(-50.0, 50.0))
 def test_energy_angular_momentum_and_lrl_are_conserved(e, nu, inc, steps):
-    if e > 1 and 1 + e * math.cos(nu) < 0.05:
-        return  # too close to the asymptote to start from
+    assume(not (e > 1 and 1 + e * math.cos(nu) < 0.05))  # too close to the asymptote to start from
     r0, v0 = elements.elements_to_state(1.0, e, inc, 0.3, 0.7, nu, 1.0)
     r, v = propagate(r0, v0, 1.0, steps)
     # Each invariant is measured against the size of the terms it is computed from at either end: far out on

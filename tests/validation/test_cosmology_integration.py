@@ -3,7 +3,8 @@
 A central mass (G M = 1, code units) and test-particle shells launched radially at the zero-energy speed
 sqrt(2 / r) must follow r(t) = (9 (t0 + tau)**2 / 2)**(1/3) and H = v / r = 2 / (3 (t0 + tau)), t0 = sqrt(2 r0**3 / 9)
 being each shell's time since its big bang. Radial orbits have h = 0; the integrators take them in their stride.
-Measured: positions within 1e-15 relative (heyoka, tol 1e-16) and 4e-16 (IAS15, epsilon 1e-9), H within 1e-15.
+Measured: positions within 9.7e-16 relative (heyoka, tol 1e-16) and 3.2e-16 (IAS15, epsilon 1e-9), H within
+8.9e-16 (heyoka) and 6.7e-16 (IAS15); each bound is about 10 times its figure.
 """
 
 import numpy as np
@@ -18,8 +19,11 @@ CONFIGS = {
     "heyoka": ("heyoka", {"tol": 1e-16, "high_accuracy": True}),
     "ias15": ("rebound", {"integrator": "ias15", "epsilon": 1e-9}),
 }
-POSITION_RTOL = 1e-14
-HUBBLE_RTOL = 1e-14
+#: (position, H) relative tolerances per configuration
+TOLERANCES = {
+    "heyoka": (1e-14, 1e-14),  # measured 9.7e-16, 8.9e-16
+    "ias15": (3e-15, 7e-15),  # measured 3.2e-16, 6.7e-16
+}
 
 
 @pytest.fixture(scope="module")
@@ -48,11 +52,12 @@ def test_integration_reproduces_r_of_t_and_the_hubble_parameter(scene, config):
     np.testing.assert_array_equal(result.times, problem.times)
     shells = result.positions[:, 1:]
     error = np.linalg.norm(shells - positions[:, 1:], axis=-1) / np.linalg.norm(positions[:, 1:], axis=-1)
-    assert error.max() <= POSITION_RTOL, error.max()
+    position_rtol, hubble_rtol = TOLERANCES[config]
+    assert error.max() <= position_rtol, error.max()
     r = np.linalg.norm(shells, axis=-1)
     hubble = np.sum(result.velocities[:, 1:] * shells, axis=-1) / r**2  # radial speed / r
     t = sphere_time(np.linalg.norm(problem.positions[1:], axis=-1), 1.0) + result.times[:, None]
-    np.testing.assert_allclose(hubble, 2.0 / (3.0 * t), rtol=HUBBLE_RTOL)
+    np.testing.assert_allclose(hubble, 2.0 / (3.0 * t), rtol=hubble_rtol)
     assert r[-1, 0] / r[0, 0] > 10  # the inner shell expanded more than tenfold
 
 

@@ -1,10 +1,10 @@
 """Scenes: loading and validation errors, analytic predictions, and cross-validation with both backends."""
 
 import json
-import os
 
 import numpy as np
 import pytest
+from sizes import slow_scale
 
 from orbits import predict, scene
 from orbits.core.errors import SceneError
@@ -68,7 +68,7 @@ def test_long_runs_1000_orbits(name, bound):
     from the origin, 55 times the orbit). Phase errors grow about quadratically in time, hence the
     (scale / 10)**2 factor; the e = 0.9 bound sits inside the 1e-7 at 1e4 periods that EDGE_CASES.md sets."""
     base = scene.load(name)
-    scale = 10 * float(os.environ.get("ORBITS_SLOW_SCALE", "1"))
+    scale = 10 * slow_scale()
     long = scene.Scene(base.name, base.description, base.bodies, base.times * scale, base.asks, base.tolerance)
     report = run.validate_scene(long)
     positions = [c for c in report.checks if c.quantity.startswith("positions")][0]
