@@ -29,7 +29,7 @@ def command(
     if not chosen:
         raise typer.BadParameter(f"--problem: no problem name contains {problem!r}")
     rows = precision.run(chosen, precision.methods(quick=quick))
-    data = {"target": target, "rows": [_without_nan(dataclasses.asdict(r)) for r in rows],
+    data = {"target": target, "rows": [dataclasses.asdict(r) for r in rows],
             "summary": precision.summary(rows, target)}
     text = render.dumps(data)
     if output:
@@ -42,8 +42,3 @@ def command(
         print(text)
     else:
         precision_tables(data)
-
-
-def _without_nan(row):
-    """JSON has no NaN: runs that were skipped get null error and time."""
-    return {k: None if isinstance(v, float) and v != v else v for k, v in row.items()}
