@@ -172,7 +172,9 @@ def _starter(tau, r0, sigma0, alpha, p):
     vallado, barker = _vallado_guess(tau, r0, sigma0, alpha), _barker_guess(tau, sigma0, p)
     f_v, df_v, _ = _universal_residual(vallado, tau, r0, sigma0, alpha)
     f_b, df_b, _ = _universal_residual(barker, tau, r0, sigma0, alpha)
-    return vallado if abs(f_v / df_v) < abs(f_b / df_b) else barker
+    step_v, step_b = abs(f_v / df_v), abs(f_b / df_b)
+    barker_better = np.isfinite(step_b) and not (step_v <= step_b)  # as propagate._starter
+    return barker if barker_better else vallado
 
 
 @jit
