@@ -14,15 +14,18 @@ modules they take constants from: numba checks only the file that defines a cach
 without it a change to a helper or a constant in another file would load stale machine code.
 
 Settings, read once per process:
-- ``ORBITS_JIT=0`` disables the compiled kernels; the float64 NumPy implementations (the same
-  algorithms, tested against the same mpmath references) run instead. They also run when numba is
-  not installed.
+- ``ORBITS_JIT`` chooses when the compiled kernels run: ``auto`` (the default) for Kepler batches of at least
+  AUTO_MIN_BATCH elements, so that a calculator query never imports numba, and for every propagation; ``1``
+  always; ``0`` never. The float64
+  NumPy implementations (tested against the same mpmath references) run otherwise, and when numba is not
+  installed.
 - ``ORBITS_NUM_THREADS`` caps the threads a large batch is split over (default: the cores this process
   may run on). The kernels release the GIL, and every element is computed independently, so the
   result does not depend on the split.
 """
 
 import hashlib
+import importlib.util
 import os
 import pickle
 import shutil
@@ -39,22 +42,59 @@ PARALLEL_MIN = 1 << 15
 #: Modules of orbits/core whose constants and helpers the kernels (orbits/core/_fast*.py) compile in.
 _KERNEL_DEPENDENCIES = ("kepler.py", "propagate.py", "_roots.py", "series.py")
 
-_state = {"enabled": None, "threads": None, "pool": None, "cache_dir": None}
+#: Kepler batches from this size on start the compiled kernels by themselves ("auto" mode); smaller ones, such as
+#: a calculator query, take the NumPy implementation (the same accuracy: tests/core/test_fast_kepler.py) and never
+#: import numba. The propagator runs its kernel at every size while its NumPy version is less accurate on
+#: hyperbolas (6.6e-15 against 1.3e-15 on tests/test_precision.py's flyby; issue 14).
+AUTO_MIN_BATCH = 1 << 16
+
+_state = {"mode": None, "threads": None, "pool": None, "cache_dir": None, "announced": set()}
+
+
+def _mode():
+    """"auto", True (always the kernels) or False (never): ORBITS_JIT (auto by default; 0 off, 1 always)."""
+    if _state["mode"] is None:
+        value = os.environ.get("ORBITS_JIT", "auto").strip().lower()
+        _state["mode"] = False if value in ("0", "false", "no", "off") else (True if value in ("1", "true", "yes", "on")
+                                                                             else "auto")
+    return _state["mode"]
+
+
+def _numba_installed():
+    return importlib.util.find_spec("numba") is not None
+
+
+def use(n):
+    """Whether a batch of n elements runs the compiled kernels: never with ORBITS_JIT=0 or without numba, always
+    with ORBITS_JIT=1 (or set_enabled(True)), and in the default "auto" mode from AUTO_MIN_BATCH elements on."""
+    mode = _mode()
+    if mode is False or (mode == "auto" and n < AUTO_MIN_BATCH):
+        return False
+    return _numba_installed() and _numba_imports()
 
 
 def enabled():
-    """Whether the compiled kernels are used: ORBITS_JIT is not 0 and numba imports (imported here)."""
-    if _state["enabled"] is None:
-        wanted = os.environ.get("ORBITS_JIT", "1").strip().lower() not in ("0", "false", "no", "off")
-        _state["enabled"] = wanted and _numba_imports()
-    return _state["enabled"]
+    """Whether the compiled kernels may run at all: ORBITS_JIT is not 0 and numba imports (imported here)."""
+    return _mode() is not False and _numba_installed() and _numba_imports()
 
 
 def set_enabled(flag):
-    """Use (True) or bypass (False) the compiled kernels from now on; returns the previous setting."""
-    previous = enabled()
-    _state["enabled"] = bool(flag) and _numba_imports()
+    """Use the compiled kernels always (True), never (False) or from AUTO_MIN_BATCH on ("auto"); returns the
+    previous mode, to restore it."""
+    previous = _mode()
+    _state["mode"] = flag if flag == "auto" else bool(flag)
     return previous
+
+
+def announce(module):
+    """Say once on stderr that the kernels of `module` compile now (nothing of them in the disk cache yet)."""
+    folder = cache_dir()
+    if module in _state["announced"]:
+        return
+    _state["announced"].add(module)
+    if folder is None or not any(Path(folder).rglob(f"{module}.*.nbi")):
+        print(f"orbits: compiling the {module.strip('_').replace('_', ' ')} kernels for this machine, once "
+              f"(a minute at most; later runs load them from {folder or 'memory'})", file=sys.stderr)
 
 
 def _numba_imports():
@@ -168,7 +208,7 @@ def _clear_corrupt_cache(err):
     folder = cache_dir()
     if folder:
         shutil.rmtree(folder, ignore_errors=True)
-    _state["enabled"] = False
+    _state["mode"] = False
     print(f"orbits: the compiled-kernel cache {folder} was unreadable ({type(err).__name__}); cleared it, the "
           f"next run compiles the kernels again", file=sys.stderr)
 

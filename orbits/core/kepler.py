@@ -129,13 +129,14 @@ def eccentric_anomaly(M: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     Accuracy: within 4 ulp of the exact root for e <= 1 - 2**-53 (tests/core/test_kepler.py).
     """
     M, e = np.broadcast_arrays(np.asarray(M, dtype=float), np.asarray(e, dtype=float))
-    if _fast.enabled():
+    if _fast.use(M.size):
         return _compiled("elliptic", _eccentric_anomaly_numpy, M, e)
     return _eccentric_anomaly_numpy(M, e)
 
 
 def _compiled(kernel, numpy_version, *inputs):
     """Run the compiled kernel of that name; on invalid or unconverged input, the NumPy version (which raises)."""
+    _fast.announce("_fast_kepler")
     from orbits.core import _fast_kepler
 
     # Writable C-contiguous inputs (copied only if needed): one array type per kernel, so numba compiles
@@ -189,7 +190,7 @@ def hyperbolic_anomaly(M: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     form H + log(e/2) + log1p(-exp(-2H)) = log(M + H).
     """
     M, e = np.broadcast_arrays(np.asarray(M, dtype=float), np.asarray(e, dtype=float))
-    if _fast.enabled():
+    if _fast.use(M.size):
         return _compiled("hyperbolic", _hyperbolic_anomaly_numpy, M, e)
     return _hyperbolic_anomaly_numpy(M, e)
 
@@ -263,7 +264,7 @@ def parabolic_anomaly(W: ArrayLike) -> float | np.ndarray:
     Odd in W; W = 0 gives 0 exactly; finite for every finite W.
     """
     W = np.asarray(W, dtype=float)
-    if _fast.enabled():
+    if _fast.use(W.size):
         return _compiled("parabolic", _parabolic_anomaly_numpy, W)
     return _parabolic_anomaly_numpy(W)
 

@@ -63,18 +63,19 @@ def hyperbolic_batch(rng, n):
 def test_compiled_and_numpy_agree_to_a_few_ulp():
     rng = np.random.default_rng(21)
     M, e = elliptic_batch(rng, 50_000)
-    compiled = kepler.eccentric_anomaly(M, e)
-    previous = _fast.set_enabled(False)
+    Mh, eh = hyperbolic_batch(rng, 20_000)
+    W = np.concatenate([10 ** rng.uniform(-300, 300, 20_000), -(10 ** rng.uniform(-5, 5, 20_000))])
+    results = {}
+    previous = _fast.set_enabled(True)
     try:
-        reference = kepler.eccentric_anomaly(M, e)
-        Mh, eh = hyperbolic_batch(rng, 20_000)
-        W = np.concatenate([10 ** rng.uniform(-300, 300, 20_000), -(10 ** rng.uniform(-5, 5, 20_000))])
-        reference_h, reference_d = kepler.hyperbolic_anomaly(Mh, eh), kepler.parabolic_anomaly(W)
+        for path in (True, False):  # the kernels at every batch size, then the NumPy implementation
+            _fast.set_enabled(path)
+            results[path] = (kepler.eccentric_anomaly(M, e), kepler.hyperbolic_anomaly(Mh, eh),
+                             kepler.parabolic_anomaly(W))
     finally:
         _fast.set_enabled(previous)
-    assert ulps_apart(compiled, reference) <= 4
-    assert ulps_apart(kepler.hyperbolic_anomaly(Mh, eh), reference_h) <= 4
-    assert ulps_apart(kepler.parabolic_anomaly(W), reference_d) <= 4
+    for compiled, reference in zip(results[True], results[False]):
+        assert ulps_apart(compiled, reference) <= 4
 
 
 @pytest.mark.parametrize("seed", [31, 32])
@@ -166,15 +167,29 @@ def test_orbits_jit_0_runs_numpy_without_numba():
     assert run_python(code, ORBITS_JIT="0").strip() == "False"
 
 
+def test_a_small_query_never_imports_numba_and_a_large_batch_compiles_once_with_a_word(tmp_path):
+    """The default ("auto"): a calculator query takes the NumPy path; a batch of AUTO_MIN_BATCH elements starts
+    the kernels, saying so once on stderr when nothing is cached yet."""
+    small = ("import sys; from orbits.core import kepler; kepler.eccentric_anomaly([0.1, 1.0], 0.5); "
+             "kepler.hyperbolic_anomaly(3.0, 2.0); kepler.parabolic_anomaly(1.0); print('numba' in sys.modules)")
+    assert run_python(small).strip() == "False"
+    large = ("import sys, numpy as np; from orbits.core import kepler, _fast; "
+             "kepler.eccentric_anomaly(np.linspace(0, 3, _fast.AUTO_MIN_BATCH), 0.5); print('numba' in sys.modules)")
+    result = subprocess.run([sys.executable, "-c", large], capture_output=True, text=True, check=True,
+                            env={**os.environ, "NUMBA_CACHE_DIR": str(tmp_path)})
+    assert result.stdout.strip() == "True"
+    assert [line for line in result.stderr.splitlines() if line.startswith("orbits: compiling")] != []
+
+
 def test_disk_cache_is_written_then_loaded(tmp_path):
     code = (
         "import json; from orbits.core import kepler, _fast, _fast_kepler; kepler.parabolic_anomaly(1.0); "
         "print(json.dumps([_fast.cache_dir(), sum(_fast_kepler.parabolic.stats.cache_hits.values())]))"
     )
-    folder, hits = json.loads(run_python(code, NUMBA_CACHE_DIR=str(tmp_path)))
+    folder, hits = json.loads(run_python(code, NUMBA_CACHE_DIR=str(tmp_path), ORBITS_JIT="1"))
     written = [name for _, _, names in os.walk(folder) for name in names]
     assert folder.startswith(str(tmp_path)) and any(name.startswith("_fast_kepler.parabolic") for name in written)
-    folder_again, hits_again = json.loads(run_python(code, NUMBA_CACHE_DIR=str(tmp_path)))
+    folder_again, hits_again = json.loads(run_python(code, NUMBA_CACHE_DIR=str(tmp_path), ORBITS_JIT="1"))
     assert hits == 0 and folder_again == folder and hits_again == 1
 
 

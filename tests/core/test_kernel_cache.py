@@ -15,7 +15,7 @@ SOLVE = ("import numpy as np; from orbits.core import kepler; "
 
 def solve(cache):
     result = subprocess.run([sys.executable, "-c", SOLVE], capture_output=True, text=True, timeout=600,
-                            env={**os.environ, "NUMBA_CACHE_DIR": str(cache), "ORBITS_JIT": "1"})
+                            env={**os.environ, "NUMBA_CACHE_DIR": str(cache), "ORBITS_JIT": "1"})  # kernels always
     assert result.returncode == 0, result.stderr
     return result.stdout.strip(), result.stderr
 
