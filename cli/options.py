@@ -61,6 +61,20 @@ PlotOption = Annotated[str | None, typer.Option(
 OutputOption = Annotated[str | None, typer.Option(
     "--output", callback=_writable("--output"), help="also write the JSON to this file (atomically)")]
 
+EpochOption = Annotated[str | None, typer.Option(
+    "--epoch", help="date: ISO ('2026-11-25', '2026-11-25T06:00') read as UTC, or with a scale ('... TDB', "
+    "'... TT'), or J2000")]
+
+
+class Ephemeris(StrEnum):
+    auto = "auto"
+    de421 = "de421"
+    builtin = "builtin"
+
+
+EphemerisOption = Annotated[Ephemeris, typer.Option(
+    "--ephemeris", help="auto: JPL DE421 when orbits[ephemeris] is installed, else astropy's built-in")]
+
 
 def save_plot(draw: "Callable[[], tuple[Figure, Axes]]", path: str) -> None:
     """Draw with `draw()` -> (fig, ax) on a non-interactive backend and save to `path` atomically."""

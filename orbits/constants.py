@@ -6,6 +6,7 @@ Heliocentric elements are the J2000 mean elements of Standish (1992), "Keplerian
 Approximate Positions of the Major Planets", Table 1 (ecliptic and equinox of J2000).
 """
 
+import difflib
 import math
 from dataclasses import dataclass
 
@@ -49,7 +50,13 @@ class MeanElements:
 
 @dataclass(frozen=True)
 class Body:
-    """A named body: GM (m3/s2), mass (kg), equatorial radius (m), sidereal rotation (s), each sourced."""
+    """A named body: GM (m3/s2), mass (kg), equatorial radius (m), sidereal rotation period (s), each sourced.
+
+    `parent` is the body it orbits (None for the Sun), `kind` one of KINDS, `j2` the unnormalised second zonal
+    harmonic at the reference radius `j2_radius` (m) where one is published, `orbit` J2000 mean elements where
+    the catalogue has them. A retrograde rotator (Venus, Uranus, Pluto, Triton's primary aside) has
+    `retrograde=True`; the period is always positive.
+    """
 
     name: str
     gm: float
@@ -57,6 +64,11 @@ class Body:
     rotation_period: float
     source: str
     orbit: MeanElements | None = None
+    parent: str | None = None
+    kind: str = "planet"
+    j2: float | None = None
+    j2_radius: float | None = None
+    retrograde: bool = False
 
     @property
     def mass(self) -> float:
@@ -64,77 +76,122 @@ class Body:
         return self.gm / G
 
 
+#: the kinds of body in the catalogue
+KINDS = ("star", "planet", "dwarf planet", "asteroid", "moon")
+
+_DAY = 86_400.0
+_KM = 1e3
+_KM3 = 1e9  # km3/s2 -> m3/s2
+
+_IAU2015 = "IAU 2015 Resolution B3 nominal value"
+_DE430 = "JPL DE430, Folkner et al. (2014), IPN Progress Report 42-196, Table 8"
+_WGCCRE = "IAU WGCCRE 2015, Archinal et al. (2018), Celest. Mech. Dyn. Astr. 130:22"
+_SSD_SAT = "JPL Solar System Dynamics, planetary satellite physical parameters (satellite ephemeris GMs)"
+_STANDISH = "Standish (1992) J2000 mean elements, Table 1 (valid 1800-2050)"
+
+
 def _deg(x):
     return math.radians(x)
 
 
-_STANDISH = "Standish (1992) J2000 mean elements, Table 1"
+def _standish(a_au, e, inc, mean_longitude, perihelion_longitude, node):
+    """Mean elements about the Sun from Standish's a (AU), e, I, L, long. perihelion and long. node (deg),
+    ecliptic and equinox of J2000: argp = varpi - Omega, M = L - varpi."""
+    return MeanElements("Sun", a_au * AU, e, _deg(inc), _deg(node % 360.0),
+                        _deg((perihelion_longitude - node) % 360.0), _deg((mean_longitude - perihelion_longitude) % 360.0),
+                        _STANDISH)
 
-BODIES = {
-    "Sun": Body(
-        "Sun",
-        1.3271244e20,
-        6.957e8,
-        25.38 * 86400.0,
-        "GM and radius: IAU 2015 Resolution B3 nominal values; rotation: Carrington period 25.38 d",
-    ),
-    "Earth": Body(
-        "Earth",
-        3.986004e14,
-        6.3781e6,
-        SIDEREAL_DAY,
-        "GM and equatorial radius: IAU 2015 Resolution B3 nominal values; rotation: IERS sidereal day",
-        MeanElements(
-            "Sun",
-            1.00000261 * AU,
-            0.01671123,
-            _deg(0.00001531),
-            _deg(180.0),
-            _deg(102.93768193 - 180.0 + 360.0),
-            _deg(100.46457166 - 102.93768193),
-            _STANDISH,
-        ),
-    ),
-    "Moon": Body(
-        "Moon",
-        4.9028000661e12,
-        1.7374e6,
-        27.321661 * 86400.0,
-        "GM: JPL DE421 (Folkner et al. 2008); radius and sidereal month: NASA Moon fact sheet",
-        MeanElements(
-            "Earth",
-            3.84399e8,
-            0.0549,
-            _deg(5.145),
-            0.0,
-            0.0,
-            0.0,
-            "NASA Moon fact sheet mean orbit (node and periapsis precess; set to 0)",
-        ),
-    ),
-    "Jupiter": Body(
-        "Jupiter",
-        1.2668653e17,
-        7.1492e7,
-        9.925 * 3600.0,
-        "GM and equatorial radius: IAU 2015 Resolution B3 nominal values; rotation: System III 9.925 h",
-        MeanElements(
-            "Sun",
-            5.20288700 * AU,
-            0.04838624,
-            _deg(1.30439695),
-            _deg(100.47390909),
-            _deg(14.72847983 - 100.47390909 + 360.0),
-            _deg(34.39644051 - 14.72847983),
-            _STANDISH,
-        ),
-    ),
-}
+
+def _planet(name, gm, gm_source, radius_km, rotation_days, rotation_source, orbit, *, j2=None, j2_radius_km=None,
+            j2_source="", retrograde=False, kind="planet"):
+    source = f"GM: {gm_source}; radius: {_WGCCRE if name != 'Earth' else _IAU2015}; rotation: {rotation_source}"
+    if j2 is not None:
+        source += f"; J2: {j2_source}"
+    return Body(name, gm, radius_km * _KM, rotation_days * _DAY, source, orbit, "Sun", kind, j2,
+                None if j2_radius_km is None else j2_radius_km * _KM, retrograde)
+
+
+def _moon(name, parent, gm_km3, radius_km, rotation_days, gm_source=_SSD_SAT, kind="moon"):
+    """A synchronously rotating moon (rotation period = orbital period), GM in km3/s2, mean radius in km."""
+    source = f"GM: {gm_source}; mean radius: {_WGCCRE}; rotation: synchronous, the sidereal orbital period"
+    return Body(name, gm_km3 * _KM3, radius_km * _KM, rotation_days * _DAY, source, None, parent, kind)
+
+
+_CATALOGUE = [
+    Body("Sun", 1.3271244e20, 6.957e8, 25.38 * _DAY,
+         f"GM and radius: {_IAU2015}; rotation: Carrington period 25.38 d", None, None, "star"),
+    _planet("Mercury", 22_031.78 * _KM3, _DE430, 2440.53, 58.6462, "WGCCRE 2015 (6.1385108 deg/d)",
+            _standish(0.38709927, 0.20563593, 7.00497902, 252.25032350, 77.45779628, 48.33076593)),
+    _planet("Venus", 324_858.592 * _KM3, _DE430, 6051.8, 243.0185, "WGCCRE 2015 (-1.4813688 deg/d)",
+            _standish(0.72333566, 0.00677672, 3.39467605, 181.97909950, 131.60246718, 76.67984255), retrograde=True),
+    Body("Earth", 3.986004e14, 6.3781e6, SIDEREAL_DAY,
+         f"GM and equatorial radius: {_IAU2015}; rotation: IERS sidereal day; J2: IERS Conventions (2010), Table 1.1",
+         MeanElements("Sun", 1.00000261 * AU, 0.01671123, _deg(0.00001531), _deg(180.0),
+                      _deg(102.93768193 - 180.0 + 360.0), _deg(100.46457166 - 102.93768193),
+                      _STANDISH + ", Earth-Moon barycentre (I = -0.00001531 deg written as +I with the node at 180)"),
+         "Sun", "planet", 1.0826359e-3, 6_378_136.6),
+    _planet("Mars", 42_828.375214 * _KM3, _DE430 + " (Mars system)", 3396.19, 1.02595676,
+            "WGCCRE 2015 (350.891982 deg/d)",
+            _standish(1.52371034, 0.09339410, 1.84969142, -4.55343205, -23.94362959, 49.55953891),
+            j2=1.95545e-3, j2_radius_km=3396.0, j2_source="Konopliv et al. (2016), MRO120D, Icarus 274"),
+    Body("Jupiter", 1.2668653e17, 7.1492e7, 9.925 * 3600.0,
+         f"GM and equatorial radius: {_IAU2015}; rotation: System III 9.925 h; J2: Iess et al. (2018), Nature 555",
+         _standish(5.20288700, 0.04838624, 1.30439695, 34.39644051, 14.72847983, 100.47390909),
+         "Sun", "planet", 14_696.572e-6, 71_492e3),
+    _planet("Saturn", 37_940_585.2 * _KM3, _DE430 + " (Saturn system)", 60268.0, 10.656222 / 24.0,
+            "WGCCRE 2015 System III (810.7939024 deg/d)",
+            _standish(9.53667594, 0.05386179, 2.48599187, 49.95424423, 92.59887831, 113.66242448),
+            j2=16_290.573e-6, j2_radius_km=60330.0, j2_source="Iess et al. (2019), Science 364"),
+    _planet("Uranus", 5_794_548.6 * _KM3, _DE430 + " (Uranus system)", 25559.0, 17.24 / 24.0,
+            "WGCCRE 2015 (-501.1600928 deg/d)",
+            _standish(19.18916464, 0.04725744, 0.77263783, 313.23810451, 170.95427630, 74.01692503),
+            retrograde=True),
+    _planet("Neptune", 6_836_527.10058 * _KM3, _DE430 + " (Neptune system)", 24764.0, 16.11 / 24.0,
+            "WGCCRE 2015 (536.3128492 deg/d)",
+            _standish(30.06992276, 0.00859048, 1.77004347, -55.12002969, 44.96476227, 131.78422574)),
+    _planet("Pluto", 977.0 * _KM3, _DE430 + " (Pluto-Charon system)", 1188.3, 6.3872273,
+            "WGCCRE 2015 (-56.3625225 deg/d)",
+            _standish(39.48211675, 0.24882730, 17.14001206, 238.92903833, 224.06891629, 110.30393684),
+            retrograde=True, kind="dwarf planet"),
+    Body("Ceres", 62.6284 * _KM3, 469.7e3, 9.074170 / 24.0 * _DAY,
+         f"GM: Park et al. (2016), Nature 537 (Dawn); mean radius and rotation (952.1532635 deg/d): {_WGCCRE}",
+         None, "Sun", "dwarf planet"),
+    Body("Vesta", 17.288245 * _KM3, 262.7e3, 5.342128 / 24.0 * _DAY,
+         f"GM: Konopliv et al. (2014), Icarus 240 (Dawn); mean radius and rotation (1617.3329428 deg/d): {_WGCCRE}",
+         None, "Sun", "asteroid"),
+    Body("Eris", 1.67e22 * G, 1163e3, 15.786 * _DAY,
+         "GM: G x mass 1.67e22 kg, Brown & Schaller (2007), Science 316; radius: Sicardy et al. (2011), Nature 478; "
+         "rotation: Szakats et al. (2023), A&A 669 (synchronous with Dysnomia)", None, "Sun", "dwarf planet"),
+    Body("Moon", 4.9028000661e12, 1.7374e6, 27.321661 * _DAY,
+         f"GM: {_DE430}; radius: {_WGCCRE}; rotation: synchronous, the sidereal month 27.321661 d",
+         MeanElements("Earth", 3.84399e8, 0.0549, _deg(5.145), 0.0, 0.0, 0.0,
+                      "NASA Moon fact sheet mean orbit (node and periapsis precess; set to 0)"),
+         "Earth", "moon"),
+    _moon("Phobos", "Mars", 7.087e-4, 11.08, 0.31891023),
+    _moon("Deimos", "Mars", 9.62e-5, 6.2, 1.26244),
+    _moon("Io", "Jupiter", 5959.916, 1821.49, 1.769137786),
+    _moon("Europa", "Jupiter", 3202.739, 1560.8, 3.551181041),
+    _moon("Ganymede", "Jupiter", 9887.834, 2631.2, 7.15455296),
+    _moon("Callisto", "Jupiter", 7179.289, 2410.3, 16.6890184),
+    _moon("Titan", "Saturn", 8978.1382, 2575.0, 15.945421),
+    _moon("Triton", "Neptune", 1427.598, 1352.6, 5.876854),
+    _moon("Charon", "Pluto", 105.88, 606.0, 6.3872273, gm_source="Brozovic et al. (2015), Icarus 246"),
+]
+
+#: the catalogue, by name: the Sun, the planets, dwarf planets and large asteroids, the Moon and major moons
+BODIES = {b.name: b for b in _CATALOGUE}
 
 
 def body(name: str) -> Body:
-    """The named body (case-insensitive); KeyError listing the known names otherwise."""
-    for key, value in BODIES.items():
-        if key.lower() == str(name).lower():
+    """The named body (case-insensitive); UnknownNameError (a KeyError) naming the close matches otherwise."""
+    key = str(name).strip().lower()
+    for known, value in BODIES.items():
+        if known.lower() == key:
             return value
-    raise UnknownNameError(f"unknown body {name!r}; known bodies: {', '.join(BODIES)}")
+    close = difflib.get_close_matches(key, [k.lower() for k in BODIES], n=3, cutoff=0.6)
+    hint = f"; did you mean {' or '.join(_by_lower(c) for c in close)}?" if close else ""
+    raise UnknownNameError(f"unknown body {name!r}{hint} (known bodies: {', '.join(BODIES)})")
+
+
+def _by_lower(lower: str) -> str:
+    return next(k for k in BODIES if k.lower() == lower)

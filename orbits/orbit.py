@@ -14,13 +14,14 @@ degenerate angles are those of orbits.core.elements.
 from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
+from typing import Any
 
 import astropy.units as u
 import numpy as np
 
 from orbits import display, inputs, units
 from orbits.constants import Body, body
-from orbits.core import anomalies, elements, propagate, twobody
+from orbits.core import anomalies, elements, frames, propagate, twobody
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
 
@@ -129,14 +130,21 @@ class Orbit(display.Displayed):
         return cls.from_elements(primary, p=radius, e=0.0, inc=inc, raan=raan, nu=nu, mass=mass)
 
     @classmethod
-    def from_body(cls, name: str) -> "Orbit":
-        """The catalogue body's J2000 mean orbit about its primary (orbits.constants), with the body's mass.
+    def from_body(cls, name: str, epoch: Any = None, *, source: str = "auto", scale: str = "utc") -> "Orbit":
+        """The catalogue body's orbit about its parent, with the body's mass, in the ecliptic frame of J2000.
 
-        The mean anomaly of the catalogue is turned into the true anomaly with Kepler's equation (solved once).
+        Without `epoch`: the J2000 mean orbit of the catalogue (orbits.constants; Standish's mean elements for
+        the planets), its mean anomaly turned into the true anomaly with Kepler's equation. With `epoch` (astropy
+        Time or ISO string, see orbits.ephemeris): the osculating two-body orbit through the ephemeris state
+        relative to the parent (the Sun for a planet, the Earth for the Moon), mu = G (M_parent + M_body).
+        DE421 gives Jupiter-Pluto as system barycentres, so theirs are the orbits of the barycentres.
         """
         target = body(name)
+        if epoch is not None:
+            return cls._osculating(target, epoch, source, scale)
         if target.orbit is None:
-            raise OrbitDomainError(f"{target.name} has no orbit in the catalogue; give its elements instead")
+            raise OrbitDomainError(f"{target.name} has no mean orbit in the catalogue; give an epoch (planets, Pluto "
+                                   f"and the Moon) or its elements")
         el = target.orbit
         return cls.from_elements(
             el.primary,
@@ -148,6 +156,18 @@ class Orbit(display.Displayed):
             nu=anomalies.true_from_mean(el.mean_anomaly, el.e) << units.RAD,
             mass=target.mass << units.KG,
         )
+
+    @classmethod
+    def _osculating(cls, target: Body, epoch: Any, source: str, scale: str) -> "Orbit":
+        from orbits import ephemeris
+
+        if target.parent is None:
+            raise OrbitDomainError(f"{target.name} orbits nothing in the catalogue")
+        seen = ephemeris.state(target.name, epoch, center=target.parent, source=source, scale=scale)
+        mu = (body(target.parent).gm + target.gm) << units.M3_PER_S2
+        r = frames.equatorial_to_ecliptic(seen.r_si) << units.M
+        v = frames.equatorial_to_ecliptic(seen.v_si) << units.M_PER_S
+        return cls.from_vectors(mu, r, v, mass=target.mass << units.KG)
 
     # ---- shape ----------------------------------------------------------------------------------
     @property

@@ -5,6 +5,9 @@ from typing import TYPE_CHECKING, Annotated
 import typer
 
 from orbits_cli.options import (
+    Ephemeris,
+    EphemerisOption,
+    EpochOption,
     Format,
     FormatOption,
     OnlyOption,
@@ -18,8 +21,11 @@ if TYPE_CHECKING:
 
 def command(
     body_name: Annotated[
-        str | None, typer.Argument(metavar="[BODY]", help="a named body (Earth, Moon, Jupiter): its mean orbit")
+        str | None, typer.Argument(metavar="[BODY]", help="a named body (Mars, Moon, ...): its J2000 mean orbit, "
+                                   "or with --epoch its osculating orbit from the ephemeris")
     ] = None,
+    epoch: EpochOption = None,
+    ephemeris: EphemerisOption = Ephemeris.auto,
     primary: Annotated[
         str | None, typer.Option(help="central body: name, mass ('5.97e24 kg') or GM ('3.986e14 m3/s2') [default: Sun]")
     ] = None,
@@ -44,13 +50,33 @@ def command(
     from orbits import inputs
     from orbits_cli import render
 
-    result, title = build(body_name, primary, a, p, q, e, inc, raan, argp, nu, r, v, mass)
+    if body_name is None and epoch is not None:
+        raise typer.BadParameter("--epoch needs a BODY: the osculating orbit of a planet, Pluto or the Moon")
+    if body_name is not None and epoch is not None:
+        result, title = at_epoch(body_name, epoch, ephemeris.value, [mass, primary, a, p, q, e, inc, raan, argp, nu, r])
+    else:
+        result, title = build(body_name, primary, a, p, q, e, inc, raan, argp, nu, r, v, mass)
     quantities = result.quantities(inputs.names(only))
     if plot:
         from orbits.plot import orbit_plane
 
         save_plot(lambda: orbit_plane(result), plot)
     render.emit(title, quantities, fmt.value)
+
+
+def at_epoch(body_name: str, epoch: str, source: str, others: list) -> "tuple[Orbit, str]":
+    """(the body's osculating orbit at `epoch`, title naming the ephemeris that answered)."""
+    from orbits import Orbit, body, ephemeris
+
+    if any(x is not None for x in others):
+        raise typer.BadParameter(f"with --epoch, {body_name}'s orbit comes from the ephemeris: drop the elements")
+    named = body(body_name)
+    when = ephemeris.epoch(epoch)
+    orbit = Orbit.from_body(named.name, when, source=source)
+    seen = ephemeris.state(named.name, when, named.parent, source=source)
+    title = (f"Osculating orbit of {seen.point} about the {named.parent}, {when.tdb.iso[:19]} TDB, ecliptic "
+             f"J2000; source: {seen.source}")
+    return orbit, title
 
 
 def build(
