@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import contextlib
 import contextvars
+import math
 import operator
 import time
 from collections.abc import Callable, Iterator
@@ -80,6 +81,10 @@ class NBodyProblem:
     velocities: np.ndarray
     n_active: int
     times: np.ndarray
+    #: the speed of light in code units to add body 0's first post-Newtonian (1PN) field on every other body,
+    #: in the single-dominant-mass form of Anderson et al. (1975) that REBOUNDx's "gr" effect implements; None for
+    #: Newtonian gravity alone
+    speed_of_light: float | None = None
 
     def __post_init__(self) -> None:
         """Validate and freeze every field; raise OrbitDomainError naming the offending value."""
@@ -101,6 +106,14 @@ class NBodyProblem:
         object.__setattr__(self, "velocities", _frozen_float_array("velocities", self.velocities, (n, 3)))
         object.__setattr__(self, "n_active", n_active)
         object.__setattr__(self, "times", times)
+        if self.speed_of_light is not None:
+            c = self.speed_of_light
+            if isinstance(c, bool) or not isinstance(c, (int, float, np.floating)) or not (math.isfinite(c) and c > 0):
+                raise OrbitDomainError(f"speed_of_light = {c!r} must be a finite number > 0 (code units) or None")
+            if n_active != n:
+                raise OrbitDomainError("the post-Newtonian term needs every body massive (n_active = N): "
+                                       f"n_active = {n_active}, N = {n}")
+            object.__setattr__(self, "speed_of_light", float(c))
 
     @property
     def n_bodies(self) -> int:

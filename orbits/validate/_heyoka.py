@@ -53,7 +53,8 @@ def integrate(
         raise OrbitDomainError(f"fp_type = {fp_type!r} is not offered; choose one of {sorted(FP_TYPES)}")
     _follow_cache_dir(heyoka)
     compact_mode = problem.n_bodies >= COMPACT_MODE_MIN_BODIES
-    key = (problem.n_bodies, problem.n_active, float(tol), bool(high_accuracy), compact_mode, fp_type)
+    post_newtonian = problem.speed_of_light is not None
+    key = (problem.n_bodies, problem.n_active, float(tol), bool(high_accuracy), compact_mode, fp_type, post_newtonian)
     start = time.perf_counter()
     cache_hit = key in _CACHE
     if not cache_hit:
@@ -64,7 +65,10 @@ def integrate(
     dtype = FP_TYPES[fp_type]
     grid = grid.astype(dtype)
     ta.state[:] = np.hstack([problem.positions, problem.velocities]).ravel().astype(dtype)
-    ta.pars[:] = problem.gm[: problem.n_active].astype(dtype)
+    pars = problem.gm[: problem.n_active]
+    if post_newtonian:
+        pars = np.append(pars, 1.0 / problem.speed_of_light**2)
+    ta.pars[:] = pars.astype(dtype)
     start = time.perf_counter()
     end = float(grid[-1])
     outcome, *_, states = ta.propagate_grid(grid, callback=lambda ta: _interruptible(ta, end))
@@ -83,6 +87,9 @@ def integrate(
         "fp_type": fp_type,
         "cache_hit": cache_hit,
     }
+    if post_newtonian:
+        settings.update(post_newtonian="REBOUNDx gr form (Anderson et al. 1975) to O(1/c^2), source body 0",
+                        speed_of_light=problem.speed_of_light)
     return NBodyResult(
         backend="heyoka",
         integrator="taylor_adaptive",
@@ -117,20 +124,87 @@ def _follow_cache_dir(heyoka) -> None:
         heyoka.llvm_state.set_diskcache_path(path)
 
 
-def _compile(heyoka, n_bodies, n_active, tol, high_accuracy, compact_mode, fp_type):
-    """Build the G = 1 N-body Taylor integrator whose active masses are runtime parameters par[0..n_active)."""
+def _compile(heyoka, n_bodies, n_active, tol, high_accuracy, compact_mode, fp_type, post_newtonian):
+    """Build the G = 1 N-body Taylor integrator whose active masses are runtime parameters par[0..n_active)
+    (and, with the post-Newtonian term, 1 / c**2 in par[n_active])."""
     dtype = FP_TYPES[fp_type]
     masses = [heyoka.par[i] for i in range(n_active)]
     system = heyoka.model.nbody(n_bodies, masses=masses, Gconst=1.0)
+    if post_newtonian:
+        system = _with_post_newtonian(system, masses, heyoka.par[n_active])
     return heyoka.taylor_adaptive(
         system,
         np.zeros(6 * n_bodies, dtype=dtype),
-        pars=np.zeros(n_active, dtype=dtype),
+        pars=np.zeros(n_active + post_newtonian, dtype=dtype),
         tol=dtype(tol),
         high_accuracy=high_accuracy,
         compact_mode=compact_mode,
         fp_type=dtype,
     )
+
+
+def _with_post_newtonian(system: list, masses: list, inverse_c2) -> list:
+    """Add body 0's 1PN field to the Newtonian equations, as REBOUNDx's "gr" effect does: in Jacobi coordinates
+    (r, v, a: each body relative to the barycentre of those before it; a the Newtonian acceleration), body i >= 1
+    gets  g = B r - A a - D v  with mu = G m_0,
+        A = (v**2 / 2 + 3 mu / r) / c**2,   B = (mu / r - 3 v**2 / 2) mu / (r**3 c**2),
+        D = (v . a - 3 mu (r . v) / r**3) / c**2,
+    and the Jacobi accelerations go back to inertial ones with the barycentre unaccelerated. REBOUNDx solves
+    v_canonical = v / (1 - A) by iteration and keeps the O(1/c**4) products; they change g by 1e-8 of itself
+    in the solar system, below 1e-16 of the Newtonian acceleration."""
+    n = len(system) // 6
+    position = [[system[6 * i + k][0] for k in range(3)] for i in range(n)]
+    velocity = [[system[6 * i + 3 + k][0] for k in range(3)] for i in range(n)]
+    newton = [[system[6 * i + 3 + k][1] for k in range(3)] for i in range(n)]
+    r_j, v_j, a_j = (_to_jacobi(x, masses) for x in (position, velocity, newton))
+    mu = masses[0]
+    g_j = [[0.0, 0.0, 0.0]]
+    for r, v, a in zip(r_j[1:], v_j[1:], a_j[1:]):
+        rr = _dot(r, r) ** 0.5
+        v2, rv, va = _dot(v, v), _dot(r, v), _dot(v, a)
+        big_a = (0.5 * v2 + 3.0 * mu / rr) * inverse_c2
+        big_b = (mu / rr - 1.5 * v2) * mu / rr**3 * inverse_c2
+        big_d = (va - 3.0 * mu * rv / rr**3) * inverse_c2
+        g_j.append([big_b * r[k] - big_a * a[k] - big_d * v[k] for k in range(3)])
+    g = _from_jacobi(g_j, masses)
+    out = list(system)
+    for i in range(n):
+        for k in range(3):
+            var, rhs = system[6 * i + 3 + k]
+            out[6 * i + 3 + k] = (var, rhs + g[i][k])
+    return out
+
+
+def _dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def _to_jacobi(x: list, masses: list) -> list:
+    """Jacobi vectors: x_j[0] the barycentre, x_j[i] = x[i] - (barycentre of bodies 0..i-1)."""
+    total, centre = masses[0], list(x[0])
+    out = [None]
+    for i in range(1, len(x)):
+        out.append([x[i][k] - centre[k] for k in range(3)])
+        new_total = total + masses[i]
+        centre = [(total * centre[k] + masses[i] * x[i][k]) / new_total for k in range(3)]
+        total = new_total
+    out[0] = centre
+    return out
+
+
+def _from_jacobi(x_j: list, masses: list) -> list:
+    """Inverse of _to_jacobi: from the last body down, R_(i-1) = R_i - (m_i / M_i) x_j[i], x[i] = R_(i-1) + x_j[i]."""
+    totals = [masses[0]]
+    for m in masses[1:]:
+        totals.append(totals[-1] + m)
+    centre = list(x_j[0])
+    out = [None] * len(x_j)
+    for i in range(len(x_j) - 1, 0, -1):
+        previous = [centre[k] - masses[i] / totals[i] * x_j[i][k] for k in range(3)]
+        out[i] = [previous[k] + x_j[i][k] for k in range(3)]
+        centre = previous
+    out[0] = centre
+    return out
 
 
 def _grid(times: np.ndarray) -> tuple[np.ndarray, int]:

@@ -46,6 +46,7 @@ def integrate(
         )
     start = time.perf_counter()
     sim = _simulation(rebound, problem)
+    extras = _post_newtonian(sim, problem, integrator)  # kept alive while the simulation runs
     if integrator in ("ias15", "bs"):
         if dt is not None:
             raise OrbitDomainError(f"dt = {dt} is a WHFast setting; {integrator} chooses its own steps (pass dt=None)")
@@ -65,6 +66,8 @@ def integrate(
             "steps x dt: sim.steps(n) to the step count n nearest each requested time; times are "
             "n * dt, not the drifting sim.t"
         )
+    if extras is not None:
+        settings = {**settings, **extras[1]}
     return NBodyResult(
         backend="rebound",
         integrator=integrator,
@@ -89,6 +92,28 @@ def _simulation(rebound, problem: NBodyProblem):
         sim.N_active = problem.n_active
         sim.testparticle_type = 0
     return sim
+
+
+def _post_newtonian(sim, problem: NBodyProblem, integrator: str):
+    """Attach REBOUNDx's "gr" effect (body 0's 1PN field, Anderson et al. 1975) when the problem asks for it;
+    return (the REBOUNDx extras, their settings) or None."""
+    if problem.speed_of_light is None:
+        return None
+    if integrator == "whfast":
+        raise OrbitDomainError("the post-Newtonian term is velocity dependent: integrate it with ias15 or bs, "
+                               "not whfast")
+    try:
+        import reboundx
+    except ImportError:
+        raise OrbitDomainError("the post-Newtonian term needs REBOUNDx: pip install reboundx "
+                               "(it comes with orbits[ephemeris])") from None
+    extras = reboundx.Extras(sim)
+    gr = extras.load_force("gr")
+    extras.add_force(gr)
+    gr.params["c"] = problem.speed_of_light
+    sim.particles[0].params["gr_source"] = 1
+    return extras, {"post_newtonian": "REBOUNDx gr, source body 0", "speed_of_light": problem.speed_of_light,
+                    "reboundx": reboundx.__version__}
 
 
 def _configure_ias15(sim, epsilon: float, adaptive_mode: str = "PRS23") -> dict:

@@ -229,3 +229,89 @@ def _count(value, name, minimum):
     if isinstance(value, bool) or count < minimum:
         raise OrbitDomainError(f"{name} = {value!r} is outside the allowed range [{minimum}, inf) (an integer)")
     return count
+
+
+# ---- the solar system from the ephemeris -----------------------------------------------------------------------
+#: the bodies of the solar_system scene, each a DE421 point with its DE430 GM
+SOLAR_SYSTEM = ("Sun", "Mercury", "Venus", "Earth", "Moon", "Mars", "Jupiter", "Saturn", "Uranus", "Neptune", "Pluto")
+AU = 149_597_870_700.0
+DAY = 86_400.0
+#: Mercury's perihelion advance by general relativity (arcsec per Julian century): 6 pi G M / (c**2 a (1 - e**2))
+#: per orbit, 42.98 arcsec/century (Clemence 1947; Will, Living Rev. Relativ. 17, 4, 2014)
+MERCURY_GR_ADVANCE = 42.98
+
+
+@dataclass(frozen=True, eq=False)
+class SolarSystemExpectation:
+    """What DE421 says the solar_system problem should do: positions (m) of every body at the output times
+    (heliocentric for the planets, geocentric for the Moon, barycentric for the Sun), and the osculating
+    heliocentric eccentricity vector of Mercury at the last output."""
+
+    names: tuple[str, ...]
+    relative: np.ndarray  # (K, N, 3) m: body minus its reference point (the Sun, the Earth or the barycentre)
+    mercury_eccentricity: np.ndarray  # (3,)
+    mercury_normal: np.ndarray  # (3,) unit orbit normal at the last output
+    years: float
+
+    def relative_positions(self, positions: np.ndarray) -> np.ndarray:
+        """(K, N, 3) m: each body relative to its reference point, from barycentric positions in metres."""
+        return _relative(positions, self.names)
+
+    def perihelion_lag(self, positions: np.ndarray, velocities: np.ndarray, gm_sun_mercury: float) -> float:
+        """Angle (arcsec) by which the integrated perihelion of Mercury trails DE421's at the last output (> 0:
+        the integration's perihelion is behind)."""
+        i, sun = self.names.index("Mercury"), self.names.index("Sun")
+        e = _eccentricity_vector(positions[-1, i] - positions[-1, sun], velocities[-1, i] - velocities[-1, sun],
+                                 gm_sun_mercury)
+        turn = np.cross(e, self.mercury_eccentricity) @ self.mercury_normal
+        return math.degrees(math.atan2(turn, e @ self.mercury_eccentricity)) * 3600.0
+
+
+def _relative(positions, names):
+    out = np.array(positions, dtype=float)
+    sun, earth = names.index("Sun"), names.index("Earth")
+    for i, name in enumerate(names):
+        if name == "Moon":
+            out[..., i, :] = positions[..., i, :] - positions[..., earth, :]
+        elif name != "Sun":
+            out[..., i, :] = positions[..., i, :] - positions[..., sun, :]
+    return out
+
+
+def _eccentricity_vector(r, v, mu):
+    """e = ((v**2 - mu/r) r - (r . v) v) / mu."""
+    return ((v @ v - mu / np.linalg.norm(r)) * r - (r @ v) * v) / mu
+
+
+def solar_system_problem(epoch, years: float, post_newtonian: bool, outputs: int):
+    """The Sun, the planets (Jupiter-Pluto as system barycentres), the Earth and the Moon from DE421 at `epoch`,
+    with DE430 GMs, in code units of 1 AU and GM_Sun (time unit 58.13 d), output `outputs` times evenly over
+    `years` Julian years; with `post_newtonian`, the Sun's 1PN field (speed_of_light in code units).
+
+    Returns (NBodyProblem, SolarSystemExpectation, CodeUnits-like (length, gm)).
+    """
+    import astropy.units as u
+
+    from orbits import ephemeris
+
+    when = ephemeris.epoch(epoch, scale="tdb")
+    gm_sun = ephemeris.DE430_GM["Sun"]
+    time_unit = math.sqrt(AU**3 / gm_sun)
+    speed_unit = AU / time_unit
+    times = np.linspace(0.0, years * 365.25 * DAY, outputs + 1)[1:]
+    start = ephemeris.states(SOLAR_SYSTEM, when, source="de421")
+    later = ephemeris.states(SOLAR_SYSTEM, when + times * u.s, source="de421")
+    positions = np.array([start[n].r_si for n in SOLAR_SYSTEM]) / AU
+    velocities = np.array([start[n].v_si for n in SOLAR_SYSTEM]) / speed_unit
+    gm = np.array([ephemeris.DE430_GM[n] for n in SOLAR_SYSTEM]) / gm_sun
+    c = 299_792_458.0 / speed_unit if post_newtonian else None
+    problem = NBodyProblem(gm, positions, velocities, len(SOLAR_SYSTEM), times / time_unit, c)
+    barycentric = np.stack([later[n].r_si for n in SOLAR_SYSTEM], axis=1)  # (K, N, 3) m
+    mercury = later["Mercury"].r_si[-1] - later["Sun"].r_si[-1]
+    mercury_v = later["Mercury"].v_si[-1] - later["Sun"].v_si[-1]
+    normal = np.cross(mercury, mercury_v)
+    expectation = SolarSystemExpectation(
+        SOLAR_SYSTEM, _relative(barycentric, SOLAR_SYSTEM),
+        _eccentricity_vector(mercury, mercury_v, gm_sun + ephemeris.DE430_GM["Mercury"]),
+        normal / np.linalg.norm(normal), years)
+    return problem, expectation, (AU, gm_sun)

@@ -87,7 +87,8 @@ class Plan:
 
     `problem` is posed in code units; `residuals(trajectory)` gives the (K,) position error at `residual_times`
     relative to the scene's length scale (None when positions are not predicted); `measure(trajectory)` gives the
-    scene's other Measurements, in the same order for every backend.
+    scene's other Measurements, in the same order for every backend; `agreement_tolerance` asks for the
+    backends' mutual agreement to be checked too.
     """
 
     name: str
@@ -99,6 +100,9 @@ class Plan:
     residuals: Callable[[Trajectory], np.ndarray] | None
     measure: Callable[[Trajectory], list[Measurement]]
     positions_tolerance: float
+    #: when set, the backends' trajectories are also compared with each other: the largest |r_a - r_b| / |r_b|
+    #: of any body at any output must stay below it
+    agreement_tolerance: float | None = None
 
 
 @functools.singledispatch

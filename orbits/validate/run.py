@@ -140,6 +140,8 @@ def validate_scene(
                             "relative error"))
     if trajectories:
         checks.extend(_gather({name: the_plan.measure(t) for name, t in trajectories.items()}))
+    if the_plan.agreement_tolerance is not None and len(trajectories) >= 2:
+        checks.append(_agreement(trajectories, the_plan.agreement_tolerance))
     return SceneReport(
         name=the_plan.name, description=the_plan.description, checks=checks,
         wall_times={"analytic": the_plan.predict_seconds, **{n: r.wall_time for n, r in results.items()},
@@ -158,6 +160,18 @@ def _failed_run(name: str, reason: str, backend_names: Sequence[str]) -> Check:
     """A failed check saying why backend `name` gave no trajectory (the other backends' columns read 0)."""
     errors = {n: (math.inf if n == name else 0.0) for n in backend_names}
     return Check(f"{name} integration failed: {reason}", "", None, errors, errors, 0.0, "absolute drift")
+
+
+def _agreement(trajectories: dict, tolerance: float) -> Check:
+    """The backends' mutual agreement: the largest |r_a - r_b| / |r_b| of any body at any output, between each
+    backend and the first; each backend's column holds the same figure."""
+    names = list(trajectories)
+    first = trajectories[names[0]].positions
+    worst = max(float(np.max(np.linalg.norm(trajectories[n].positions - first, axis=-1)
+                             / np.linalg.norm(first, axis=-1))) for n in names[1:])
+    errors = {n: worst for n in names}
+    return Check(f"mutual agreement of {' and '.join(names)}: max |dr| / r", "", None, errors, errors, tolerance,
+                 "relative drift")
 
 
 def _gather(per_backend: dict[str, list[Measurement]]) -> list[Check]:
