@@ -195,13 +195,13 @@ def _require_de421_span(jd1: np.ndarray, jd2: np.ndarray) -> None:
 def _de421_from_ssb(point: str, jd1: np.ndarray, jd2: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Barycentric ICRF position (m) and velocity (m/s) of a DE421 point, each shaped jd1.shape + (3,)."""
     kernel = _kernel()
-    r = np.zeros(jd1.shape + (3,))
-    v = np.zeros(jd1.shape + (3,))
+    r = np.zeros((3,) + jd1.shape)  # summed in jplephem's (3, n) layout, turned to (n, 3) once at the end
+    v = np.zeros((3,) + jd1.shape)
     for center, target in _CHAINS[point]:
         position, velocity = kernel[center, target].compute_and_differentiate(jd1, jd2)
-        r += np.moveaxis(position, 0, -1)
-        v += np.moveaxis(velocity, 0, -1)
-    return r * 1e3, v * _KM_PER_DAY
+        r += position
+        v += velocity
+    return np.moveaxis(r, 0, -1) * 1e3, np.moveaxis(v, 0, -1) * _KM_PER_DAY
 
 
 def _builtin_from_ssb(point: str, when: Time) -> tuple[np.ndarray, np.ndarray]:

@@ -11,7 +11,8 @@ from typing import Any
 from orbits.constants import BODIES
 from orbits.core import _fast
 
-PACKAGES = ["orbits", "numpy", "astropy", "numba", "rebound", "heyoka", "typer", "rich", "mpmath"]
+PACKAGES = ["orbits", "numpy", "astropy", "numba", "rebound", "heyoka", "typer", "rich", "mpmath", "skyfield-data",
+            "jplephem", "reboundx"]
 
 
 def _version(name):
@@ -31,8 +32,19 @@ def info() -> dict[str, Any]:
         "caches": {"heyoka compiled integrators (HEYOKA_CACHE_DIR)": heyoka_cache,
                    "orbits compiled kernels (numba; NUMBA_CACHE_DIR)": _fast.cache_dir() or "in memory (no folder)",
                    "compiled kernels in use (ORBITS_JIT)": _kernels_in_use()},
+        "ephemeris": _ephemeris(),
         "constants": {"G": "CODATA 2018 (astropy.constants)", **{b.name: b.source for b in BODIES.values()}},
+        "bodies": [{"name": b.name, "kind": b.kind, "parent": b.parent, "gm_m3_s2": b.gm, "radius_m": b.radius,
+                    "rotation_period_s": b.rotation_period, "retrograde": b.retrograde, "j2": b.j2,
+                    "j2_radius_m": b.j2_radius} for b in BODIES.values()],
     }
+
+
+def _ephemeris() -> str:
+    """Which ephemeris answers `source="auto"`, told without importing jplephem."""
+    if all(importlib.util.find_spec(m) is not None for m in ("skyfield_data", "jplephem")):
+        return "JPL DE421 (skyfield-data, read by jplephem), 1899-07-29 to 2053-10-09"
+    return "astropy built-in (approximate; pip install 'orbits[ephemeris]' for JPL DE421)"
 
 
 def _kernels_in_use() -> str:

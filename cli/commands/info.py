@@ -24,7 +24,32 @@ def show(fmt: str) -> None:
     grid.add_column("item", overflow="fold")
     grid.add_column("value", overflow="fold")
     grid.add_row("python", f"{facts['python']} on {facts['platform']}")
-    for section in ("versions", "caches", "constants"):
+    for section in ("versions", "caches"):
         for key, value in facts[section].items():
             grid.add_row(key, value)
-    render.print_tables([grid], "orbits info")
+    grid.add_row("ephemeris", facts["ephemeris"])
+    sources = Table(show_header=False, box=box.SIMPLE, pad_edge=False)
+    sources.add_column("item", overflow="fold")
+    sources.add_column("value", overflow="fold")
+    for key, value in facts["constants"].items():
+        sources.add_row(key, value)
+    render.print_tables([grid, _bodies(facts["bodies"]), sources], "orbits info")
+
+
+def _bodies(rows: list) -> "Table":
+    """The catalogue as a table in natural units: GM km3/s2, radius km, rotation d (- retrograde), J2."""
+    from rich import box
+    from rich.table import Table
+
+    from orbits.display import number
+
+    table = Table(box=box.SIMPLE, pad_edge=False, padding=(0, 1), collapse_padding=True,
+                  title="bodies (sources below; a negative rotation is retrograde)")
+    for name, justify in (("body", "left"), ("kind", "left"), ("orbits", "left"), ("GM km3/s2", "right"),
+                          ("R km", "right"), ("rot. d", "right"), ("J2", "right")):
+        table.add_column(name, justify=justify, no_wrap=True)
+    for b in rows:
+        rotation = b["rotation_period_s"] / 86400.0 * (-1 if b["retrograde"] else 1)
+        table.add_row(b["name"], b["kind"], b["parent"] or "", number(b["gm_m3_s2"] / 1e9, 7),
+                      number(b["radius_m"] / 1e3, 6), number(rotation, 6), "" if b["j2"] is None else number(b["j2"], 5))
+    return table

@@ -1,0 +1,66 @@
+"""`orbits where`, `orbits orbit BODY --epoch` and the body table of `orbits info`: values against the library
+(itself tested against astropy reading the same kernel), exit codes and one-line errors."""
+
+import json
+
+import astropy.units as u
+import pytest
+from typer.testing import CliRunner
+
+from orbits import Orbit, ephemeris
+from orbits_cli.main import app
+
+runner = CliRunner()
+
+
+def run(*args):
+    return runner.invoke(app, list(args))
+
+
+def test_where_gives_distances_elongation_and_light_time_in_json():
+    result = run("where", "Mars", "--epoch", "2026-11-25", "--format", "json")
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    seen = ephemeris.where("Mars", "2026-11-25")
+    assert data["observer_distance"] == {"value": seen.observer_distance.to_value(u.m), "unit": "m"}
+    assert data["elongation"]["value"] == seen.elongation.to_value(u.rad)
+    assert data["light_time"]["value"] == pytest.approx(data["observer_distance"]["value"] / 299_792_458.0, rel=1e-15)
+
+
+def test_where_table_names_the_source_and_the_point():
+    result = run("where", "jupiter", "--epoch", "2026-11-25 TDB", "--observer", "Mars")
+    assert result.exit_code == 0, result.output
+    assert "Jupiter system barycentre" in result.stdout and "DE421" in result.stdout
+    assert max(len(line) for line in result.stdout.splitlines()) <= 80
+
+
+def test_orbit_at_an_epoch_is_the_osculating_orbit():
+    result = run("orbit", "Mars", "--epoch", "2026-11-25", "--format", "json", "--only", "semi_major_axis")
+    assert result.exit_code == 0, result.output
+    expected = Orbit.from_body("Mars", "2026-11-25").semi_major_axis.to_value(u.m)
+    assert json.loads(result.stdout)["semi_major_axis"]["value"] == expected
+
+
+@pytest.mark.parametrize("args, message", [
+    (["where", "Marz"], "did you mean Mars"),
+    (["where", "Mars", "--epoch", "1800-01-01"], "outside DE421"),
+    (["where", "Mars", "--epoch", "soon"], "is not a date"),
+    (["where", "Mars", "--ephemeris", "de440"], "de440"),
+    (["orbit", "--epoch", "2026-11-25"], "needs a BODY"),
+    (["orbit", "Mars", "--epoch", "2026-11-25", "--a", "1 AU"], "drop the elements"),
+    (["orbit", "Titan", "--epoch", "2026-11-25"], "not in the ephemeris"),
+])
+def test_bad_input_is_one_line_with_exit_status_2(args, message):
+    result = run(*args)
+    assert result.exit_code == 2
+    lines = result.output.strip().splitlines()
+    assert len(lines) == 1 and message in lines[0]
+
+
+def test_info_lists_the_catalogue():
+    result = run("info", "--format", "json")
+    assert result.exit_code == 0, result.output
+    bodies = {b["name"]: b for b in json.loads(result.stdout)["bodies"]}
+    assert bodies["Titan"]["parent"] == "Saturn" and bodies["Venus"]["retrograde"] is True
+    table = run("info").stdout
+    assert "Ganymede" in table and max(len(line) for line in table.splitlines()) <= 80
