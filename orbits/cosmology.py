@@ -29,6 +29,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from functools import cached_property
 
+import astropy.constants as const
 import astropy.units as u
 import numpy as np
 
@@ -40,6 +41,7 @@ from orbits.core.errors import OrbitDomainError
 from orbits.tables import check_names
 
 PER_S = u.s**-1
+STEFAN_BOLTZMANN = const.sigma_sb.si.value  # W / (m2 K4), CODATA 2018 (exact in the 2019 SI)
 KG_PER_M3 = u.kg / u.m**3
 _HUBBLE_EXAMPLE = "70 * u.km / u.s / u.Mpc or 0.5e-10 / u.yr"
 
@@ -132,6 +134,22 @@ class Cosmology(display.Displayed):
         which must then sum to 1 with Or0 (within 1e-12)."""
         return cls(float(_hubble(H0)), *_densities(Om0, Ol0, Or0, Ok0))
 
+    @classmethod
+    def planck18(cls, radiation: bool = False) -> "Cosmology":
+        """The Planck 2018 flat Lambda-CDM model: H0 = 67.66 km/s/Mpc, Omega_m = 0.30966, Omega_k = 0.
+
+        Planck Collaboration 2020, A&A 641, A6 (paper VI), table 2, TT,TE,EE+lowE+lensing+BAO, with the values
+        astropy.cosmology.Planck18 uses. Without `radiation`, Omega_Lambda = 1 - Omega_m: astropy's
+        FlatLambdaCDM(67.66, 0.30966, Tcmb0=0) to 1e-13 (tests/api/test_cosmology_api.py). With it, photons at
+        Tcmb0 = 2.7255 K and Neff = 3.046 neutrinos as radiation (Omega_r = 9.15e-5), which is astropy's Planck18
+        with massless neutrinos (m_nu = 0). Planck's one 0.06 eV neutrino, neither radiation nor matter, is left
+        out either way: astropy's Planck18 has an age 13.787 Gyr and D_L(z = 1) = 6791.3 Mpc, this model 13.810
+        Gyr and 6797.4 Mpc without radiation, 13.804 Gyr and 6796.8 Mpc with it.
+        """
+        hubble = PLANCK18_H0 * u.km / u.s / u.Mpc
+        orad = _radiation_density(float(_hubble(hubble)), PLANCK18_TCMB, PLANCK18_NEFF) if radiation else 0.0
+        return cls.from_densities(hubble, Om0=PLANCK18_OM0, Or0=orad)
+
     # ---- scales -------------------------------------------------------------------------------
     @cached_property
     def method(self) -> str:
@@ -152,6 +170,19 @@ class Cosmology(display.Displayed):
     def hubble_distance(self) -> u.Quantity:
         """d_H = c / H0 (m)."""
         return self._d_h << units.M
+
+    @cached_property
+    def turnaround_time(self) -> u.Quantity:
+        """t (s) after the big bang at which a recollapsing universe stops expanding (a = a_max); inf otherwise."""
+        return self.model.turnaround_age * self._t_h << units.S
+
+    @cached_property
+    def big_crunch_time(self) -> u.Quantity:
+        """t (s) of the big crunch (a = 0 again), twice the turnaround time; inf if the universe never recollapses.
+
+        Matter and curvature only (Omega_m > 1): pi Omega_m / (H0 (Omega_m - 1)**1.5), to 4e-16
+        (tests/core/test_cosmology.py)."""
+        return self.model.crunch_age * self._t_h << units.S
 
     @cached_property
     def _t_h(self):
@@ -178,6 +209,33 @@ class Cosmology(display.Displayed):
         """Line-of-sight comoving distance D_C = (c / H0) int_0^z dz' / E(z') (m); 2 c / H0 at z = inf for EdS."""
         return self.model.comoving_distance(_redshift(z), self._d_h) << units.M
 
+    def transverse_comoving_distance(self, z: float | np.ndarray | u.Quantity) -> u.Quantity:
+        """D_M (m): D_C if flat, R sinh(D_C / R) if open, R sin(D_C / R) if closed, R = (c / H0) / sqrt(|Omega_k|)."""
+        return self.model.transverse_comoving_distance(_redshift(z), self._d_h) << units.M
+
+    def luminosity_distance(self, z: float | np.ndarray | u.Quantity) -> u.Quantity:
+        """D_L = (1 + z) D_M (m): a source of luminosity L has flux L / (4 pi D_L**2). Equal to astropy's to 1e-13."""
+        z = _redshift(z)
+        return (1.0 + z) * self.model.transverse_comoving_distance(z, self._d_h) << units.M
+
+    def angular_diameter_distance(self, z: float | np.ndarray | u.Quantity) -> u.Quantity:
+        """D_A = D_M / (1 + z) (m): a proper length l at z spans the angle l / D_A. 0 at z = inf."""
+        z = _redshift(z)
+        with np.errstate(invalid="ignore"):
+            ratio = self.model.transverse_comoving_distance(z, self._d_h) / (1.0 + z)
+        return np.where(np.isinf(z), 0.0, ratio) << units.M
+
+    def distance_modulus(self, z: float | np.ndarray | u.Quantity) -> u.Quantity:
+        """mu = m - M = 5 log10(|D_L| / 10 pc) (magnitudes, a dimensionless number); -inf at z = 0.
+
+        |D_L|: beyond the antipode of a closed universe D_M = R sin(D_C / R) < 0, and the flux goes as 1 / D_L**2."""
+        with np.errstate(divide="ignore"):
+            return 5.0 * np.log10(np.abs(self.luminosity_distance(z).to_value(units.M)) / TEN_PARSECS) << u.one
+
+    def comoving_volume(self, z: float | np.ndarray | u.Quantity) -> u.Quantity:
+        """V_C (m3): the comoving volume of the whole sky out to z; 4 pi D_C**3 / 3 if flat."""
+        return self.model.comoving_volume(_redshift(z), self._d_h) << u.m**3
+
     def critical_density(self, z: float | np.ndarray | u.Quantity = 0.0) -> u.Quantity:
         """rho_c(z) = 3 H(z)**2 / (8 pi G) (kg/m3); inf beyond the float64 range."""
         with np.errstate(over="ignore"):
@@ -201,6 +259,12 @@ class Cosmology(display.Displayed):
         """z = 1 / a(t) - 1 (dimensionless) of light emitted at time t (time) after the big bang."""
         return _redshift_of(self.scale_factor(t))
 
+    def expansion_rate(self, t: u.Quantity) -> u.Quantity:
+        """H(t) = (da/dt) / a (1/s) at time t (time) after the big bang: negative while a universe recollapses."""
+        seconds = _cosmic_time(t)
+        h = self.hubble_parameter(self.redshift(t)).to_value(PER_S)
+        return np.where(seconds > self.turnaround_time.to_value(units.S), -h, h) << PER_S
+
     # ---- tables -------------------------------------------------------------------------------
     @property
     def description(self) -> str:
@@ -222,10 +286,17 @@ class Cosmology(display.Displayed):
     ) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} at redshift z or at time t after the big bang (default: today, z = 0),
         or `only` those names (QUANTITY_NAMES)."""
-        names = QUANTITY_NAMES if only is None else list(only)
-        check_names(names, QUANTITY_NAMES)
         if z is not None and t is not None:
             raise TypeError("give the epoch as a redshift z or a time t, not both")
+        contracting = t is not None and np.any(_cosmic_time(t) > self.turnaround_time.to_value(units.S))
+        names = (CONTRACTING_NAMES if contracting else QUANTITY_NAMES) if only is None else list(only)
+        check_names(names, QUANTITY_NAMES)
+        if contracting and set(names) - set(CONTRACTING_NAMES):
+            raise OrbitDomainError(
+                f"t = {t} is after the turnaround at {self.turnaround_time.to(u.Gyr):.6g}, while this universe "
+                f"recollapses, and {', '.join(sorted(set(names) - set(CONTRACTING_NAMES)))} are computed only while "
+                f"it expands; ask for {', '.join(CONTRACTING_NAMES)}"
+            )
         if t is None:
             z = _redshift(0.0 if z is None else z)
             with np.errstate(divide="ignore"):
@@ -234,6 +305,7 @@ class Cosmology(display.Displayed):
             a = self.scale_factor(t)
             epoch = {"scale_factor": a, "redshift": _redshift_of(a), "age": _cosmic_time(t) << units.S}
             epoch["lookback_time"] = self.age() - epoch["age"]
+            epoch["hubble_parameter"] = self.expansion_rate(t)
             z = epoch["redshift"].to_value(u.one)
         return {name: epoch[name] if name in epoch else self._at(name, z) for name in names}
 
@@ -251,11 +323,32 @@ QUANTITY_NAMES = [
     "age",
     "lookback_time",
     "comoving_distance",
+    "luminosity_distance",
+    "angular_diameter_distance",
+    "distance_modulus",
+    "comoving_volume",
     "critical_density",
     "density_parameter",
     "hubble_time",
     "hubble_distance",
 ]
+#: what quantities(t=...) gives after the turnaround of a recollapsing universe (functions of a and t alone)
+CONTRACTING_NAMES = ["scale_factor", "redshift", "age", "lookback_time", "hubble_parameter", "critical_density",
+                     "density_parameter", "hubble_time", "hubble_distance"]
+
+#: Planck 2018 (A&A 641, A6, table 2, TT,TE,EE+lowE+lensing+BAO), as in astropy.cosmology.Planck18
+PLANCK18_H0 = 67.66  # km/s/Mpc
+PLANCK18_OM0 = 0.30966
+PLANCK18_TCMB = 2.7255  # K, the CMB temperature today (Fixsen 2009)
+PLANCK18_NEFF = 3.046  # effective number of neutrino species
+TEN_PARSECS = (10 * u.pc).to_value(u.m)
+
+
+def _radiation_density(h0, tcmb, neff):
+    """Omega_r = Omega_gamma (1 + (7/8) (4/11)**(4/3) Neff) today, Omega_gamma = (4 sigma / c**3) T**4 / rho_c,
+    rho_c = 3 H0**2 / (8 pi G): photons at tcmb (K) plus neff massless neutrino species; h0 in 1/s."""
+    photons = 4.0 * STEFAN_BOLTZMANN / SPEED_OF_LIGHT**3 * tcmb**4 / sphere.critical_density(h0, G)
+    return photons * (1.0 + 0.875 * (4.0 / 11.0) ** (4.0 / 3.0) * neff)
 
 
 def _redshift(z):

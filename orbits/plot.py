@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Any
 import astropy.units as u
 import numpy as np
 
-from orbits import display
+from orbits import display, units
 from orbits.io import write_atomic
 
 if TYPE_CHECKING:
@@ -109,42 +109,355 @@ def _mark_positions(ax, nus, radii, scale):
         ax.plot(x[1:], y[1:], marker=".", color="k", ls="none", alpha=0.6, label="body at given times")
 
 
+# ---- several orbits and trajectories in one frame ----------------------------------------------------------
+
+PROJECTIONS = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2), "3d": (0, 1, 2)}
+_CIRCULAR = 1e-3  # below this eccentricity the apsides are not marked: they mean nothing on a near-circle
+_LONG = 100.0  # an ellipse with Q > _LONG q is drawn, like an open orbit, only within the picture's window
+_AXES = "xyz"
+
+
+class InsideBodyWarning(UserWarning):
+    """A drawn closest approach lies inside the primary (or inside both bodies' radii): a collision."""
+
+
+def catalogue_body(gm: Any) -> Any:
+    """The catalogue Body whose GM is exactly `gm` (m3/s2, every element the same), else None."""
+    from orbits.constants import BODIES
+
+    values = np.unique(np.asarray(gm, dtype=float))
+    if values.size != 1:
+        return None
+    return next((known for known in BODIES.values() if known.gm == values[0]), None)
+
+
+def _primary_body(primary, gm):
+    """The Body drawn at the origin: `primary` (a Body or a catalogue name) or the catalogue body of GM."""
+    if primary is None:
+        return catalogue_body(gm)
+    if isinstance(primary, str):
+        from orbits.constants import body
+
+        return body(primary)
+    return primary
+
+
+def _conic_track(orbit, window):
+    """(points (n, 3) in m, closed) of one Orbit: the whole ellipse, or the arc within `window` m of the focus
+    for an open orbit or a very long ellipse (Q > 100 q)."""
+    from orbits.core import elements
+
+    p, e = float(orbit.p), float(orbit.e)
+    q = p / (1 + e)
+    whole = e < 1 and p / (1 - e) <= max(_LONG * q, window)
+    if whole:
+        nu = np.linspace(-np.pi, np.pi, 721)
+    else:
+        limit = np.arccos(np.clip((p / window - 1) / e, -1, 1))  # 1 + e cos nu = p / window
+        if e >= 1:
+            limit = min(limit, np.arccos(-1 / e) * (1 - 1e-9))  # inside the asymptotes
+        nu = np.linspace(-limit, limit, 721)
+    r, _ = elements.elements_to_state(p, e, float(orbit.inc), float(orbit.raan), float(orbit.argp), nu,
+                                      float(orbit.mu))
+    return r, whole
+
+
+def _apsides(orbit):
+    """{"periapsis": r (3,), "apoapsis": r (3,) for an ellipse} in m."""
+    from orbits.core import elements
+
+    p, e = float(orbit.p), float(orbit.e)
+    angles = [0.0, np.pi] if e < 1 else [0.0]
+    r, _ = elements.elements_to_state(p, e, float(orbit.inc), float(orbit.raan), float(orbit.argp),
+                                      np.array(angles), float(orbit.mu))
+    return dict(zip(("periapsis", "apoapsis"), r))
+
+
+def _items(items, labels):
+    """[(label, Orbit or (n, 3) array in m)]: arrays of orbits split, Quantities of positions converted."""
+    from orbits.orbit import Orbit
+
+    out = []
+    for k, item in enumerate(items):
+        given = None if labels is None else labels[k]
+        if isinstance(item, Orbit):
+            flat = [item] if item.shape == () else [_one_orbit(item, idx) for idx in np.ndindex(item.shape)]
+            for j, one in enumerate(flat):
+                name = given if len(flat) == 1 else f"{given or 'orbit'} [{j}]"
+                out.append((name or f"orbit, e = {_eccentricity_text(float(one.e))}", one))
+        else:
+            track = np.asarray(units.to_si(item, units.M, "trajectory positions"), dtype=float)
+            if track.ndim != 2 or track.shape[1] != 3:
+                raise ValueError(f"a trajectory is a length Quantity of shape (n, 3); got shape {track.shape}")
+            out.append((given or f"trajectory {k + 1}", track))
+    return out
+
+
+def _one_orbit(orbit, idx):
+    """Element `idx` of an array of orbits, as an Orbit of shape ()."""
+    import dataclasses
+
+    values = {f.name: getattr(orbit, f.name) for f in dataclasses.fields(orbit)}
+    return type(orbit)(**{name: None if v is None else np.broadcast_to(v, orbit.shape)[idx]
+                          for name, v in values.items()})
+
+
+def _eccentricity_text(e):
+    """e with the digits that matter: "1 + 6.4e-07" or "1 - 1e-06" near a parabola, else 4 digits."""
+    if e != 1 and abs(e - 1) < 1e-3:
+        return f"1 {'+' if e > 1 else '-'} {abs(e - 1):.2g}"
+    return f"{e:.4g}"
+
+
+def _extent(entries, times_window):
+    """The picture's half-size (m): the largest whole ellipse, trajectory or current position, and at least
+    10 q of every open or very long orbit."""
+    from orbits.orbit import Orbit
+
+    size = 0.0
+    for _, item in entries:
+        if isinstance(item, Orbit):
+            p, e = float(item.p), float(item.e)
+            q = p / (1 + e)
+            closed = e < 1 and p / (1 - e) <= _LONG * q
+            size = max(size, p / (1 - e) if closed else 10 * q, float(item.radius.to_value(u.m)))
+        else:
+            size = max(size, float(np.max(np.linalg.norm(item, axis=1))))
+    return max(size, times_window)
+
+
+def orbits(
+    *items: Any,
+    ax: Any = None,
+    projection: str = "xy",
+    primary: Any = None,
+    labels: Sequence[str] | None = None,
+    unit: u.UnitBase | None = None,
+    window: u.Quantity | None = None,
+) -> tuple[Any, Any]:
+    """Draw any number of Orbits (arrays of orbits included) and trajectories ((n, 3) length Quantities, e.g.
+    from an integrator) about one primary, in its inertial frame, each in its own colour.
+
+    The primary is a disc to scale (a Body or a catalogue name, else the catalogue body of the first orbit's GM;
+    a star marks it where the disc would be too small to see). projection: "xy", "xz", "yz" or "3d" (then `ax`,
+    if given, must be a 3D Axes). Ellipses are drawn whole, open orbits (and ellipses with Q > 100 q) only out to
+    the picture's half-size `window` (default: the largest closed orbit or trajectory, or 10 q). Periapsis
+    (and apoapsis) are marked where e > 1e-3; each body's current position is a dot. A closest approach inside
+    the primary gives an InsideBodyWarning and a note in the title. The legend sits outside the axes.
+    """
+    from orbits.orbit import Orbit
+
+    if projection not in PROJECTIONS:
+        raise ValueError(f"projection {projection!r} is not one of {', '.join(PROJECTIONS)}")
+    entries = _items(items, labels)
+    if not entries:
+        raise ValueError("give at least one Orbit or trajectory to draw")
+    axes_index = PROJECTIONS[projection]
+    fig, ax = _axes_for(ax, projection)
+    gm = next((float(item.mu) for _, item in entries if isinstance(item, Orbit)), None)
+    body = _primary_body(primary, gm)
+    size = _extent(entries, 0.0 if window is None else units.to_si(window, units.M, "window"))
+    unit = unit or _length_unit(size)
+    scale = u.m.to(unit)
+    colors = _colors(len(entries))
+    marked, notes = set(), []
+    for (label, item), color in zip(entries, colors):
+        whole = False
+        if isinstance(item, Orbit):
+            track, whole = _conic_track(item, size)
+            closest = float(item.periapsis_distance.to_value(u.m))
+        else:
+            track = item
+            closest = float(np.min(np.linalg.norm(item, axis=1)))
+        ax.plot(*(track[:, i] * scale for i in axes_index), color=color, lw=1.4, label=label)
+        if isinstance(item, Orbit):
+            _mark_orbit(ax, item, color, axes_index, scale, marked, whole)
+        if body is not None and closest < body.radius:
+            notes.append(f"{label}: closest approach {display.quantity_text(closest << u.m, digits=4)} is inside "
+                         f"{body.name} (radius {display.quantity_text(body.radius << u.m, digits=4)})")
+    _draw_primary(ax, body, axes_index, scale, size, unit)
+    _marker_legend(ax, marked, len(axes_index))
+    _finish_frame(ax, projection, unit, body)
+    if notes:
+        import warnings
+
+        for note in notes:
+            warnings.warn(note, InsideBodyWarning, stacklevel=2)
+        ax.set_title("\n".join(notes), color="C3", fontsize="small")
+    return fig, ax
+
+
+def _axes_for(ax, projection):
+    """A new Figure and Axes (3D for projection "3d"), or the given Axes."""
+    import matplotlib.pyplot as plt
+
+    if ax is not None:
+        return ax.figure, ax
+    if projection == "3d":
+        fig = plt.figure(figsize=(8.4, 6.4), layout="constrained")
+        return fig, fig.add_subplot(projection="3d")
+    fig, ax = plt.subplots(figsize=(8.4, 6.0), layout="constrained")
+    return fig, ax
+
+
+def _colors(n):
+    """n distinct colours: matplotlib's ten, then tab20's twenty, then evenly spaced hues."""
+    import matplotlib
+
+    if n <= 10:
+        return [f"C{k}" for k in range(n)]
+    if n <= 20:
+        return list(matplotlib.colormaps["tab20"].colors[:n])
+    return [matplotlib.colormaps["hsv"](k / n) for k in range(n)]
+
+
+def _mark_orbit(ax, orbit, color, axes_index, scale, marked, whole):
+    """Apsides (where e > 1e-3; the apoapsis only on a whole ellipse) and the body's current position, in the
+    orbit's colour."""
+    if float(orbit.e) > _CIRCULAR:
+        for name, point in _apsides(orbit).items():
+            if name == "apoapsis" and not whole:
+                continue
+            marked.add(name)
+            ax.plot(*([point[i] * scale] for i in axes_index), marker=_MARKERS[name], ms=6, mfc="none", color=color,
+                    ls="none", gid=name)
+    now = orbit.r.to_value(u.m)
+    marked.add("body now")
+    ax.plot(*([now[i] * scale] for i in axes_index), marker=_MARKERS["body now"], ms=9, color=color, ls="none",
+            gid="body now")
+
+
+_MARKERS = {"periapsis": "o", "apoapsis": "s", "body now": "."}
+
+
+def _marker_legend(ax, marked, dimensions):
+    """One gray legend entry per kind of marker drawn (the markers themselves take their orbit's colour)."""
+    for name in ("periapsis", "apoapsis", "body now"):
+        if name in marked:
+            ax.plot(*([] for _ in range(dimensions)), marker=_MARKERS[name], ms=6, color="0.3", ls="none",
+                    mfc="none" if name != "body now" else "0.3", label=name)
+
+
+def _draw_primary(ax, body, axes_index, scale, size, unit):
+    """The primary at the origin: a disc (a sphere's outline in 3D) of its radius, and a star if that is tiny."""
+    name = body.name if body is not None else "primary"
+    radius = body.radius * scale if body is not None else 0.0
+    tiny = radius < 0.01 * size * scale
+    if len(axes_index) == 3:
+        if not tiny:
+            angle = np.linspace(0, 2 * np.pi, 97)
+            for i, j in ((0, 1), (0, 2), (1, 2)):
+                circle = np.zeros((3, angle.size))
+                circle[i], circle[j] = radius * np.cos(angle), radius * np.sin(angle)
+                ax.plot(*circle, color="orange", lw=1)
+        ax.plot([0], [0], [0], marker="*", ms=12, color="orange", ls="none", label=f"{name}")
+        return
+    import matplotlib.patches as mpatches
+
+    if radius > 0:
+        ax.add_patch(mpatches.Circle((0, 0), radius, color="orange", alpha=0.6, zorder=0.5,
+                                     label=f"{name} (to scale)" if not tiny else None))
+    if tiny:
+        ax.plot(0, 0, marker="*", ms=12, color="orange", ls="none", zorder=4,
+                label=f"{name} (star not to scale; radius {display.quantity_text(body.radius << u.m, digits=3)})"
+                if radius > 0 else name)
+
+
+def _finish_frame(ax, projection, unit, body):
+    """Axis labels with the unit, equal scales, grid, and the legend outside the axes on the right."""
+    names = [_AXES[i] for i in PROJECTIONS[projection]]
+    text = unit.to_string()
+    ax.set_xlabel(f"{names[0]} [{text}]")
+    ax.set_ylabel(f"{names[1]} [{text}]")
+    if projection == "3d":
+        ax.set_zlabel(f"{names[2]} [{text}]")
+        ax.set_box_aspect((1, 1, 1))
+        _equal_3d(ax)
+    else:
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.grid(alpha=0.3)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small", frameon=False)
+
+
+def _equal_3d(ax):
+    """Give the three axes of a 3D view the same span, centred on the data."""
+    limits = np.array([ax.get_xlim3d(), ax.get_ylim3d(), ax.get_zlim3d()])
+    centre, half = limits.mean(axis=1), (limits[:, 1] - limits[:, 0]).max() / 2
+    ax.set_xlim3d(centre[0] - half, centre[0] + half)
+    ax.set_ylim3d(centre[1] - half, centre[1] + half)
+    ax.set_zlim3d(centre[2] - half, centre[2] + half)
+
+
 def flyby_plane(flyby: "Flyby", ax: Any = None, unit: u.UnitBase | None = None) -> tuple[Any, Any]:
-    """Draw a single Flyby in its plane: the hyperbola about the focus, both asymptotes, the impact parameter b
-    (the focus's distance from the incoming asymptote) and the closest approach; the title gives the deflection."""
+    """Draw a single Flyby in its plane: the hyperbola about the focus within 4 max(b, q) of it, both asymptotes
+    there, the impact parameter b (the focus's distance from the incoming asymptote), the closest approach, and
+    the primary as a disc to scale; the title gives the deflection. A closest approach inside the bodies (the
+    primary's radius, plus the secondary's for Flyby.between) gives an InsideBodyWarning and a red note."""
     if flyby.shape != ():
         raise ValueError(f"flyby_plane draws one flyby; this Flyby holds {flyby.shape}: index it first")
-    fig, ax = _axes(ax)
+    fig, ax = _axes_for(ax, "xy")
     orbit = flyby.orbit
     p, e = float(orbit.p), float(orbit.e)
     q, b = p / (1 + e), float(flyby.impact_parameter.si.value)
-    a = p / (e * e - 1)  # |a|
     r_max = 4 * max(b, q)
     unit = unit or _length_unit(r_max)
     scale = u.m.to(unit)
     x, y = _conic_points(p, e, r_max)
-    ax.plot(x * scale, y * scale, color="C0", lw=1.5, label=f"trajectory, e = {e:.4g}")
-    ax.plot(0, 0, marker="*", ms=14, color="orange", ls="none", label="primary (focus)")
-    ax.plot(q * scale, 0, marker="o", color="C3", ls="none", label=f"closest approach {q * scale:.4g} {unit}")
-    nu_inf = np.arccos(-1 / e)
-    centre = np.array([a * e, 0.0])
-    reach = np.linspace(0, (a * e + r_max) * e, 2)  # from the hyperbola's centre out to x = -r_max
+    ax.plot(x * scale, y * scale, color="C0", lw=1.5, label=f"trajectory, e = {_eccentricity_text(e)}")
+    ax.plot(q * scale, 0, marker="o", color="C3", ls="none",
+            label=f"closest approach {display.quantity_text(q << u.m, digits=4)}")
+    nu_inf = float(flyby.asymptote_true_anomaly.to_value(u.rad))
+    reach = np.sqrt(r_max**2 - b**2)  # the asymptotes pass b from the focus; draw them within r_max of it
+    centre = np.array([p / (e * e - 1) * e, 0.0])  # the hyperbola's centre, a e beyond the focus
+    feet = {}
     for sign, name in ((-1, "incoming asymptote"), (1, "outgoing asymptote")):
-        direction = np.array([np.cos(nu_inf), sign * np.sin(nu_inf)])
-        line = centre[:, None] + direction[:, None] * reach
+        direction = np.array([np.cos(nu_inf), sign * np.sin(nu_inf)])  # outward along the asymptote
+        feet[name] = centre + direction * np.dot(-centre, direction)  # its nearest point to the focus
+        line = feet[name][:, None] + direction[:, None] * np.array([-reach, reach])
         ax.plot(line[0] * scale, line[1] * scale, ls="--", color="gray", lw=1, label=name)
-    incoming = np.array([np.cos(nu_inf), -np.sin(nu_inf)])
-    foot = centre + incoming * np.dot(-centre, incoming)  # nearest point of the incoming asymptote to the focus
-    ax.plot(
-        [0, foot[0] * scale],
-        [0, foot[1] * scale],
-        color="C2",
-        lw=1.5,
-        label=f"impact parameter b = {b * scale:.4g} {unit}",
-    )
-    ax.set_title(f"deflection {np.degrees(float(flyby.deflection_angle.to_value(u.rad))):.2f} deg")
+    foot = feet["incoming asymptote"]
+    ax.plot([0, foot[0] * scale], [0, foot[1] * scale], color="C2", lw=1.5,
+            label=f"impact parameter b = {b * scale:.4g} {unit}")
+    bodies = [catalogue_body(flyby.gm1 if flyby.gm1 is not None else flyby.mu)]
+    if flyby.gm2 is not None:
+        bodies.append(catalogue_body(flyby.gm2))
+    _draw_primary(ax, bodies[0], (0, 1), scale, r_max, unit)
+    title = f"deflection {np.degrees(float(flyby.deflection_angle.to_value(u.rad))):.2f} deg"
+    note = _collision_note(q, bodies)
+    if note:
+        import warnings
+
+        warnings.warn(note, InsideBodyWarning, stacklevel=2)
+        title += "\n" + note.replace(" is inside", "\nis inside")
+    ax.set_title(title, color="C3" if note else "k", fontsize="medium")
     _finish_plane(ax, unit, "x toward closest approach")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small", frameon=False)
     return fig, ax
+
+
+def collision_note(flyby: "Flyby") -> str | None:
+    """A sentence when the flyby's closest approach is inside the bodies (catalogue radii; the two radii added for
+    Flyby.between), else None. E.g. "closest approach 8.4e+04 km is inside the Sun (radius 6.957e+05 km)"."""
+    if flyby.shape != ():
+        raise ValueError(f"collision_note checks one flyby; this Flyby holds {flyby.shape}: index it first")
+    bodies = [catalogue_body(flyby.gm1 if flyby.gm1 is not None else flyby.mu)]
+    if flyby.gm2 is not None:
+        bodies.append(catalogue_body(flyby.gm2))
+    return _collision_note(float(flyby.periapsis_distance.to_value(u.m)), bodies)
+
+
+def _collision_note(q, bodies):
+    """The note for closest approach q (m) among the known `bodies` (None for unknown ones), or None."""
+    known = [body for body in bodies if body is not None]
+    if not known:
+        return None
+    reach = sum(body.radius for body in known)
+    if q >= reach:
+        return None
+    names = " and ".join(body.name for body in known)
+    what = f"inside {names}" if len(known) == 1 else f"inside the radii of {names} added"
+    return (f"closest approach {display.quantity_text(q << u.m, digits=4)} is {what} "
+            f"({display.quantity_text(reach << u.m, digits=4)}): they collide")
 
 
 def binary_plane(binary: "Binary", ax: Any = None, unit: u.UnitBase | None = None) -> tuple[Any, Any]:
@@ -176,21 +489,109 @@ def binary_plane(binary: "Binary", ax: Any = None, unit: u.UnitBase | None = Non
 
 
 def scale_factor_curves(
-    models: dict[str, "Cosmology"], t_max: u.Quantity, ax: Any = None, samples: int = 200
+    models: dict[str, "Cosmology"], t_max: u.Quantity, ax: Any = None, samples: int = 400
 ) -> tuple[Any, Any]:
-    """a(t) against cosmic time for {label: Cosmology}, from the big bang to t_max (time Quantity)."""
+    """a(t) against cosmic time for {label: Cosmology}, from the big bang to t_max (time Quantity).
+
+    A universe that recollapses is drawn through its turnaround (a dot) down to its big crunch (a cross) when
+    they fall before t_max; today (a = 1) is the dotted line.
+    """
     fig, ax = _axes(ax)
     unit = display.axis_unit(t_max)
     end = t_max.to_value(unit)
-    times = np.linspace(end / samples, end, samples) * unit
-    for label, model in models.items():
-        ax.plot(times.to_value(unit), model.scale_factor(times).to_value(u.one), label=label)
-    ax.axhline(1.0, color="gray", lw=0.8, ls=":")
+    for k, (label, model) in enumerate(models.items()):
+        crunch = model.big_crunch_time.to_value(unit)
+        last = min(end, crunch)
+        times = np.linspace(0.0, last, samples) * unit
+        ax.plot(times.to_value(unit), model.scale_factor(times).to_value(u.one), color=f"C{k}", label=label)
+        turnaround = model.turnaround_time.to_value(unit)
+        if turnaround <= end:
+            ax.plot(turnaround, model.model.max_scale_factor, marker="o", color=f"C{k}", ls="none", clip_on=False,
+                    label=f"turnaround, t = {turnaround:.4g} {display.unit_text(unit)}")
+        if crunch <= end:
+            ax.plot(crunch, 0.0, marker="X", ms=9, color=f"C{k}", ls="none", clip_on=False,
+                    label=f"big crunch, t = {crunch:.4g} {display.unit_text(unit)}")
+    ax.axhline(1.0, color="gray", lw=0.8, ls=":", label="today, a = 1")
+    ax.set_xlim(0, end)
+    ax.set_ylim(bottom=0)
     ax.set_xlabel(f"time since the big bang [{display.unit_text(unit)}]")
     ax.set_ylabel("scale factor a [dimensionless]")
     ax.grid(alpha=0.3)
-    ax.legend(loc="best", fontsize="small")
+    _legend_outside(ax)
     return fig, ax
+
+
+def _legend_outside(ax):
+    """The legend below the axes, off the data, in as many columns as fit."""
+    handles, labels = ax.get_legend_handles_labels()
+    if handles:
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), fontsize="small", ncol=min(2, len(handles)),
+                  frameon=False)
+
+
+def _redshift_grid(z_max, samples):
+    """Redshifts from 1e-3 to z_max, evenly spaced in log z (for a log z axis)."""
+    return np.geomspace(1e-3, z_max, samples)
+
+
+def hubble_diagram(
+    models: dict[str, "Cosmology"], z_max: float = 10.0, ax: Any = None, samples: int = 300
+) -> tuple[Any, Any]:
+    """The Hubble diagram: distance modulus mu = 5 log10(D_L / 10 pc) against redshift (log axis) for
+    {label: Cosmology}, from z = 1e-3 to z_max."""
+    fig, ax = _axes(ax)
+    z = _redshift_grid(z_max, samples)
+    for k, (label, model) in enumerate(models.items()):
+        ax.plot(z, model.distance_modulus(z).to_value(u.one), color=f"C{k}", label=label)
+    ax.set_xscale("log")
+    ax.set_xlabel("redshift z")
+    ax.set_ylabel("distance modulus m - M [mag]")
+    ax.grid(alpha=0.3, which="both")
+    _legend_outside(ax)
+    return fig, ax
+
+
+def distance_curves(cosmology: "Cosmology", z_max: float = 10.0, ax: Any = None, samples: int = 300
+                    ) -> tuple[Any, Any]:
+    """Luminosity, transverse comoving and angular-diameter distances of one Cosmology against redshift (log-log);
+    D_A peaks (objects look smallest) and then falls, D_L = (1 + z)**2 D_A."""
+    fig, ax = _axes(ax)
+    z = _redshift_grid(z_max, samples)
+    curves = {
+        "luminosity distance D_L": cosmology.luminosity_distance(z),
+        "comoving distance D_M": cosmology.transverse_comoving_distance(z),
+        "angular-diameter distance D_A": cosmology.angular_diameter_distance(z),
+    }
+    unit = u.Mpc
+    for k, (label, distance) in enumerate(curves.items()):
+        ax.loglog(z, distance.to_value(unit), color=f"C{k}", label=label)
+    ax.set_xlabel("redshift z")
+    ax.set_ylabel(f"distance [{unit.to_string()}]")
+    ax.grid(alpha=0.3, which="both")
+    _legend_outside(ax)
+    return fig, ax
+
+
+def cosmology_overview(cosmology: "Cosmology", label: str, z_max: float = 10.0) -> tuple[Any, np.ndarray]:
+    """Three panels for one universe: a(t) (to its big crunch if it recollapses, else to twice its age), its
+    distances against z, and its Hubble diagram beside those of Planck 2018 and of Einstein-de Sitter with the
+    same H0. The figure title is `label`."""
+    import matplotlib.pyplot as plt
+
+    from orbits.cosmology import Cosmology
+
+    fig, axes = plt.subplots(1, 3, figsize=(15, 5.2), layout="constrained")
+    crunch = cosmology.big_crunch_time
+    t_max = crunch if np.isfinite(crunch) else 2 * cosmology.age()
+    scale_factor_curves({"a(t)": cosmology}, t_max.to(display.axis_unit(t_max)), ax=axes[0])
+    distance_curves(cosmology, z_max, ax=axes[1])
+    references = {
+        "Planck 2018 (flat, no radiation)": Cosmology.planck18(),
+        "Einstein-de Sitter, same H0": Cosmology.einstein_de_sitter(cosmology.hubble_constant),
+    }
+    hubble_diagram({"this universe": cosmology, **references}, z_max, ax=axes[2])
+    fig.suptitle(label)
+    return fig, axes
 
 
 def lagrange_plane(
@@ -255,17 +656,31 @@ def ring_breakup(
 
 
 def validation_residuals(report: Any, ax: Any = None) -> tuple[Any, Any]:
-    """Position error |dr| / r_max against time, per scene and backend, on log axes (a ValidationReport)."""
-    fig, ax = _axes(ax)
+    """Position error |dr| / r_max against time in orbits, per scene (a colour) and backend (a line style), on
+    log-log axes (a 100-orbit scene and a flyby of a tenth of one side by side), with the legend outside on the
+    right (a ValidationReport).
+
+    One orbit is 2 pi sqrt(L**3 / GM) for the scene's length scale L and GM (its code units): the period of a
+    circular orbit of radius L. An exact match (zero error) and t = 0 have no place on log axes and are left out.
+    """
+    import matplotlib.pyplot as plt
+
+    if ax is None:
+        fig, ax = plt.subplots(figsize=(9.0, 5.0), layout="constrained")
+    else:
+        fig = ax.figure
+    backends = list(dict.fromkeys(backend for scene in report.scenes for backend in scene.residuals))
+    styles = dict(zip(backends, ("-", "--", ":", "-.")))
     for k, scene in enumerate(report.scenes):
-        for j, (backend, series) in enumerate(scene.residuals.items()):
-            times = scene.residual_times / scene.residual_times[-1]
-            shown = np.where(series > 0, series, np.nan)  # an exact match has no place on a log axis
-            ax.semilogy(times, shown, color=f"C{k}", ls=("-", "--", ":")[j % 3], label=f"{scene.name}: {backend}")
-    ax.set_xlabel("time / scene span [dimensionless]")
+        for backend, series in scene.residuals.items():
+            orbits_elapsed = np.asarray(scene.residual_times) / (2 * np.pi * scene.code_units.time)  # times in s
+            shown = np.where((series > 0) & (orbits_elapsed > 0), series, np.nan)
+            ax.loglog(orbits_elapsed, shown, color=_colors(len(report.scenes))[k], ls=styles.get(backend, "-"),
+                        lw=1.3, label=f"{scene.name}: {backend}")
+    ax.set_xlabel("time [orbits of the scene's length scale, 2 pi sqrt(L**3 / GM)]")
     ax.set_ylabel("position error |dr| / r_max [dimensionless]")
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(loc="best", fontsize="small", ncol=2)
+    ax.grid(alpha=0.3, which="major")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small", frameon=False)
     return fig, ax
 
 

@@ -14,11 +14,20 @@ if TYPE_CHECKING:
     from orbits.cosmology import Cosmology
 
 NOTES_HUBBLE = "0.5e-10 / yr"  # XXIV.iv's H, which gives the notes' age 1.33e10 yr
+MODELS = ("notes", "planck18", "planck18-radiation")
+
 
 def command(
+    model: Annotated[
+        str | None,
+        typer.Option("--model", help="a named universe: notes (XXIV's Einstein-de Sitter, H0 = 0.5e-10 / yr), "
+                     "planck18 (flat, H0 = 67.66 km/s/Mpc, Om = 0.30966), planck18-radiation (plus photons and "
+                     "massless neutrinos)"),
+    ] = None,
     h0: Annotated[
-        str, typer.Option("--H0", help="Hubble constant with units: '70 km/s/Mpc', '0.5e-10 / yr', '2.3e-18 / s'")
-    ] = NOTES_HUBBLE,
+        str | None,
+        typer.Option("--H0", help="Hubble constant with units: '70 km/s/Mpc', '0.5e-10 / yr', '2.3e-18 / s'"),
+    ] = None,
     om: Annotated[float | None, typer.Option("--Om", help="matter density parameter today")] = None,
     ol: Annotated[float | None, typer.Option("--Ol", help="cosmological-constant density parameter today")] = None,
     orad: Annotated[float | None, typer.Option("--Or", help="radiation density parameter today (default 0)")] = None,
@@ -31,30 +40,41 @@ def command(
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
 ) -> None:
-    """H(z), age, lookback time, comoving distance and a(t) of a Friedmann universe, today or at --z or --t.
+    """H(z), age, distances (comoving, luminosity, angular-diameter), distance modulus, comoving volume and a(t)
+    of a Friedmann universe, today or at --z or --t.
 
-    Einstein-de Sitter with the notes' H = 0.5e-10 / yr by default (XXIV.iv: age 1.33e10 yr). Give --Om alone
-    (or --Ol alone) for a flat universe; give two of --Om, --Ol, --Ok and the third follows from the sum 1.
+    Einstein-de Sitter with the notes' H = 0.5e-10 / yr by default (XXIV.iv: age 1.33e10 yr); --model planck18
+    for today's universe. Give --Om alone (or --Ol alone) for a flat universe; give two of --Om, --Ol, --Ok and
+    the third follows from the sum 1. A closed universe (--Om 2 --Ok -1) runs through its turnaround to its big
+    crunch. --plot draws a(t), the distances against z and the Hubble diagram.
     """
     from orbits import inputs
     from orbits_cli import render
 
-    cosmology = build(h0, om, ol, orad, ok)
+    cosmology = build(h0, om, ol, orad, ok, model)
     table = cosmology.quantities(**epoch(z, t), only=inputs.names(only))
     if plot:
-        import astropy.units as u
+        from orbits.plot import cosmology_overview
 
-        from orbits.plot import scale_factor_curves
-
-        save_plot(lambda: scale_factor_curves({title(cosmology): cosmology}, 2 * cosmology.age().to(u.Gyr)), plot)
+        save_plot(lambda: cosmology_overview(cosmology, title(cosmology)), plot)
     render.emit(title(cosmology), table, fmt.value, index="redshift")
 
 
-def build(h0: str, om: float | None, ol: float | None, orad: float | None, ok: float | None) -> "Cosmology":
-    """The Cosmology of the options: Einstein-de Sitter when no density is given."""
+def build(
+    h0: str | None, om: float | None, ol: float | None, orad: float | None, ok: float | None, model: str | None = None
+) -> "Cosmology":
+    """The Cosmology of the options: the named --model, else Einstein-de Sitter when no density is given."""
     from orbits import Cosmology
 
-    hubble = hubble_constant(h0)
+    if model is not None:
+        if model not in MODELS:
+            raise typer.BadParameter(f"--model {model!r} is not a model I know; choose from {', '.join(MODELS)}")
+        if model != "notes":
+            if any(x is not None for x in (h0, om, ol, orad, ok)):
+                raise typer.BadParameter(f"--model {model} fixes H0 and the densities; leave out --H0, --Om, --Ol, "
+                                         "--Or and --Ok (or give them without --model)")
+            return Cosmology.planck18(radiation=model == "planck18-radiation")
+    hubble = hubble_constant(h0 or NOTES_HUBBLE)
     if all(x is None for x in (om, ol, orad, ok)):
         return Cosmology.einstein_de_sitter(hubble)
     if om is None and ol is None:

@@ -33,12 +33,27 @@ def command(
     from orbits_cli import render
 
     result, title = build(primary, v_inf, b, periapsis, mass, secondary)
+    warn_of_collision(result)
     if plot:
-        from orbits.plot import flyby_plane
+        import warnings
 
-        save_plot(lambda: flyby_plane(result), plot)
+        from orbits.plot import InsideBodyWarning, flyby_plane
+
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", InsideBodyWarning)  # said once, above
+            save_plot(lambda: flyby_plane(result), plot)
     groups = [("star1_", "the primary, in the centre-of-mass frame"), ("star2_", "the moving body, in that frame")]
     render.emit(title, result.quantities(inputs.names(only)), fmt.value, groups=groups)
+
+
+def warn_of_collision(result: "Flyby") -> None:
+    """One line on stderr when the closest approach is inside the catalogue bodies: the flyby is a collision."""
+    if result.shape == ():
+        from orbits.plot import collision_note
+
+        note = collision_note(result)
+        if note:
+            typer.echo(f"orbits: warning: {note}", err=True)
 
 
 def build(

@@ -124,6 +124,85 @@ def test_curved_lambda_cdm_matches_astropy(ode0):
     assert max(errors.values()) <= ASTROPY_RTOL, errors
 
 
+def distance_errors(ours, reference, z):
+    """Worst |ours / astropy - 1| of D_L, D_A, D_M and V_C at z, and the worst |mu - mu_astropy| (mag)."""
+    pairs = {
+        "luminosity_distance": (ours.luminosity_distance(z), reference.luminosity_distance(z)),
+        "angular_diameter_distance": (ours.angular_diameter_distance(z), reference.angular_diameter_distance(z)),
+        "transverse_comoving_distance": (
+            ours.transverse_comoving_distance(z), reference.comoving_transverse_distance(z)
+        ),
+        "comoving_volume": (ours.comoving_volume(z), reference.comoving_volume(z)),
+    }
+    errors = {name: float(np.max(np.abs((a / b).to_value(u.one) - 1))) for name, (a, b) in pairs.items()}
+    errors["distance_modulus"] = float(np.max(np.abs(ours.distance_modulus(z).value - reference.distmod(z).value)))
+    return errors
+
+
+def test_planck18_distances_equal_astropy_flat_lambda_cdm():
+    """Cosmology.planck18() is astropy's FlatLambdaCDM(67.66, 0.30966, Tcmb0=0). astropy's hypergeometric D_C
+    loses digits at small z (6e-13 at z = 1e-3, 2e-14 at z = 0.01, against mpmath in
+    tests/core/test_cosmology.py), so z >= 0.01 here."""
+    ours = Cosmology.planck18()
+    assert (ours.omega_m, ours.omega_l, ours.omega_r, ours.omega_k) == (0.30966, 1 - 0.30966, 0.0, 0.0)
+    assert math.isclose(ours.hubble_constant.to_value(KM_S_MPC), 67.66, rel_tol=1e-15)
+    errors = distance_errors(ours, FlatLambdaCDM(67.66 * KM_S_MPC, Om0=0.30966, Tcmb0=0), Z[Z >= 0.01])
+    assert max(errors.values()) <= 1e-12, errors  # measured 6.7e-14 (V_C at z = 0.01), 2.2e-14 for D_L and D_A
+
+
+def test_planck18_with_radiation_is_astropys_planck18_with_massless_neutrinos():
+    """Photons at 2.7255 K and Neff = 3.046 massless neutrinos: Omega_r = Ogamma0 + Onu0 of astropy's model."""
+    ours, reference = Cosmology.planck18(radiation=True), Planck18.clone(m_nu=0 * u.eV)
+    assert math.isclose(ours.omega_r, reference.Ogamma0 + reference.Onu0, rel_tol=4e-12)  # measured 4.3e-13
+    errors = distance_errors(ours, reference, Z)
+    assert max(errors.values()) <= 1e-12, errors  # measured 1.0e-14
+    full = Planck18  # its 0.06 eV neutrino is neither matter nor radiation: 0.09 % in D_L at z = 1 (docstring)
+    assert abs(ours.luminosity_distance(1).to_value(u.Mpc) / full.luminosity_distance(1).to_value(u.Mpc) - 1) < 1e-3
+
+
+@pytest.mark.parametrize("ode0", [0.6, 0.8])
+def test_curved_distances_match_astropy(ode0):
+    """Open (Ode0 = 0.6) and closed (0.8) universes: sinh and sin of D_C / R. astropy's V_C cancels below
+    z = 0.1 (1.8e-9 at z = 1e-3; ours agrees with mpmath to 1e-15), so V_C is compared from z = 0.1."""
+    ours = Cosmology.from_densities(70 * KM_S_MPC, Om0=0.3, Ol0=ode0)
+    reference = LambdaCDM(70 * KM_S_MPC, Om0=0.3, Ode0=ode0, Tcmb0=0)
+    errors = distance_errors(ours, reference, Z)
+    errors.pop("comoving_volume")
+    assert max(errors.values()) <= 4e-12, errors  # measured 3.4e-13 (astropy's elliptic integrals)
+    volumes = distance_errors(ours, reference, Z[Z >= 0.1])["comoving_volume"]
+    assert volumes <= 2e-12, volumes  # measured 2.2e-13
+
+
+def test_distances_at_zero_and_infinite_redshift():
+    eds = Cosmology.einstein_de_sitter(70 * KM_S_MPC)
+    assert eds.luminosity_distance(0) == 0 and eds.distance_modulus(0) == -np.inf and eds.comoving_volume(0) == 0
+    assert eds.angular_diameter_distance(np.inf) == 0 and eds.luminosity_distance(np.inf) == np.inf
+    d_h = eds.hubble_distance
+    assert math.isclose(eds.comoving_volume(np.inf) / (4 / 3 * np.pi * (2 * d_h) ** 3), 1.0, rel_tol=4e-16)
+
+
+def test_closed_universe_through_its_big_crunch():
+    """Omega_m = 2, Omega_k = -1: t_crunch = pi Omega_m / (H0 (Omega_m - 1)**1.5) = 2 pi / H0; the expansion rate
+    is negative after the turnaround at pi / H0, and a(t) mirrors itself about it."""
+    closed = Cosmology.from_densities(70 * KM_S_MPC, Om0=2.0, Ok0=-1.0)
+    t_h = closed.hubble_time
+    assert math.isclose((closed.big_crunch_time / t_h).to_value(u.one), 2 * math.pi, rel_tol=4e-16)
+    assert math.isclose((closed.turnaround_time / t_h).to_value(u.one), math.pi, rel_tol=4e-16)
+    times = closed.turnaround_time + [-1, 1] * u.Gyr
+    a = closed.scale_factor(times)
+    assert math.isclose(a[0], a[1], rel_tol=1e-14)
+    rates = closed.expansion_rate(times)
+    assert rates[0] > 0 and math.isclose(rates[1].value, -rates[0].value, rel_tol=1e-13)
+    assert closed.scale_factor(closed.big_crunch_time) == 0
+    with pytest.raises(OrbitDomainError, match="recollapses to a big crunch"):
+        closed.scale_factor(closed.big_crunch_time * 1.001)
+    late = closed.quantities(t=closed.turnaround_time + 1 * u.Gyr)
+    assert "comoving_distance" not in late and late["hubble_parameter"] < 0 and late["lookback_time"] < 0
+    with pytest.raises(OrbitDomainError, match="after the turnaround.*luminosity_distance"):
+        closed.quantities(t=closed.turnaround_time + 1 * u.Gyr, only=["luminosity_distance"])
+    assert Cosmology.planck18().big_crunch_time == np.inf * u.s
+
+
 def test_library_does_not_import_astropy_cosmology():
     code = (
         "import sys, astropy.units as u; from orbits import Cosmology; "

@@ -50,9 +50,14 @@ def test_validation_residuals_one_line_per_scene_and_backend(tmp_path):
     report = validate([scene.load("circular"), scene.load("flyby")])
     fig, ax = validation_residuals(report)
     assert labels(ax) == {"circular: rebound", "circular: heyoka", "flyby: rebound", "flyby: heyoka"}
-    assert ax.get_yscale() == "log" and "dimensionless" in ax.get_ylabel()
+    assert ax.get_yscale() == "log" and ax.get_xscale() == "log" and "dimensionless" in ax.get_ylabel()
     top = max(np.nanmax(line.get_ydata()) for line in ax.get_lines())
     assert 0 < top < 1e-10
+    circular = [line for line in ax.get_lines() if line.get_label() == "circular: rebound"][0]
+    assert circular.get_xdata()[-1] == pytest.approx(100, rel=1e-9)  # the scene runs 100 orbits of r = L
+    assert "orbits" in ax.get_xlabel()
+    fig.canvas.draw()
+    assert ax.get_legend().get_window_extent().x0 >= ax.get_window_extent().x1  # the legend is off the data
     for suffix in ("png", "svg", "pdf"):
         save(fig, tmp_path / f"r.{suffix}")
         assert (tmp_path / f"r.{suffix}").stat().st_size > 1000
@@ -79,7 +84,9 @@ def test_flyby_plane_draws_asymptotes_and_the_impact_parameter():
     flyby = Flyby.past("Jupiter", v_inf=5.6 * u.km / u.s, periapsis=200_000 * u.km)
     _, ax = flyby_plane(flyby)
     lines = {line.get_label(): line.get_xydata() for line in ax.get_lines()}
-    assert {"incoming asymptote", "outgoing asymptote", "primary (focus)"} <= set(lines)
+    assert {"incoming asymptote", "outgoing asymptote"} <= set(lines)
+    jupiter = [patch for patch in ax.patches if patch.get_label() == "Jupiter (to scale)"][0]
+    assert jupiter.get_radius() == pytest.approx(71492, rel=1e-12)  # km: the primary drawn to scale
     segment = [xy for name, xy in lines.items() if name.startswith("impact parameter")][0]
     assert np.hypot(*segment[1]) == pytest.approx(flyby.impact_parameter.to_value(u.km), rel=1e-12)
     incoming = lines["incoming asymptote"]
@@ -138,3 +145,130 @@ def test_ring_breakup_draws_the_prediction_through_the_seed():
     prediction = [line for line in ax.get_lines() if line.get_label().startswith("round-off")][0]
     np.testing.assert_allclose(prediction.get_ydata(), 1e-16 * np.exp(times), rtol=1e-12)
     assert ax.get_yscale() == "log" and any("29.9" in line.get_label() for line in ax.get_lines())
+
+
+def test_scale_factor_runs_through_turnaround_to_the_big_crunch():
+    from orbits import Cosmology
+    from orbits.plot import scale_factor_curves
+
+    closed = Cosmology.from_densities(70 * u.km / u.s / u.Mpc, Om0=2.0, Ok0=-1.0)
+    _, ax = scale_factor_curves({"closed": closed}, 200 * u.Gyr)
+    lines = {line.get_label(): line.get_xydata() for line in ax.get_lines()}
+    t, a = lines["closed"].T
+    crunch = closed.big_crunch_time.to_value(u.Gyr)
+    assert t[-1] == pytest.approx(crunch, rel=1e-12) and a[-1] == 0 and a[0] == 0
+    assert a.max() == pytest.approx(2.0, rel=1e-4)  # a_max = Om / (Om - 1)
+    turnaround = [xy for name, xy in lines.items() if name.startswith("turnaround")][0]
+    assert tuple(turnaround[0]) == pytest.approx((crunch / 2, 2.0), rel=1e-12)
+    assert [xy for name, xy in lines.items() if name.startswith("big crunch")][0][0, 0] == pytest.approx(crunch)
+    assert ax.get_legend().get_bbox_to_anchor().y0 < ax.bbox.y0  # legend below the axes, off the data
+
+
+def test_hubble_diagram_draws_the_distance_modulus():
+    from orbits import Cosmology
+    from orbits.plot import cosmology_overview, hubble_diagram
+
+    planck = Cosmology.planck18()
+    _, ax = hubble_diagram({"Planck 2018": planck}, z_max=3.0)
+    z, mu = ax.get_lines()[0].get_xydata().T
+    np.testing.assert_allclose(mu, planck.distance_modulus(z).value, rtol=1e-15)
+    assert z[-1] == pytest.approx(3.0) and ax.get_xscale() == "log"
+    assert mu[np.argmin(np.abs(z - 1))] == pytest.approx(44.16, abs=0.01)  # D_L(1) = 6797 Mpc
+    fig, axes = cosmology_overview(planck, "Planck 2018")
+    labels_middle = [line.get_label() for line in axes[1].get_lines()]
+    assert labels_middle == ["luminosity distance D_L", "comoving distance D_M", "angular-diameter distance D_A"]
+    z, d_a = axes[1].get_lines()[2].get_xydata().T
+    assert 1.4 < z[np.argmax(d_a)] < 1.8  # D_A peaks near z = 1.6 in Planck 2018
+    assert len(axes[2].get_lines()) == 3
+
+
+# ---- several orbits in one frame (issue 18, item 1) ----------------------------------------------------------
+
+
+def _by_gid(ax, gid):
+    return [line for line in ax.get_lines() if line.get_gid() == gid]
+
+
+def test_orbits_overlay_in_one_frame_with_distinct_colours_and_the_primary_to_scale():
+    from orbits.plot import orbits
+
+    geo = Orbit.circular("Earth", 42164 * u.km)
+    molniya = Orbit.from_elements("Earth", a=26600 * u.km, e=0.74, inc=63.4 * u.deg, argp=270 * u.deg)
+    gto = Orbit.from_elements("Earth", q=6678 * u.km, e=0.73, raan=30 * u.deg)
+    fig, ax = orbits(geo, molniya, gto, labels=["GEO", "Molniya", "GTO"])
+    curves = {line.get_label(): line for line in ax.get_lines() if line.get_label() in ("GEO", "Molniya", "GTO")}
+    assert len({line.get_color() for line in curves.values()}) == 3
+    earth = [patch for patch in ax.patches if patch.get_label() == "Earth (to scale)"][0]
+    assert earth.get_radius() == pytest.approx(6378.1, rel=1e-12)  # km, IAU 2015 nominal equatorial radius
+    # apsides only where they mean something: none in GEO's colour, Q = a (1 + e) of GTO in its plane
+    colours = {line.get_color() for line in _by_gid(ax, "periapsis") + _by_gid(ax, "apoapsis")}
+    assert curves["GEO"].get_color() not in colours and len(_by_gid(ax, "apoapsis")) == 2
+    gto_apo = [line for line in _by_gid(ax, "apoapsis") if line.get_color() == curves["GTO"].get_color()][0]
+    assert np.hypot(*gto_apo.get_xydata()[0]) == pytest.approx(6678 / 0.27 * 1.73, rel=1e-12)
+    np.testing.assert_allclose(np.hypot(*curves["GEO"].get_xydata().T), 42164, rtol=1e-12)
+    legend = ax.get_legend()
+    fig.canvas.draw()
+    assert legend.get_window_extent().x0 >= ax.get_window_extent().x1  # the legend is off the data
+
+
+@pytest.mark.parametrize("projection, drop", [("xz", 1), ("yz", 0)])
+def test_orbits_projections_show_the_inclination(projection, drop):
+    from orbits.plot import orbits
+
+    polar = Orbit.circular("Earth", 7000 * u.km, inc=90 * u.deg, raan=90 * u.deg if drop == 0 else 0 * u.deg)
+    _, ax = orbits(polar, projection=projection)
+    track = ax.get_lines()[0].get_xydata()
+    np.testing.assert_allclose(np.hypot(*track.T), 7000, rtol=1e-12)  # the orbit's own plane, seen face on
+    assert ax.get_xlabel().startswith(projection[0]) and ax.get_ylabel().startswith(projection[1])
+
+
+def test_orbits_3d_view_and_trajectories():
+    from orbits.plot import orbits
+
+    orbit = Orbit.from_elements("Earth", a=10000 * u.km, e=0.3, inc=40 * u.deg, raan=20 * u.deg, argp=60 * u.deg)
+    r, _ = orbit.propagate(np.linspace(0, 2, 40) * u.h)
+    _, ax = orbits(orbit, r, projection="3d", labels=["Kepler", "propagated"])
+    line = [line for line in ax.get_lines() if line.get_label() == "propagated"][0]
+    x, y, z = line.get_data_3d()
+    np.testing.assert_allclose(np.stack([x, y, z], axis=-1), r.to_value(u.km), rtol=1e-12)
+    assert ax.name == "3d" and "z [km]" in ax.get_zlabel()
+
+
+def test_near_parabolic_comet_is_drawn_over_a_sensible_window():
+    """Notebook 02's e = 0.999999 comet: Q = 2e6 q, so only the arc within the window is drawn, not 1e6 AU."""
+    from orbits.plot import orbits
+
+    comet = Orbit.from_elements("Sun", q=1 * u.AU, e=0.999999)
+    earth = Orbit.circular("Sun", 1 * u.AU)
+    _, ax = orbits(comet, earth, labels=["comet", "Earth"])
+    track = [line for line in ax.get_lines() if line.get_label() == "comet"][0].get_xydata()
+    assert np.hypot(*track.T).max() == pytest.approx(10, rel=1e-9)  # 10 q, the window of an open orbit
+    assert not _by_gid(ax, "apoapsis") and "[AU]" in ax.get_xlabel()
+    sun = [line for line in ax.get_lines() if line.get_label().startswith("Sun (star not to scale")]
+    assert sun  # a 0.005 AU disc is invisible in a 20 AU picture: the star says where it is
+
+
+def test_closest_approach_inside_the_primary_warns():
+    from orbits.plot import InsideBodyWarning, orbits
+
+    grazing = Orbit.from_elements("Earth", q=6000 * u.km, e=0.5)
+    with pytest.warns(InsideBodyWarning, match="closest approach 6000 km is inside Earth"):
+        _, ax = orbits(grazing)
+    assert "inside Earth" in ax.get_title()
+    with pytest.raises(ValueError, match="projection 'xw' is not one of"):
+        orbits(grazing, projection="xw")
+
+
+def test_flyby_of_jupiter_past_the_sun_stays_in_its_window_and_warns():
+    """The issue's example: q = 84,000 km, 4 AU window (it spanned 900 AU), e shown as 1 + 6.3e-07."""
+    from orbits import Flyby
+    from orbits.plot import InsideBodyWarning, collision_note, flyby_plane
+
+    flyby = Flyby.between("Sun", "Jupiter", 1 * u.km / u.s, b=1 * u.AU)
+    with pytest.warns(InsideBodyWarning, match="inside the radii of Sun and Jupiter added"):
+        _, ax = flyby_plane(flyby)
+    spans = np.concatenate([np.abs(line.get_xydata()).ravel() for line in ax.get_lines()])
+    assert spans.max() <= 4.0 * (1 + 1e-12)  # AU
+    assert any(line.get_label() == "trajectory, e = 1 + 6.3e-07" for line in ax.get_lines())
+    assert "they collide" in ax.get_title()
+    assert collision_note(Flyby.past("Jupiter", v_inf=5.6 * u.km / u.s, periapsis=200_000 * u.km)) is None

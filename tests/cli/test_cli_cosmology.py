@@ -1,6 +1,7 @@
 """`orbits cosmology`: defaults, units, epochs, JSON, and one-line errors with exit status 2."""
 
 import json
+import math
 import subprocess
 import sys
 
@@ -53,6 +54,47 @@ def test_redshifts_times_and_only():
 def test_recollapsing_universe_in_its_future():
     data = run_json("--Om", "2", "--Ok", "-1", "--t", "20 Gyr", "--only", "redshift,lookback_time")
     assert data["redshift"]["value"] < 0 and data["lookback_time"]["value"] < 0
+
+
+def test_planck_distances_equal_astropy_to_1e_12():
+    """The issue's bar: D_L and D_A at z = 1 equal astropy's FlatLambdaCDM(67.66, 0.30966, Tcmb0=0) to 1e-12."""
+    from astropy.cosmology import FlatLambdaCDM
+
+    data = run_json("--z", "1", "--H0", "67.66 km/s/Mpc", "--Om", "0.30966")
+    reference = FlatLambdaCDM(67.66, 0.30966, Tcmb0=0)
+    for name, value in (("luminosity_distance", reference.luminosity_distance(1)),
+                        ("angular_diameter_distance", reference.angular_diameter_distance(1))):
+        assert data[name]["unit"] == "m"
+        assert abs(data[name]["value"] / value.to_value(u.m) - 1) <= 1e-12  # measured 1.3e-15
+    assert abs(data["distance_modulus"]["value"] - reference.distmod(1).value) <= 1e-12  # measured 0
+    assert run_json("--model", "planck18", "--z", "1") == data
+
+
+def test_named_models_and_their_errors():
+    notes = run_json("--model", "notes", "--only", "age")
+    assert abs(notes["age"]["value"] / GYR - 40 / 3) < 1e-13
+    radiation = run_json("--model", "planck18-radiation", "--only", "age")
+    assert round(radiation["age"]["value"] / GYR, 3) == 13.804
+    result = runner.invoke(app, ["cosmology", "--model", "planck18", "--Om", "0.3"])
+    assert result.exit_code == 2 and "fixes H0 and the densities" in result.stderr
+    result = runner.invoke(app, ["cosmology", "--model", "wmap"])
+    assert result.exit_code == 2 and "choose from notes, planck18, planck18-radiation" in result.stderr
+
+
+def test_closed_universe_runs_through_its_big_crunch(tmp_path):
+    """Om = 2, Ok = -1 with the notes' t_H = 20 Gyr: turnaround at pi t_H = 62.83 Gyr, crunch at 2 pi t_H."""
+    t_h = 20.0  # Gyr, 1 / (0.5e-10 / yr)
+    after = run_json("--Om", "2", "--Ok", "-1", "--t", "100 Gyr")
+    assert after["hubble_parameter"]["value"] < 0 and "comoving_distance" not in after
+    mirror = run_json("--Om", "2", "--Ok", "-1", "--t", f"{2 * math.pi * t_h - 100!r} Gyr", "--only", "scale_factor")
+    assert abs(after["scale_factor"]["value"] / mirror["scale_factor"]["value"] - 1) < 1e-13
+    crunch = run_json("--Om", "2", "--Ok", "-1", "--t", f"{2 * math.pi * t_h!r} Gyr", "--only", "scale_factor")
+    assert crunch["scale_factor"]["value"] == 0.0
+    result = runner.invoke(app, ["cosmology", "--Om", "2", "--Ok", "-1", "--t", "126 Gyr"])
+    assert result.exit_code == 2 and "recollapses to a big crunch" in result.stderr
+    picture = tmp_path / "closed.png"
+    result = runner.invoke(app, ["cosmology", "--Om", "2", "--Ok", "-1", "--plot", str(picture)])
+    assert result.exit_code == 0 and picture.stat().st_size > 10_000
 
 
 @pytest.mark.parametrize(

@@ -401,9 +401,88 @@ def test_recollapsing_universe_limits_redshift_and_time():
     assert closed.efunc(-0.5) == 0.0  # the turnaround, a = 2
     with pytest.raises(OrbitDomainError, match=r"z = -0.6 is outside \[-0.5, inf\].*recollapses"):
         closed.comoving_distance(-0.6, 1.0)
-    with pytest.raises(OrbitDomainError, match=r"outside \[0, 3.14159265358979\d*\] s.*recollapses"):
-        closed.scale_factor(3.2, 1.0)
+    with pytest.raises(OrbitDomainError, match=r"outside \[0, 6.28318530717958\d*\] s.*recollapses to a big crunch"):
+        closed.scale_factor(6.3, 1.0)
     assert closed.scale_factor(closed.turnaround_age, 1.0) == 2.0
+
+
+def test_closed_universe_recollapses_along_the_cycloid_to_its_big_crunch():
+    """After the turnaround (eta = pi) a = 1 - cos(eta), H0 t = eta - sin(eta) continues to a = 0 at eta = 2 pi."""
+    closed = Friedmann(2.0, omega_k=-1.0)
+    assert math.isclose(closed.crunch_age, 2 * math.pi, rel_tol=4e-16)  # measured 1.8e-16
+    tau = closed.crunch_age - np.array([3.0, 2.0, 1.0, 1e-3, 1e-8])
+    a = closed.scale_factor(tau, 1.0)
+    assert np.all(np.diff(a) < 0) and closed.scale_factor(closed.crunch_age, 1.0) == 0.0
+    # Near the crunch a ~ (t_crunch - t)**(2/3): a relative error in a would measure the rounding of t_crunch
+    # (checked above) over t_crunch - t. So a is checked on the cycloid at the remaining time t_crunch - t
+    # (exact in float64), through da / dt as in test_closed_universe_is_a_cycloid.
+    with mpmath.workdps(800):
+        for t, ai in zip(tau, a):
+            remaining = mpmath.mpf(closed.crunch_age - t)
+            eta = 2 * mpmath.asin(mpmath.sqrt(mpmath.mpf(ai) / 2))
+            error = (remaining - (eta - mpmath.sin(eta))) * mpmath.sin(eta) / (1 - mpmath.cos(eta)) / ai
+            assert abs(error) <= 4e-16, (t, float(error))  # measured 1.9e-16
+
+
+@pytest.mark.parametrize("om", [1.01, 1.5, 2.0, 3.0, 10.0])
+def test_big_crunch_time_of_matter_and_curvature_is_the_closed_form(om):
+    """t_crunch H0 = pi Omega_m / (Omega_m - 1)**1.5 (the cycloid's eta = 2 pi)."""
+    model = Friedmann(om, omega_k=1.0 - om)
+    with mpmath.workdps(40):
+        reference = mpmath.pi * om / (mpmath.mpf(om) - 1) ** 1.5
+    assert float(mpref.rel_error(model.crunch_age, reference)) <= 2e-15  # measured 4.0e-16 (om = 1.01)
+
+
+@pytest.mark.parametrize("densities", [(3.0, 0.0, -2.1, 0.1), (2.0, 1e-3, -1.001, 0.0)])
+def test_big_crunch_time_with_lambda_or_radiation_against_mpmath(densities):
+    """t_crunch H0 = 2 int_0^a_max a da / sqrt(P(a)), with a_max the root of P found by mpmath."""
+    om, orad, ok, ol = densities
+    model = Friedmann(om, orad, ok, ol)
+    with mpmath.workdps(40):
+
+        def p(a):
+            return orad + om * a + ok * a**2 + ol * a**4
+
+        a_max = mpmath.findroot(p, mpmath.mpf(model.max_scale_factor))
+        reference = 2 * mpmath.quad(lambda a: a / mpmath.sqrt(p(a)), [0, 1, a_max])
+    assert float(mpref.rel_error(model.crunch_age, reference)) <= 2e-15  # measured 1.2e-16
+
+
+def mattig(om, z):
+    """Transverse comoving distance / d_H with Omega_Lambda = 0 (Mattig 1958), at 50 digits."""
+    with mpmath.workdps(50):
+        om, z = mpmath.mpf(om), mpmath.mpf(z)
+        return 2 * (om * z + (om - 2) * (mpmath.sqrt(1 + om * z) - 1)) / (om**2 * (1 + z))
+
+
+@pytest.mark.parametrize("om", [0.05, 0.3, 2.0, 5.0])
+def test_transverse_comoving_distance_is_mattigs_formula(om):
+    """Open (Omega_m < 1, sinh) and closed (Omega_m > 1, sin) universes without Lambda."""
+    z = np.array([1e-8, 1e-3, 0.1, 0.5, 1.0, 3.0, 10.0, 1e3, 1e6])
+    model = Friedmann(om, omega_k=1.0 - om)
+    assert worst_rel(model.transverse_comoving_distance(z, 1.0), [mattig(om, x) for x in z]) <= 4e-15  # 7.1e-16
+
+
+@pytest.mark.parametrize("densities", [(0.3, 0.0, 0.1, 0.6), (0.3, 0.0, -0.1, 0.8), (5.0, 0.0, -4.0, 0.0),
+                                       (0.3, 0.0, 0.0, 0.7)])
+def test_comoving_volume_against_mpmath(densities):
+    """V_C = 4 pi int_0^D_C D_M(x)**2 dx (d_H = 1), D_C from mpmath; beyond the equator of the Omega_m = 5 universe."""
+    model = Friedmann(*densities)
+    z = np.array([1e-6, 0.01, 0.5, 2.0, 10.0, 1e3])
+    distances, _, _ = quadrature_references(densities, z)
+    ok = mpmath.mpf(densities[2])
+    with mpmath.workdps(40):
+
+        def d_m(x):
+            if ok == 0:
+                return x
+            r = 1 / mpmath.sqrt(abs(ok))
+            return r * (mpmath.sinh(x / r) if ok > 0 else mpmath.sin(x / r))
+
+        volumes = [4 * mpmath.pi * mpmath.quad(lambda x: d_m(x) ** 2, [0, d]) for d in distances]
+    assert worst_rel(model.comoving_volume(z, 1.0), volumes) <= 1e-14  # measured 9.6e-16
+    if densities[0] == 5.0:
+        assert model.comoving_distance(1e3, 1.0) > math.pi / 4  # past the equator pi R / 2, R = 1 / sqrt(4)
 
 
 @pytest.mark.parametrize("name", MODELS)
