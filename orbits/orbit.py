@@ -393,6 +393,13 @@ class Orbit(display.Displayed):
             self.mu << units.M3_PER_S2, r, v, mass=None if self.mass is None else self.mass << units.KG
         )
 
+    def plot(self, ax: Any = None, projection: str = "xy", **options: Any) -> tuple[Any, Any]:
+        """Draw this orbit (each orbit of an array) about its primary, in one frame: orbits.plot.orbits(self, ...)
+        with `projection` "xy", "xz", "yz" or "3d"; returns (figure, axes)."""
+        from orbits import plot
+
+        return plot.orbits(self, ax=ax, projection=projection, **options)
+
     # ---- display --------------------------------------------------------------------------------
     def __repr__(self) -> str:
         """E.g. "Orbit(6778 x 6778 km, e = 0, i = 51.64 deg, about Earth)": periapsis x apoapsis for ellipses,

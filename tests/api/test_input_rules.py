@@ -54,10 +54,10 @@ def test_the_float64_range_is_wide_enough_for_the_exact_scalings():
 
 
 def test_an_unknown_body_is_an_orbits_error_and_still_a_key_error():
-    with pytest.raises(UnknownNameError, match="unknown body 'Pluto'; known bodies: Sun, Earth"):
-        body("Pluto")
+    with pytest.raises(UnknownNameError, match=r"unknown body 'Vulcan' \(known bodies: Sun, Mercury"):
+        body("Vulcan")
     with pytest.raises(KeyError):
-        Orbit.circular("Pluto", 7000 * u.km)
+        Orbit.circular("Vulcan", 7000 * u.km)
     assert str(UnknownNameError("no quotes")) == "no quotes"
 
 
@@ -91,7 +91,7 @@ def test_special_files_are_written_in_place_never_replaced(tmp_path):
         (["binary", "--m1", "1e300 kg", "--m2", "1e300 kg", "--a", "1 AU"], "mass m1 = 1e+300 kg"),
         (["orbit", "--primary", "5e-324 kg", "--a", "7000 km"], "5e-324 kg is outside the range"),
         (["orbit", "--primary", "Earth", "--r", "7000,0,0", "--v", "0,7,0 km/s"], "'7000,0,0' has no unit"),
-        (["orbit", "Pluto"], "unknown body 'Pluto'"),
+        (["orbit", "Vulcan"], "unknown body 'Vulcan'"),
         (["validate", "circular", "--output", "/nonexistent-folder/x.json"], "does not exist"),
         (["validate", "circular", "--plot", "/tmp"], "must end in .png"),
         (["validate", "circular", "--backend", ","], "give at least one of rebound, heyoka"),

@@ -63,7 +63,7 @@ def test_lagrange_table():
         (["lagrange", "Earth", "1e20 kg"], "separation r is needed"),
         (["lagrange", "Earth", "Moon", "--r", "5"], "has no unit"),
         (["lagrange", "Earth", "Moon", "--points", "L6"], "unknown points"),
-        (["lagrange", "Earth", "Pluto"], "SECONDARY"),
+        (["lagrange", "Earth", "Vulcan"], "SECONDARY"),
         (["ring", "1", "--m", "1 kg", "--r", "1 m"], "outside [2, inf)"),
         (["ring", "3", "--m", "1 kg", "--r", "-1 m"], "ring radius r = -1.0 m"),
         (["ring", "3", "--m", "1 kg", "--r", "1 m", "--only", "breakup"], "unknown quantities"),
