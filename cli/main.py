@@ -21,7 +21,10 @@ from orbits_cli.commands import (
     orbit,
     precision,
     ring,
+    rocket,
+    transfer,
     validate,
+    where,
 )
 from orbits_cli.options import displays, reports_errors
 
@@ -66,6 +69,9 @@ app.command("flyby")(reports_errors(displays(flyby.command)))
 app.command("lagrange")(reports_errors(displays(lagrange.command)))
 app.command("ring")(reports_errors(displays(ring.command)))
 app.add_typer(escape.app, name="escape")
+app.command("rocket")(reports_errors(displays(rocket.command)))
+app.add_typer(transfer.app, name="transfer")
+app.command("where")(reports_errors(displays(where.command)))
 app.command("info")(reports_errors(info.command))
 bench_app.command("kepler")(reports_errors(bench.kepler))
 bench_app.command("propagate")(reports_errors(bench.propagate))

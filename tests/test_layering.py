@@ -77,7 +77,8 @@ def test_import_orbits_loads_nothing_heavy():
 
 CORE_MODULES = [
     "anomalies", "binary", "checks", "elements", "errors", "escape", "flyby", "friedmann", "kepler", "lagrange",
-    "propagate", "quadrature", "rings", "series", "sphere", "twobody", "_dd", "_roots",
+    "propagate", "quadrature", "rings", "series", "sphere", "twobody", "_dd", "_roots", "frames", "rocket",
+    "manoeuvres", "assist",
 ]
 
 
@@ -155,7 +156,11 @@ runs = [
     ["lagrange", "Earth", "Moon"],
     ["ring", "3", "--m", "1 kg", "--r", "1 m"],
     ["escape", "cosmic"],
+    ["where", "Mars", "--epoch", "2026-11-25"],
+    ["orbit", "Mars", "--epoch", "2026-11-25 TDB"],
     ["escape", "geo", "Earth"],
+    ["rocket", "--m0", "100 t", "--mf", "40 t", "--isp", "300 s", "--thrust", "2 MN"],
+    ["transfer", "hohmann", "--r1", "6678 km", "--r2", "42164 km", "--format", "json"],
     ["cosmology", "--z", "1", "--plot", os.path.join(out, "c.png")],
     ["validate", "circular", "expanding_universe", "--output", os.path.join(out, "v.json"),
      "--plot", os.path.join(out, "v.png")],

@@ -1,0 +1,122 @@
+"""`orbits transfer`: impulsive manoeuvres between circular orbits (Hohmann, bi-elliptic, plane change, phasing)
+and a hyperbolic departure. A sub-application with one command per manoeuvre; main.py mounts it with
+app.add_typer(transfer.app)."""
+
+from typing import Annotated
+
+import typer
+
+from orbits_cli.commands.binary import MASS_HELP, mass_or_body
+from orbits_cli.options import Format, FormatOption, OnlyOption, displays, reports_errors
+
+app = typer.Typer(
+    help="Impulsive manoeuvres: Hohmann, bi-elliptic, plane change, phasing, departure (delta-v budgets, times).",
+    no_args_is_help=True,
+)
+
+PrimaryOption = Annotated[str, typer.Option("--primary", help=f"the central body: {MASS_HELP}")]
+R1Option = Annotated[str, typer.Option("--r1", help="initial circular orbit radius from the centre, e.g. '6678 km'")]
+R2Option = Annotated[str, typer.Option("--r2", help="final circular orbit radius, e.g. '42164 km'")]
+ROption = Annotated[str, typer.Option("--r", help="circular orbit radius from the centre, e.g. '7000 km'")]
+
+
+def _length(text, option):
+    from orbits import inputs
+
+    return inputs.parse_quantity(text, "length", option)
+
+
+def _emit(title, manoeuvre, only, fmt):
+    from orbits import inputs
+    from orbits_cli import render
+
+    render.emit(title, manoeuvre.quantities(inputs.names(only)), fmt.value)
+
+
+def hohmann(
+    r1: R1Option,
+    r2: R2Option,
+    primary: PrimaryOption = "Earth",
+    inc: Annotated[str, typer.Option(
+        "--inc", help="plane change combined with the burn at the larger radius ('28.5 deg'; bare numbers are degrees)")
+    ] = "0",
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """Hohmann transfer: two tangential burns and half an ellipse, optionally turning the plane."""
+    from orbits import Hohmann, inputs
+
+    result = Hohmann.between(mass_or_body(primary, "--primary"), _length(r1, "--r1"), _length(r2, "--r2"),
+                             inclination_change=inputs.parse_angle(inc, "--inc"))
+    _emit(f"Hohmann transfer about {primary}", result, only, fmt)
+
+
+def bi_elliptic(
+    r1: R1Option,
+    r2: R2Option,
+    rb: Annotated[str, typer.Option("--rb", help="common apoapsis of the two ellipses, above both orbits")],
+    primary: PrimaryOption = "Earth",
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """Bi-elliptic transfer: out to rb, periapsis moved to r2, circularised; compared with Hohmann."""
+    from orbits import BiElliptic
+
+    result = BiElliptic.between(mass_or_body(primary, "--primary"), _length(r1, "--r1"), _length(r2, "--r2"),
+                                _length(rb, "--rb"))
+    _emit(f"Bi-elliptic transfer about {primary}", result, only, fmt)
+
+
+def plane_change(
+    r: ROption,
+    angle: Annotated[str, typer.Option(
+        "--angle", help="turn of the orbit plane ('28.5 deg'; bare numbers are degrees)")],
+    primary: PrimaryOption = "Earth",
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """Plane change on a circular orbit: one burn 2 v sin(di / 2) at a node."""
+    from orbits import PlaneChange, inputs
+
+    result = PlaneChange.at(mass_or_body(primary, "--primary"), _length(r, "--r"),
+                            inputs.parse_angle(angle, "--angle"))
+    _emit(f"Plane change about {primary}", result, only, fmt)
+
+
+def phasing(
+    r: ROption,
+    phase: Annotated[str, typer.Option(
+        "--phase", help="how far the target leads ('30 deg'; negative: it trails; bare numbers are degrees)")],
+    revolutions: Annotated[int, typer.Option("--revolutions", min=1, help="revolutions on the phasing orbit")] = 1,
+    primary: PrimaryOption = "Earth",
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """Phasing: a burn onto a faster or slower orbit, k revolutions, a burn back, meeting the target."""
+    from orbits import Phasing, inputs
+
+    result = Phasing.to(mass_or_body(primary, "--primary"), _length(r, "--r"), inputs.parse_angle(phase, "--phase"),
+                        revolutions)
+    _emit(f"Phasing on a circular orbit about {primary}", result, only, fmt)
+
+
+def departure(
+    r: ROption,
+    v_inf: Annotated[str, typer.Option("--v-inf", help="speed left far away, e.g. '3 km/s'")],
+    primary: PrimaryOption = "Earth",
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """Departure from a circular parking orbit onto the hyperbola with the given speed at infinity."""
+    from orbits import Departure, inputs
+
+    result = Departure.to_excess_speed(mass_or_body(primary, "--primary"), _length(r, "--r"),
+                                       inputs.parse_quantity(v_inf, "speed", "--v-inf"))
+    _emit(f"Departure from {primary}", result, only, fmt)
+
+
+app.command("hohmann")(reports_errors(displays(hohmann)))
+app.command("bi-elliptic")(reports_errors(displays(bi_elliptic)))
+app.command("plane-change")(reports_errors(displays(plane_change)))
+app.command("phasing")(reports_errors(displays(phasing)))
+app.command("departure")(reports_errors(displays(departure)))

@@ -1,0 +1,87 @@
+"""The verbs `orbits rocket` and `orbits transfer` (hohmann, bi-elliptic, plane-change, phasing, departure): JSON
+values against the library and published figures, tables, and one-line errors with exit status 2."""
+
+import json
+import math
+
+import pytest
+from typer.testing import CliRunner
+
+from orbits_cli.main import app
+
+runner = CliRunner()
+
+
+def run_json(*args):
+    result = runner.invoke(app, [*args, "--format", "json"])
+    assert result.exit_code == 0, result.output
+    return json.loads(result.stdout)
+
+
+def test_hohmann_leo_to_geo():
+    """Wikipedia's example: 6678 km to 42164 km, 2.42 + 1.46 km/s (rounded speeds); 3.893 km/s unrounded."""
+    data = run_json("transfer", "hohmann", "--r1", "6678 km", "--r2", "42164 km")
+    assert data["delta_v"]["unit"] == "m / s" and round(data["delta_v"]["value"] / 1e3, 3) == 3.893
+    assert abs(data["first_burn"]["value"] / 1e3 - 2.42) < 0.01
+    assert abs(data["second_burn"]["value"] / 1e3 - 1.46) < 0.01
+    assert round(data["transfer_time"]["value"] / 3600, 3) == 5.275
+    turned = run_json("transfer", "hohmann", "--r1", "6678 km", "--r2", "42164 km", "--inc", "28.5",
+                      "--only", "delta_v")
+    assert list(turned) == ["delta_v"] and round(turned["delta_v"]["value"] / 1e3, 3) == 4.256
+
+
+def test_bielliptic_plane_change_phasing_departure():
+    bi = run_json("transfer", "bi-elliptic", "--r1", "7000 km", "--r2", "105000 km", "--rb", "210000 km")
+    assert bi["saving"]["value"] > 0 and bi["hohmann_delta_v"]["value"] > bi["delta_v"]["value"]
+    turn = run_json("transfer", "plane-change", "--r", "7000 km", "--angle", "60 deg")
+    assert turn["delta_v"]["value"] == pytest.approx(turn["speed"]["value"], rel=1e-15)
+    chase = run_json("transfer", "phasing", "--r", "7000 km", "--phase", "20", "--revolutions", "2")
+    assert chase["burn"]["value"] < 0 and chase["delta_v"]["value"] == 2 * abs(chase["burn"]["value"])
+    away = run_json("transfer", "departure", "--primary", "Earth", "--r", "6678 km", "--v-inf", "0.001 m/s")
+    assert away["departure_speed"]["value"] == pytest.approx(math.sqrt(2) * away["parking_speed"]["value"], rel=1e-12)
+
+
+def test_rocket_single_and_staged():
+    one = run_json("rocket", "--m0", "100 t", "--mf", "40 t", "--isp", "300 s", "--thrust", "2 MN",
+                   "--g", "9.80665 m/s2")
+    assert one["delta_v"]["value"] == pytest.approx(300 * 9.80665 * math.log(2.5), rel=1e-15)
+    assert one["burn_time"]["unit"] == "s" and one["burn_time"]["value"] == pytest.approx(60e3 * 300 * 9.80665 / 2e6)
+    assert one["vertical_ascent_speed"]["value"] == pytest.approx(
+        one["delta_v"]["value"] - 9.80665 * one["burn_time"]["value"], rel=1e-14)
+    staged = run_json("rocket", "--propellant", "80 t", "--propellant", "15 t", "--structure", "8 t",
+                      "--structure", "2 t", "--payload", "1 t", "--exhaust-speed", "3 km/s")
+    expected = 3000 * (math.log(106 / 26) + math.log(18 / 3))
+    assert staged["delta_v"]["value"] == pytest.approx(expected, rel=1e-15)
+    assert staged["stage_delta_v"]["value"] == pytest.approx([3000 * math.log(106 / 26), 3000 * math.log(6)])
+
+
+def test_tables_fit_80_columns():
+    for args in (["transfer", "hohmann", "--r1", "6678 km", "--r2", "42164 km"],
+                 ["rocket", "--propellant", "2100 t", "--propellant", "440 t", "--propellant", "110 t",
+                  "--structure", "130 t", "--structure", "40 t", "--structure", "13 t", "--payload", "45 t",
+                  "--isp", "263 s", "--isp", "421 s", "--isp", "421 s", "--thrust", "34 MN", "--thrust", "5.1 MN",
+                  "--thrust", "1 MN"]):
+        result = runner.invoke(app, args)
+        assert result.exit_code == 0, result.output
+        assert "delta_v" in result.stdout and max(map(len, result.stdout.splitlines())) <= 80
+
+
+@pytest.mark.parametrize("args, message", [
+    (["transfer", "bi-elliptic", "--r1", "7000 km", "--r2", "105000 km", "--rb", "2e4 km"],
+     "intermediate radius rb = 20000000.0 m is outside the allowed range"),
+    (["transfer", "hohmann", "--r1", "300 km", "--r2", "42164 km"], "is inside Earth"),
+    (["transfer", "hohmann", "--r1", "6678", "--r2", "42164 km"], "has no unit"),
+    (["transfer", "phasing", "--r", "7000 km", "--phase", "300"], "phase = "),
+    (["transfer", "plane-change", "--r", "7000 km", "--angle", "200"], "outside the allowed range [0, pi] rad"),
+    (["rocket", "--m0", "1 t", "--mf", "2 t", "--isp", "300 s"], "final mass mf = 2000.0 kg is outside"),
+    (["rocket", "--m0", "2 t", "--mf", "1 t"], "exactly one of exhaust_speed"),
+    (["rocket", "--m0", "2 t", "--mf", "1 t", "--isp", "300 s", "--thrust", "3 km"], "is not a force"),
+    (["rocket", "--m0", "2 t", "--propellant", "1 t", "--isp", "300 s"], "give --m0 and --mf"),
+    (["rocket", "--propellant", "1 t", "--structure", "1 t", "--structure", "1 t", "--payload", "1 t",
+      "--isp", "300 s"], "1 --propellant but 2 --structure"),
+])
+def test_bad_input_is_one_line_and_exit_2(args, message):
+    result = runner.invoke(app, args)
+    assert result.exit_code == 2
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("orbits: error:") and message in lines[0], result.stderr
