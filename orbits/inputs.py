@@ -28,6 +28,7 @@ KINDS = {
     "angle": (units.RAD, "deg"),
     "speed": (units.M_PER_S, "km/s"),
     "acceleration": (units.M / units.S**2, "m/s2"),
+    "force": (u.N, "kN"),
     "gravitational parameter": (units.M3_PER_S2, "m3 / s2"),
     "rate": (units.S**-1, "km / s / Mpc"),
     "dimensionless": (u.one, ""),

@@ -61,15 +61,12 @@ def command(
 
 
 def _each(texts, kind, option):
-    """One Quantity array from a repeated option; a force is read as a quantity in N."""
+    """One Quantity array from a repeated option."""
     import astropy.units as u
 
     from orbits import OrbitDomainError, inputs
 
-    if kind == "force":
-        values = [u.Quantity(_force(text, option)) for text in texts]
-    else:
-        values = [inputs.parse_quantity(text, kind, option) for text in texts]
+    values = [inputs.parse_quantity(text, kind, option) for text in texts]
     unit = values[0].unit
     if len(values) == 1:
         return values[0]
@@ -78,19 +75,3 @@ def _each(texts, kind, option):
     except u.UnitConversionError:
         raise OrbitDomainError(f"{option}: {', '.join(texts)} do not share one kind of unit") from None
 
-
-def _force(text, option):
-    """A force from "VALUE UNIT" (N, kN, MN, lbf)."""
-    import astropy.units as u
-
-    from orbits import OrbitDomainError
-
-    try:
-        value = u.Quantity(text)
-    except (TypeError, ValueError):
-        raise OrbitDomainError(f"{option}: cannot read {text!r} as a force; write e.g. '34 MN'") from None
-    if not value.unit.is_equivalent(u.N):
-        raise OrbitDomainError(f"{option}: {text!r} is not a force; write e.g. '34 MN' or '2 kN'")
-    if not value.isscalar or not bool(abs(value.value) < float("inf")):
-        raise OrbitDomainError(f"{option}: {text!r} must be one finite force")
-    return value

@@ -75,7 +75,7 @@ def test_tables_fit_80_columns():
     (["transfer", "plane-change", "--r", "7000 km", "--angle", "200"], "outside the allowed range [0, pi] rad"),
     (["rocket", "--m0", "1 t", "--mf", "2 t", "--isp", "300 s"], "final mass mf = 2000.0 kg is outside"),
     (["rocket", "--m0", "2 t", "--mf", "1 t"], "exactly one of exhaust_speed"),
-    (["rocket", "--m0", "2 t", "--mf", "1 t", "--isp", "300 s", "--thrust", "3 km"], "is not a force"),
+    (["rocket", "--m0", "2 t", "--mf", "1 t", "--isp", "300 s", "--thrust", "3 km"], "not a force"),
     (["rocket", "--m0", "2 t", "--propellant", "1 t", "--isp", "300 s"], "give --m0 and --mf"),
     (["rocket", "--propellant", "1 t", "--structure", "1 t", "--structure", "1 t", "--payload", "1 t",
       "--isp", "300 s"], "1 --propellant but 2 --structure"),
