@@ -7,12 +7,11 @@ and each answer's largest distance from jplephem's is reported.
 """
 
 import importlib.util
-import time
 from dataclasses import dataclass
 
 import numpy as np
 
-from orbits.tools.bench import _mega, _sig, _table
+from orbits.tools.bench import _best_time, _mega, _sig, _table
 
 #: the DE421 chain of Mars relative to the solar-system barycentre
 _MARS = ((0, 4), (4, 499))
@@ -35,15 +34,6 @@ def _epochs(n, seed):
 
     jd = np.random.default_rng(seed).uniform(2415021.0, 2469807.0, n)
     return Time(jd, format="jd", scale="tdb")
-
-
-def _best(call, repeats):
-    best, result = np.inf, None
-    for _ in range(repeats):
-        start = time.perf_counter()
-        result = call()
-        best = min(best, time.perf_counter() - start)
-    return best, result
 
 
 def _jplephem(when):
@@ -97,10 +87,10 @@ def bench_ephemeris(n: int = 100_000, seed: int = 0, repeats: int = 3) -> list[E
         return [EphemerisRow("orbits", "needs orbits[ephemeris] (skyfield-data, jplephem)", np.nan, np.nan, np.nan)]
     when = _epochs(n, seed)
     ephemeris.state("Mars", when[:2], center="SSB", source="de421")  # open the kernel outside the timing
-    seconds, (r_ref, v_ref) = _best(_jplephem(when), repeats)
+    seconds, (r_ref, v_ref) = _best_time(_jplephem(when), repeats)
     rows = [EphemerisRow("jplephem (two segments, raw)", "ok", n / seconds, 0.0, 0.0)]
     for name, factory in (("orbits.ephemeris.state", _orbits), ("astropy get_body_barycentric_posvel", _astropy)):
-        seconds, (r, v) = _best(factory(when), repeats)
+        seconds, (r, v) = _best_time(factory(when), repeats)
         rows.append(EphemerisRow(name, "ok", n / seconds, float(np.abs(r - r_ref).max()),
                                  float(np.abs(v - v_ref).max())))
     if importlib.util.find_spec("skyfield") is None:
