@@ -153,6 +153,8 @@ def _one_epoch(text: str, scale: str) -> Time:
 def tdb_julian_dates(when: Time) -> tuple[np.ndarray, np.ndarray]:
     """The epoch as a two-part TDB Julian date (jd1, jd2), float64 arrays (ERFA's "dubious year" warnings for
     dates outside its leap-second table are silenced: DE421's span check says what is wrong)."""
+    if when.scale == "tdb":
+        return np.asarray(when.jd1, dtype=float), np.asarray(when.jd2, dtype=float)
     with _quiet_erfa():
         tdb = when.tdb
     return np.asarray(tdb.jd1, dtype=float), np.asarray(tdb.jd2, dtype=float)
@@ -201,7 +203,7 @@ def _de421_from_ssb(point: str, jd1: np.ndarray, jd2: np.ndarray) -> tuple[np.nd
         position, velocity = kernel[center, target].compute_and_differentiate(jd1, jd2)
         r += position
         v += velocity
-    return np.moveaxis(r, 0, -1) * 1e3, np.moveaxis(v, 0, -1) * _KM_PER_DAY
+    return np.moveaxis(r * 1e3, 0, -1), np.moveaxis(v * _KM_PER_DAY, 0, -1)  # scaled first: contiguous
 
 
 def _builtin_from_ssb(point: str, when: Time) -> tuple[np.ndarray, np.ndarray]:
@@ -341,10 +343,12 @@ def state(body: str, when: Any, center: str = "Sun", *, source: str = "auto", sc
     target, origin = point_name(body), point_name(center)
     resolved = _resolve(source)
     when = epoch(when, scale)
-    r_body, v_body = barycentric(target, when, resolved)
-    r_center, v_center = barycentric(origin, when, resolved)
-    return BodyState(target, origin, when, r_body - r_center, v_body - v_center,
-                     DE421 if resolved == "de421" else BUILTIN)
+    r, v = barycentric(target, when, resolved)
+    if origin != "solar system barycentre":
+        r_center, v_center = barycentric(origin, when, resolved)
+        r -= r_center
+        v -= v_center
+    return BodyState(target, origin, when, r, v, DE421 if resolved == "de421" else BUILTIN)
 
 
 def states(bodies: Sequence[str], when: Any, center: str = "solar system barycentre", *,

@@ -49,7 +49,7 @@ def _jplephem(when):
             p, d = kernel[pair].compute_and_differentiate(jd1, jd2)
             r += p
             v += d
-        return r.T * 1e3, v.T * (1e3 / 86400.0)
+        return (r * 1e3).T, (v * (1e3 / 86400.0)).T
 
     return call
 
