@@ -12,6 +12,7 @@ from typer.core import TyperGroup
 from orbits_cli.commands import (
     bench,
     binary,
+    collide,
     cosmology,
     escape,
     flyby,
@@ -19,7 +20,9 @@ from orbits_cli.commands import (
     kepler,
     lagrange,
     orbit,
+    pendulum,
     precision,
+    projectile,
     ring,
     rocket,
     transfer,
@@ -72,6 +75,9 @@ app.add_typer(escape.app, name="escape")
 app.command("rocket")(reports_errors(displays(rocket.command)))
 app.add_typer(transfer.app, name="transfer")
 app.command("where")(reports_errors(displays(where.command)))
+app.command("collide")(reports_errors(displays(collide.command)))
+app.command("projectile")(reports_errors(displays(projectile.command)))
+app.command("pendulum")(reports_errors(displays(pendulum.command)))
 app.command("info")(reports_errors(info.command))
 bench_app.command("kepler")(reports_errors(bench.kepler))
 bench_app.command("propagate")(reports_errors(bench.propagate))

@@ -1,0 +1,142 @@
+"""Pictures of the mechanics objects (notes IX, XI, XX, XXV). matplotlib is imported only when drawing.
+
+Every function draws on a given Axes (or a new Figure) and returns (fig, ax); axis labels carry units; save with
+orbits.plot.save (atomic PNG, SVG or PDF).
+"""
+
+from typing import TYPE_CHECKING, Any
+
+import astropy.units as u
+import numpy as np
+
+if TYPE_CHECKING:
+    from orbits.mechanics import Collision, DampedOscillator, Pendulum, Projectile, Rolling, VerticalCircle
+
+
+def _axes(ax):
+    import matplotlib.pyplot as plt
+
+    if ax is None:
+        fig, ax = plt.subplots(figsize=(6.4, 4.8), layout="constrained")
+        return fig, ax
+    return ax.figure, ax
+
+
+def _finish(ax, x_label, y_label):
+    ax.set_xlabel(x_label)
+    ax.set_ylabel(y_label)
+    ax.grid(alpha=0.3)
+    ax.legend(loc="best", fontsize="small")
+
+
+def collision_velocities(collision: "Collision", ax: Any = None) -> tuple[Any, Any]:
+    """The velocities before (solid) and after (dashed) a collision as arrows in velocity space, with the
+    centre-of-mass velocity (IX); a head-on collision's velocities lie along the horizontal axis."""
+    fig, ax = _axes(ax)
+    def planar(q):
+        v = np.asarray(q.to_value(u.m / u.s), dtype=float)
+        return np.array([float(v), 0.0]) if v.ndim == 0 else v[:2]
+
+    arrows = [("body 1 before", collision.v1 << u.m / u.s, "C0", "-"), ("body 2 before", collision.v2 << u.m / u.s,
+              "C1", "-"), ("body 1 after", collision.velocity1_after, "C0", "--"),
+              ("body 2 after", collision.velocity2_after, "C1", "--")]
+    head_on = not collision.vectors
+    rows = (0.3, 0.1, -0.1, -0.3)  # a head-on collision's arrows, one row each, all along v_x
+    tips = []
+    for k, (label, velocity, color, style) in enumerate(arrows):
+        x, y = planar(velocity)
+        base = rows[k] if head_on else 0.0
+        ax.plot([0.0, x], [base, y + base], color=color, ls=style, lw=1.8, label=label)
+        ax.annotate("", xy=(x, y + base), xytext=(0.0, base), arrowprops=dict(arrowstyle="-|>", color=color, lw=0))
+        tips.append((x, y + base))
+    center = planar(collision.center_of_mass_velocity)
+    if head_on:
+        ax.axvline(center[0], color="k", ls=":", lw=1.2, label="centre-of-mass velocity")
+        ax.set_ylim(-0.5, 0.5)
+        ax.set_yticks(rows, ["body 1 before", "body 2 before", "body 1 after", "body 2 after"])
+    else:
+        ax.plot(*center, marker="+", ms=12, color="k", ls="none", label="centre-of-mass velocity")
+        ax.set_aspect("equal", adjustable="datalim")
+    tips = np.array(tips + [tuple(center), (0.0, 0.0)])
+    span = max(np.ptp(tips[:, 0]), np.ptp(tips[:, 1]), 1e-300)
+    ax.set_xlim(tips[:, 0].min() - 0.15 * span, tips[:, 0].max() + 0.15 * span)
+    ax.set_title(f"restitution e = {float(np.ravel(collision.e)[0]):.3g}", fontsize="medium")
+    _finish(ax, "v_x [m / s]" if not head_on else "velocity along the line [m / s]", "v_y [m / s]" if not head_on
+            else "")
+    return fig, ax
+
+
+def projectile_paths(projectiles: "dict[str, Projectile]", ax: Any = None, samples: int = 200) -> tuple[Any, Any]:
+    """y against x for {label: Projectile} (XX), each with its apex (triangle) and landing point (dot), in m."""
+    fig, ax = _axes(ax)
+    for k, (label, shot) in enumerate(projectiles.items()):
+        x, y = shot.path(samples)
+        ax.plot(x.to_value(u.m), y.to_value(u.m), color=f"C{k}", label=label)
+        ax.plot(shot.apex_distance.to_value(u.m), shot.apex_height.to_value(u.m), marker="^", color=f"C{k}",
+                ls="none")
+        ax.plot(shot.range.to_value(u.m), 0.0, marker="o", color=f"C{k}", ls="none")
+    ax.axhline(0.0, color="gray", lw=0.8)
+    ax.set_aspect("equal", adjustable="datalim")
+    _finish(ax, "x [m]", "y [m]")
+    return fig, ax
+
+
+def pendulum_periods(pendulum: "Pendulum | None" = None, ax: Any = None, samples: int = 400) -> tuple[Any, Any]:
+    """T / T0 against the amplitude up to 179 deg: exact (AGM), and the series 1 + theta0**2 / 16 (XXV.iv); a
+    given Pendulum is marked."""
+    from orbits.core.oscillations import pendulum_period, pendulum_period_series
+
+    fig, ax = _axes(ax)
+    amplitude = np.linspace(0.0, np.radians(179.0), samples)
+    ax.plot(np.degrees(amplitude), pendulum_period(1.0, amplitude) / (2 * np.pi), color="C0",
+            label="exact: 4 K(sin^2(theta0 / 2)) / (2 pi)")
+    ax.plot(np.degrees(amplitude), pendulum_period_series(amplitude, 2), color="C1", ls="--",
+            label="1 + theta0^2 / 16")
+    if pendulum is not None:
+        ax.plot(pendulum.amplitude_angle.to_value(u.deg), pendulum.period_ratio.value, marker="o", color="k",
+                ls="none", label="this pendulum")
+    _finish(ax, "amplitude theta0 [deg]", "period / small-angle period [dimensionless]")
+    return fig, ax
+
+
+def damped_motion(oscillators: "dict[str, DampedOscillator]", duration: u.Quantity, ax: Any = None,
+                  samples: int = 400) -> tuple[Any, Any]:
+    """x(t) for {label: DampedOscillator} over `duration` (XXV.v)."""
+    fig, ax = _axes(ax)
+    times = np.linspace(0.0, duration.to_value(u.s), samples) << u.s
+    for k, (label, oscillator) in enumerate(oscillators.items()):
+        ax.plot(times.value, oscillator.position_at(times).to_value(u.m), color=f"C{k}",
+                label=f"{label} ({oscillator.regime})")
+    ax.axhline(0.0, color="gray", lw=0.8)
+    _finish(ax, "t [s]", "x [m]")
+    return fig, ax
+
+
+def vertical_circle_forces(circles: "dict[str, VerticalCircle]", ax: Any = None,
+                           samples: int = 361) -> tuple[Any, Any]:
+    """N / (m g) against the angle from the lowest point for {label: VerticalCircle} (XXV.vi, ERRATA #101), over
+    the arc each body reaches; N < 0 means a rod pushes outward (a string would have slackened)."""
+    fig, ax = _axes(ax)
+    theta = np.linspace(0.0, 2 * np.pi, samples)
+    for k, (label, circle) in enumerate(circles.items()):
+        reach = np.isfinite(circle.speed_at(theta << u.rad).value)
+        force = circle.normal_force_at(theta << u.rad).to_value(u.N) / (circle.mass * circle.g)
+        shown = np.where(reach, force, np.nan)  # a gap where the body never gets
+        ax.plot(np.degrees(theta), shown, color=f"C{k}", label=f"{label}: {circle.regime}")
+    ax.axhline(0.0, color="gray", lw=0.8)
+    _finish(ax, "angle from the lowest point [deg]", "normal force N / (m g) [dimensionless]")
+    return fig, ax
+
+
+def rolling_race(rollings: "dict[str, Rolling]", length: u.Quantity, ax: Any = None,
+                 samples: int = 200) -> tuple[Any, Any]:
+    """Distance down an incline against time for {label: Rolling} (XI), each until it has covered `length`."""
+    fig, ax = _axes(ax)
+    distance = length.to_value(u.m)
+    for k, (label, rolling) in enumerate(rollings.items()):
+        a = rolling.acceleration.to_value(u.m / u.s**2)
+        end = np.sqrt(2 * distance / a)
+        t = np.linspace(0.0, end, samples)
+        ax.plot(t, 0.5 * a * t * t, color=f"C{k}", label=f"{label} (k = {float(rolling.factor):.3g})")
+    _finish(ax, "t [s]", "distance down the incline [m]")
+    return fig, ax

@@ -1,0 +1,225 @@
+"""The unit-aware mechanics objects (notes IX, XI, XX, XXV): units in and out, tables, reprs, input errors, the
+notes' worked numbers, and the slingshot as a collision against orbits.Flyby."""
+
+import doctest
+import math
+
+import astropy.units as u
+import numpy as np
+import pytest
+
+import orbits.mechanics.collisions
+import orbits.mechanics.oscillations
+import orbits.mechanics.projectile
+import orbits.mechanics.rotation
+from orbits import Flyby, OrbitDomainError
+from orbits.mechanics import (
+    Collision,
+    ConicalPendulum,
+    DampedOscillator,
+    DrivenOscillator,
+    EffectiveGravity,
+    Pendulum,
+    Projectile,
+    RigidBody,
+    Rotation,
+    VerticalCircle,
+    energy_transfer,
+    slingshot,
+)
+
+
+@pytest.mark.parametrize("module", [orbits.mechanics.collisions, orbits.mechanics.rotation,
+                                    orbits.mechanics.projectile, orbits.mechanics.oscillations])
+def test_docstring_examples(module):
+    assert doctest.testmod(module).failed == 0
+
+
+def test_head_on_collision_in_units():
+    hit = Collision.head_on(2 * u.kg, 3 * u.m / u.s, 1000 * u.g, -1 * u.km / u.h, restitution=0.5)
+    v2 = (-1 * u.km / u.h).to_value(u.m / u.s)
+    assert hit.velocity1_after.unit == u.m / u.s
+    assert hit.momentum.to_value(u.kg * u.m / u.s) == pytest.approx(2 * 3 + v2, rel=1e-15)
+    assert (hit.velocity2_after - hit.velocity1_after).value == pytest.approx(0.5 * (3 - v2), rel=1e-15)
+    assert hit.internal_kinetic_energy_after.value == pytest.approx(0.25 * hit.internal_kinetic_energy_before.value)
+    assert hit.energy_lost.value > 0
+    table = hit.quantities()
+    assert list(table)[:3] == ["restitution", "reduced_mass", "center_of_mass_velocity"]
+    assert repr(hit).startswith("Collision(m1 = 2 kg, m2 = 1 kg, e = 0.5") and "\n" not in repr(hit)
+    assert "<table>" in hit._repr_html_()
+
+
+def test_oblique_collision_with_2d_vectors_and_a_normal():
+    hit = Collision.oblique(1 * u.kg, [2, 0] * u.m / u.s, 1 * u.kg, [0, 0] * u.m / u.s,
+                            normal=[math.cos(math.radians(30)), math.sin(math.radians(30))])
+    v1, v2 = hit.velocity1_after.value, hit.velocity2_after.value
+    assert v1 @ v2 == pytest.approx(0.0, abs=1e-15)  # equal masses, elastic, one at rest: 90 degrees apart
+    assert hit.kinetic_energy_after.value == pytest.approx(hit.kinetic_energy_before.value, rel=1e-15)
+    with pytest.raises(OrbitDomainError, match="do not approach"):
+        Collision.oblique(1 * u.kg, [2, 0] * u.m / u.s, 1 * u.kg, [0, 0] * u.m / u.s, normal=[-1, 0])
+
+
+def test_energy_transfer_and_its_errors():
+    assert energy_transfer(2).value == pytest.approx(8 / 9)  # ERRATA #7
+    assert energy_transfer(1, restitution=0).value == pytest.approx(0.25)
+    with pytest.raises(OrbitDomainError, match="mass ratio r = m1 / m2 = -1.0"):
+        energy_transfer(-1)
+
+
+def test_slingshot_is_the_head_on_limit_of_a_flyby():
+    """The notes' slingshot: bouncing elastically off a planet moving at U gives v' = 2 U - v. A gravity assist
+    (orbits.Flyby, patched conics) turns the relative velocity by the deflection delta instead of reversing it:
+    v' = U + R(delta)(v - U), the same speed change 2 v_inf at delta = 180 degrees, and 2 v_inf sin(delta / 2) in
+    general. Jupiter (U = 13.07 km/s) met head-on by a probe at 10 km/s."""
+    planet, craft = np.array([13.07, 0.0]), np.array([-10.0, 0.0])
+    bounced = slingshot(planet * u.km / u.s, craft * u.km / u.s).to_value(u.km / u.s)
+    assert bounced == pytest.approx([36.14, 0.0])  # 2 U - v
+    relative = craft - planet
+    v_inf = np.linalg.norm(relative)
+    # a point-mass pass at q = 1 km turns it by 179.67 deg: the speed is within 3.9e-6 of the collision's; a real
+    # pass at 1.1 Jupiter radii turns it by 97.5 deg and leaves at 27.95 km/s instead of 36.14 km/s
+    for periapsis, tolerance in ((1.0, 1e-5), (1.1 * 71492, 0.3)):
+        flyby = Flyby.past("Jupiter", v_inf=v_inf * u.km / u.s, periapsis=periapsis * u.km)
+        delta = flyby.deflection_angle.to_value(u.rad)
+        turn = np.array([[math.cos(delta), -math.sin(delta)], [math.sin(delta), math.cos(delta)]])
+        after = planet + turn @ relative
+        assert np.linalg.norm(after - craft) == pytest.approx(2 * v_inf * math.sin(delta / 2), rel=1e-12)
+        assert np.linalg.norm(after) <= np.linalg.norm(bounced) + 1e-12  # the collision is the upper bound
+        assert np.linalg.norm(after) == pytest.approx(np.linalg.norm(bounced), rel=tolerance)
+    grazing = Flyby.past("Jupiter", v_inf=v_inf * u.km / u.s, periapsis=1 * u.mm)
+    assert grazing.deflection_angle.to_value(u.deg) == pytest.approx(180.0, abs=1e-3)  # 179.99967 deg
+
+
+def test_rotation_round_trips_in_units():
+    turn = Rotation.from_principal_angles(10 * u.deg, -20 * u.deg, 30 * u.deg)
+    assert turn.x_angle.to_value(u.deg) == pytest.approx(10) and turn.z_angle.to_value(u.deg) == pytest.approx(30)
+    again = Rotation.from_axis_angle(turn.axis, turn.angle)
+    np.testing.assert_allclose(again.matrix, turn.matrix, atol=1e-15)
+    vector = [1.0, 2.0, 3.0] * u.km
+    np.testing.assert_allclose(turn.inverse.apply(turn.apply(vector)).value, vector.value, rtol=1e-15)
+    np.testing.assert_allclose((turn @ turn.inverse).matrix, np.eye(3), atol=1e-15)
+    assert repr(Rotation.from_axis_angle([0, 0, 2], 90 * u.deg)) == "Rotation(angle = 90 deg, axis = 0, 0, 1)"
+    with pytest.raises(OrbitDomainError, match="not a rotation"):
+        Rotation.from_matrix(np.diag([1.0, 1.0, -1.0]))
+    with pytest.raises(TypeError, match="has no unit"):
+        Rotation.from_axis_angle([0, 0, 1], 1.0)
+
+
+def test_rigid_bodies_parallel_axes_and_rolling():
+    rod = RigidBody.thin_rod(3 * u.kg, 2 * u.m)
+    end = rod.moment_about([1, 0, 0], point=[0, 0, 1] * u.m)  # about an end: m L**2 / 3
+    assert end.to_value(u.kg * u.m**2) == pytest.approx(4.0, rel=1e-15)
+    cloud = RigidBody.point_masses([1, 1] * u.kg, [[1, 0, 0], [-1, 0, 0]] * u.m)
+    assert list(cloud.principal_moments.value) == pytest.approx([0.0, 2.0, 2.0])
+    omega = [0, 0, 3] * u.rad / u.s
+    assert cloud.angular_momentum(omega).value == pytest.approx([0, 0, 6.0])
+    assert cloud.rotational_kinetic_energy(omega).to_value(u.J) == pytest.approx(9.0)
+    hoop = RigidBody.thin_hoop(1 * u.kg, 0.5 * u.m).rolling_down(30 * u.deg)
+    assert hoop.acceleration.value == pytest.approx(9.80665 / 4)  # g sin 30 / 2
+    assert hoop.speed_after(1 * u.m).value == pytest.approx(math.sqrt(9.80665))
+    with pytest.raises(OrbitDomainError, match="no rolling radius"):
+        rod.rolling_down(10 * u.deg)
+    with pytest.raises(OrbitDomainError, match=r"mass m = -1.0 kg is outside"):
+        RigidBody.solid_sphere(-1 * u.kg, 1 * u.m)
+
+
+def test_projectile_drag_free_linear_and_quadratic():
+    ball = Projectile.launch(20 * u.m / u.s, 45 * u.deg)
+    assert ball.range.to_value(u.m) == pytest.approx(400 / 9.80665, rel=1e-15)
+    assert ball.apex_height.to_value(u.m) == pytest.approx(100 / 9.80665, rel=1e-15)
+    with pytest.raises(OrbitDomainError, match="no terminal speed"):
+        _ = ball.terminal_speed
+    stokes = ball.with_linear_drag(0.2 / u.s)
+    assert stokes.range < ball.range and stokes.terminal_speed.value == pytest.approx(9.80665 / 0.2)
+    assert stokes.position_at(stokes.time_of_flight)[1].to_value(u.m) == pytest.approx(0.0, abs=1e-13)
+    baseball = ball.with_quadratic_drag(mass=0.145 * u.kg, drag_coefficient=0.47, density=1.225 * u.kg / u.m**3,
+                                        area=math.pi * (0.0366 * u.m) ** 2)
+    assert baseball.terminal_speed.to_value(u.m / u.s) == pytest.approx(
+        math.sqrt(2 * 0.145 * 9.80665 / (0.47 * 1.225 * math.pi * 0.0366**2)), rel=1e-15)
+    x, y = baseball.path(50)
+    assert x[-1].value == pytest.approx(baseball.range.value, rel=1e-12) and abs(y[-1].value) < 1e-9
+    assert set(baseball.quantities()) >= {"range", "apex_height", "time_of_flight", "landing_speed"}
+    with pytest.raises(OrbitDomainError, match="no closed-form x"):
+        baseball.position_at(1 * u.s)
+    with pytest.raises(OrbitDomainError, match=r"launch angle = .* \[-pi/2, pi/2\] rad"):
+        Projectile.launch(20 * u.m / u.s, 100 * u.deg)
+    many = Projectile.launch([10, 20] * u.m / u.s, 30 * u.deg, height=5 * u.m)
+    assert many.range.shape == (2,) and many.with_quadratic_drag(30 * u.m / u.s).range.shape == (2,)
+
+
+def test_effective_gravity_on_earth_and_the_conical_pendulum():
+    equator, pole = EffectiveGravity.on_earth(0 * u.deg), EffectiveGravity.on_earth(90 * u.deg)
+    spin = (2 * math.pi / 86164.0905) ** 2 * 6371e3
+    assert (pole.downward - equator.downward).value == pytest.approx(spin, rel=1e-12)  # 0.0339 m/s2
+    middle = EffectiveGravity.on_earth(45 * u.deg)
+    assert middle.deflection.to(u.deg).value == pytest.approx(0.0989, abs=1e-4)  # about 0.1 degree
+    cone = ConicalPendulum.at_angle(1 * u.m, 60 * u.deg, mass=2 * u.kg)
+    assert cone.tension.to_value(u.N) == pytest.approx(2 * 2 * 9.80665, rel=1e-15)  # m g sec(60 deg)
+    assert ConicalPendulum.at_rate(1 * u.m, cone.angular_speed).angle == pytest.approx(math.radians(60), rel=1e-14)
+
+
+def test_pendulums_and_oscillators():
+    swing = Pendulum.simple(1 * u.m, 170 * u.deg)
+    assert swing.period_ratio.value == pytest.approx(2.4393627196738, rel=1e-13)  # mpmath 4 K / (2 pi)
+    assert swing.angle_at(0 * u.s).to_value(u.deg) == pytest.approx(170)
+    rod = Pendulum.physical(2 * u.kg, (2 * 1.2**2 / 3) * u.kg * u.m**2, 0.6 * u.m, 5 * u.deg)
+    assert rod.small_angle_frequency.value == pytest.approx(math.sqrt(3 * 9.80665 / 2.4))  # ERRATA #90
+    with pytest.raises(OrbitDomainError, match=r"amplitude theta0 = .* \[0, pi\) rad"):
+        Pendulum.simple(1 * u.m, 180 * u.deg)
+    damped = DampedOscillator.of(math.sqrt(3) / u.s, 1.1 / u.s, 1 * u.cm)
+    assert damped.regime == "underdamped" and damped.position_at(0 * u.s).to_value(u.cm) == pytest.approx(1)
+    assert DampedOscillator.of(1 / u.s, 2 / u.s, 1 * u.m).regime == "critically damped"
+    driven = DrivenOscillator.of(2 * u.rad / u.s, 0.5 / u.s, 1 * u.m / u.s**2, 2 * u.rad / u.s)
+    assert driven.phase_lag.to_value(u.deg) == pytest.approx(90)
+    assert driven.velocity_amplitude.value == pytest.approx(1 / 0.5)  # F0 / (m b) at resonance
+
+
+@pytest.mark.parametrize("ratio, support, regime", [(2.3, "string", "loops"), (2.0, "string", "leaves the circle"),
+                                                    (1.0, "string", "swings"), (2.1, "rod", "loops"),
+                                                    (1.5, "rod", "swings"), (0.0, "rod", "at rest")])
+def test_vertical_circle_regimes(ratio, support, regime):
+    """ERRATA #103-#105: thresholds sqrt(5 g R) and sqrt(2 g R) for a string, 2 sqrt(g R) for a rod."""
+    circle = VerticalCircle.of(1 * u.m, ratio * math.sqrt(9.80665) * u.m / u.s, mass=1 * u.kg, support=support)
+    assert circle.regime == regime
+    names = set(circle.quantities())
+    assert ("period" in names) == (regime in ("loops", "swings"))
+    assert ("leaving_angle" in names) == (regime == "leaves the circle")
+    if regime == "loops" and support == "string":
+        assert circle.normal_force_at_top.value >= 0
+
+
+def test_pictures_draw_what_the_objects_compute(tmp_path):
+    """Each plot's lines end where the library says: the velocities after, the landing point, the period ratio,
+    the normal force at the top and bottom, the rolling race's finishing times."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from orbits.mechanics import Rolling, plots
+    from orbits.plot import save
+
+    hit = Collision.head_on(2 * u.kg, 3 * u.m / u.s, 1 * u.kg, -1 * u.m / u.s, 0.5)
+    _, ax = plots.collision_velocities(hit)
+    ends = {line.get_label(): line.get_xdata()[-1] for line in ax.get_lines()}
+    assert ends["body 1 after"] == pytest.approx(1.0) and ends["body 2 after"] == pytest.approx(3.0)
+    shot = Projectile.launch(30 * u.m / u.s, 60 * u.deg).with_quadratic_drag(25 * u.m / u.s)
+    fig, ax = plots.projectile_paths({"drag": shot})
+    path = ax.get_lines()[0].get_xydata()
+    assert path[-1, 0] == pytest.approx(shot.range.value, rel=1e-12) and abs(path[-1, 1]) < 1e-9
+    assert path[:, 1].max() == pytest.approx(shot.apex_height.value, rel=1e-4)
+    save(fig, tmp_path / "path.png")
+    assert (tmp_path / "path.png").stat().st_size > 10000
+    _, ax = plots.pendulum_periods(Pendulum.simple(1 * u.m, 170 * u.deg))
+    marked = [line for line in ax.get_lines() if line.get_label() == "this pendulum"][0].get_xydata()[0]
+    assert tuple(marked) == pytest.approx((170.0, 2.4393627196738))
+    circle = VerticalCircle.of(1 * u.m, 6.5 * u.m / u.s, mass=1 * u.kg, support="rod")
+    _, ax = plots.vertical_circle_forces({"rod": circle})
+    force = ax.get_lines()[0].get_xydata()
+    assert force[0, 1] == pytest.approx((6.5**2 + 9.80665) / 9.80665)  # (u**2 + g R) / (g R) at the bottom
+    assert force[180, 1] == pytest.approx((6.5**2 - 5 * 9.80665) / 9.80665)  # ERRATA #101 at the top
+    race = {"ball": Rolling.down(30 * u.deg, 0.4), "hoop": Rolling.down(30 * u.deg, 1.0)}
+    _, ax = plots.rolling_race(race, 2 * u.m)
+    finish = [line.get_xdata()[-1] for line in ax.get_lines()]
+    assert finish[0] < finish[1] and finish[0] == pytest.approx(math.sqrt(2 * 2 / (9.80665 * 0.5 / 1.4)))
+    oscillators = {"under": DampedOscillator.of(2 / u.s, 0.5 / u.s, 1 * u.m)}
+    _, ax = plots.damped_motion(oscillators, 10 * u.s)
+    assert ax.get_lines()[0].get_ydata()[0] == 1.0

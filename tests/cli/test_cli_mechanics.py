@@ -1,0 +1,97 @@
+"""The verbs `orbits collide`, `orbits projectile` and `orbits pendulum` (notes IX, XX, XXV): JSON equal to the
+library, tables, plots, and one-line errors with exit status 2."""
+
+import json
+import math
+
+import astropy.units as u
+import pytest
+from typer.testing import CliRunner
+
+from orbits.mechanics import Collision, Pendulum, Projectile
+from orbits_cli.main import app
+
+runner = CliRunner()
+
+
+def run_json(*args):
+    result = runner.invoke(app, [*args, "--format", "json"])
+    assert result.exit_code == 0, result.output
+    return json.loads(result.stdout)
+
+
+def test_collide_head_on_json_is_the_library_bit_for_bit():
+    data = run_json("collide", "--m1", "2 kg", "--v1", "3 m/s", "--m2", "1 kg", "--v2", "-1 m/s", "--restitution",
+                    "0.8")
+    hit = Collision.head_on(2 * u.kg, 3 * u.m / u.s, 1 * u.kg, -1 * u.m / u.s, 0.8)
+    assert data["velocity1_after"] == {"value": hit.velocity1_after.value, "unit": "m / s"}
+    assert data["velocity2_after"]["value"] == hit.velocity2_after.value
+    assert data["internal_kinetic_energy_after"]["value"] == pytest.approx(
+        0.64 * data["internal_kinetic_energy_before"]["value"], rel=1e-15)
+
+
+def test_collide_with_vectors_and_a_contact_normal():
+    data = run_json("collide", "--m1", "1 kg", "--v1", "2,0 m/s", "--m2", "1 kg", "--v2", "0,0 m/s", "--normal",
+                    "1,1", "--only", "velocity1_after,velocity2_after")
+    v1, v2 = data["velocity1_after"]["value"], data["velocity2_after"]["value"]
+    assert v1 == pytest.approx([1.0, -1.0]) and v2 == pytest.approx([1.0, 1.0])
+    three = run_json("collide", "--m1", "1 kg", "--v1", "1,2,3 km/s", "--m2", "3 kg", "--v2", "0,0,0 km/s")
+    assert len(three["velocity1_after"]["value"]) == 3
+
+
+def test_projectile_table_and_json():
+    result = runner.invoke(app, ["projectile", "--speed", "20 m/s", "--angle", "45"])
+    assert result.exit_code == 0 and "no drag" in result.stdout and "40.78865" in result.stdout  # v**2 / g0
+    assert "terminal_speed" not in result.stdout
+    data = run_json("projectile", "--speed", "20 m/s", "--angle", "45", "--drag", "quadratic", "--terminal-speed",
+                    "30 m/s", "--height", "2 m")
+    shot = Projectile.launch(20 * u.m / u.s, 45 * u.deg, 2 * u.m).with_quadratic_drag(30 * u.m / u.s)
+    assert data["range"]["value"] == shot.range.value and data["landing_angle"]["unit"] == "rad"
+    linear = run_json("projectile", "--speed", "20 m/s", "--angle", "30 deg", "--drag", "linear", "--rate", "0.5 1/s")
+    assert linear["terminal_speed"]["value"] == pytest.approx(9.80665 / 0.5)
+
+
+def test_pendulum_and_vertical_circle():
+    data = run_json("pendulum", "--length", "1 m", "--amplitude", "170 deg")
+    assert data["period"]["value"] == Pendulum.simple(1 * u.m, 170 * u.deg).period.value
+    assert data["period_ratio"]["value"] == pytest.approx(2.4393627196738, rel=1e-13)
+    circle = run_json("pendulum", "--length", "1 m", "--bottom-speed", "6 m/s", "--mass", "1 kg")
+    assert "leaving_angle" in circle and "period" not in circle and "normal_force_at_top" not in circle
+    assert math.pi / 2 < circle["leaving_angle"]["value"] < math.pi
+    looping = run_json("pendulum", "--length", "1 m", "--bottom-speed", "8 m/s", "--rod")
+    assert "period" in looping and "normal_force_at_top" not in looping  # no mass: no forces
+
+
+@pytest.mark.parametrize("verb, args", [
+    ("collide", ["--m1", "2 kg", "--v1", "3 m/s", "--m2", "1 kg", "--v2", "0 m/s", "--restitution", "0.5"]),
+    ("collide", ["--m1", "2 kg", "--v1", "3,1 m/s", "--m2", "1 kg", "--v2", "0,0 m/s"]),
+    ("projectile", ["--speed", "30 m/s", "--angle", "60", "--drag", "quadratic", "--terminal-speed", "25 m/s"]),
+    ("pendulum", ["--length", "1 m", "--amplitude", "120"]),
+    ("pendulum", ["--length", "1 m", "--bottom-speed", "6.5 m/s", "--mass", "1 kg", "--rod"]),
+])
+def test_plots_are_written(tmp_path, verb, args):
+    target = tmp_path / "picture.png"
+    result = runner.invoke(app, [verb, *args, "--plot", str(target)])
+    assert result.exit_code == 0, result.output
+    assert target.stat().st_size > 10000
+
+
+@pytest.mark.parametrize("args, fragment", [
+    (["collide", "--m1", "-2 kg", "--v1", "3 m/s", "--m2", "1 kg", "--v2", "0 m/s"], "mass m1 = -2.0 kg is outside"),
+    (["collide", "--m1", "2 kg", "--v1", "3 m/s", "--m2", "1 kg", "--v2", "0 m/s", "--restitution", "1.5"],
+     "coefficient of restitution e = 1.5"),
+    (["collide", "--m1", "2 kg", "--v1", "3,0 m/s", "--m2", "1 kg", "--v2", "0 m/s"], "both be speeds"),
+    (["collide", "--m1", "2 kg", "--v1", "3 kg", "--m2", "1 kg", "--v2", "0 m/s"], "not a speed"),
+    (["collide", "--m1", "2 kg", "--v1", "1,0 m/s", "--m2", "1 kg", "--v2", "1,0 m/s"], "never collide"),
+    (["projectile", "--speed", "20 m/s", "--angle", "95"], "launch angle"),
+    (["projectile", "--speed", "20", "--angle", "45"], "has no unit"),
+    (["projectile", "--speed", "20 m/s", "--angle", "45", "--drag", "linear"], "--rate"),
+    (["pendulum", "--length", "1 m", "--amplitude", "180"], "amplitude theta0"),
+    (["pendulum", "--length", "1 m"], "exactly one of --amplitude and --bottom-speed"),
+    (["pendulum", "--length", "-1 m", "--amplitude", "10"], "length L = -1.0 m"),
+])
+def test_bad_input_is_one_line_and_exit_2(args, fragment):
+    result = runner.invoke(app, args)
+    assert result.exit_code == 2
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("orbits: error:") and fragment in lines[0]

@@ -1,0 +1,345 @@
+"""Every closed form of orbits.core.{collisions, projectile, oscillations} against a heyoka integration of the
+same equations of motion (notes IX, XX, XXV).
+
+heyoka's Taylor integrator runs at tol = eps with high_accuracy; events (t_event, nt_event) locate apexes,
+landings, turning points and the end of a contact to about eps of the time. Each bound is about 10x what was
+measured (the figure is in a comment); the measurement is the largest over the cases listed.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from orbits.core import collisions, oscillations, projectile
+
+hy = pytest.importorskip("heyoka")
+
+
+def integrator(equations, state, **kwargs):
+    return hy.taylor_adaptive(equations, list(map(float, state)), high_accuracy=True, **kwargs)
+
+
+def first_crossing(equations, state, pars, expression, direction, settle):
+    """(time, state) where `expression` first crosses zero in `direction` after the time `settle` (an event at the
+    start, such as a launch from y = 0, would otherwise be taken or hidden by heyoka's cooldown)."""
+    ta = integrator(equations, state, pars=pars)
+    ta.propagate_until(settle)
+    ta = integrator(equations, ta.state, pars=pars, time=settle, t_events=[hy.t_event(expression, direction=direction)])
+    ta.propagate_until(settle + 1e4)
+    return ta.time, ta.state.copy()
+
+
+def relative(a, b):
+    return float(np.max(np.abs(np.asarray(a) - np.asarray(b)) / np.maximum(np.abs(b), 1e-300)))
+
+
+# ---- XXV.iv, XXV.vi: the pendulum and the vertical circle ---------------------------------------------------
+
+@pytest.fixture(scope="module")
+def pendulum_equations():
+    theta, rate = hy.make_vars("theta", "rate")
+    omega_squared = hy.par[0]
+    return theta, rate, [(theta, rate), (rate, -omega_squared * hy.sin(theta))]
+
+
+def turning_times(pendulum_equations, omega0, theta0, rate0, t_max):
+    """Times where theta' = 0 crossing from positive to negative (the far turning point) and theta at them."""
+    theta, rate, equations = pendulum_equations
+    found = []
+    event = hy.nt_event(rate, lambda ta, t, d: found.append(t), direction=hy.event_direction.negative)
+    ta = integrator(equations, [theta0, rate0], pars=[omega0**2], nt_events=[event])
+    ta.propagate_until(t_max)
+    return np.array(found)
+
+
+#: (amplitude in degrees, bound on the relative period difference): near the separatrix the integration itself is
+#: ill-conditioned (the period's sensitivity to the energy grows like 1 / (pi - theta0)**2), so the bound widens with
+#: the measured error of heyoka; the closed form is within 1.3e-16 of mpmath there (tests/core/test_oscillations.py)
+PERIOD_CASES = [(1.0, 1e-14), (60.0, 1e-14), (120.0, 1e-14), (170.0, 1e-13), (179.0, 5e-12), (179.9, 5e-11)]
+# measured 0, 1.6e-16, 9.0e-16, 9.1e-15, 5.6e-13, 5.1e-12
+
+
+@pytest.mark.parametrize("degrees, bound", PERIOD_CASES)
+def test_large_amplitude_period_equals_the_integrated_one(pendulum_equations, degrees, bound):
+    """T = 2 pi / (omega0 AGM(1, cos(theta0 / 2))) (XXV.vi T2) against the spacing of the integrated turning
+    points of theta'' = -omega0**2 sin(theta) released from rest (ERRATA #88: the minus sign)."""
+    omega0, theta0 = 2.5, math.radians(degrees)
+    period = float(oscillations.pendulum_period(omega0, theta0))
+    times = turning_times(pendulum_equations, omega0, -theta0, 0.0, 3.2 * period)  # released at -theta0
+    assert len(times) == 3
+    measured = np.diff(np.concatenate([[0.0], times]))[1:]  # full periods between far turning points
+    assert relative(measured, period) < bound
+    assert relative(times[0], period / 2) < bound
+
+
+def test_exact_pendulum_motion_follows_the_integration(pendulum_equations):
+    """theta(t) by the Jacobi elliptic function against the integrated swing at 170 degrees, over 3 periods."""
+    theta, rate, equations = pendulum_equations
+    omega0, theta0 = 3.0, math.radians(170.0)
+    period = float(oscillations.pendulum_period(omega0, theta0))
+    grid = np.linspace(0.0, 3 * period, 61)
+    ta = integrator(equations, [theta0, 0.0], pars=[omega0**2])
+    states = ta.propagate_grid(grid)[-1]
+    closed = oscillations.pendulum_angle(omega0, theta0, grid)
+    assert np.max(np.abs(closed - states[:, 0])) < 1e-11  # measured 1.1e-12 rad, near the turning points
+
+
+@pytest.mark.parametrize("ratio", [2.01, 2.5, 4.0, 10.0])
+def test_loop_period_is_the_integrated_time_round_the_circle(pendulum_equations, ratio):
+    """T1 = 2 pi R / (u AGM(1, sqrt(1 - 4 g R / u**2))) for u > 2 sqrt(g R): the time for theta to gain 2 pi."""
+    theta, rate, equations = pendulum_equations
+    g, radius = 9.80665, 1.5
+    u = ratio * math.sqrt(g * radius)
+    ta = integrator(equations, [0.0, u / radius], pars=[g / radius], t_events=[hy.t_event(theta - 2 * math.pi)])
+    ta.propagate_until(1e4)
+    assert relative(ta.time, oscillations.loop_period(u, g, radius)) < 5e-14  # measured 5.1e-15
+
+
+@pytest.mark.parametrize("ratio", [0.05, 0.9, 1.9, 1.999])
+def test_swing_period_and_turning_angle_match_the_integration(pendulum_equations, ratio):
+    """T2 and theta_m = arccos(1 - u**2 / (2 g R)) (ERRATA #102; the notes' arccos(u**2 / (2 g R)) is wrong)."""
+    theta, rate, equations = pendulum_equations
+    g, radius = 9.80665, 0.8
+    u = ratio * math.sqrt(g * radius)
+    period = float(oscillations.swing_period(u, g, radius))
+    times = turning_times(pendulum_equations, math.sqrt(g / radius), 0.0, u / radius, 1.1 * period)
+    assert relative(times[0], period / 4) < 7e-14  # measured 7.1e-15
+    ta = integrator(equations, [0.0, u / radius], pars=[g / radius])
+    ta.propagate_until(float(times[0]))
+    theta_m = ta.state[0]
+    expected = float(oscillations.turning_angle(u, g, radius))
+    assert abs(theta_m - expected) < 1.5e-14 * max(1.0, expected)  # measured 1.4e-15 rad
+    notes = math.acos(min(1.0, u**2 / (2 * g * radius)))
+    assert abs(notes - expected) > 0.1  # the notes' form is far off
+
+
+def test_normal_force_and_the_point_where_a_string_slackens(pendulum_equations):
+    """N = m R theta'**2 + m g cos(theta) from the integrated motion equals (m/R)(u**2 - 2 g R + 3 g R cos(theta))
+    (ERRATA #101), and N = 0 where cos(theta) = (2 g R - u**2) / (3 g R) (ERRATA #104: beyond the horizontal)."""
+    theta, rate, equations = pendulum_equations
+    g, radius, mass = 9.80665, 2.0, 0.3
+    u = 2.0 * math.sqrt(g * radius)  # between sqrt(2 g R) and sqrt(5 g R)
+    grid = np.linspace(0.0, 0.6, 31)
+    states = integrator(equations, [0.0, u / radius], pars=[g / radius]).propagate_grid(grid)[-1]
+    newton = mass * radius * states[:, 1] ** 2 + mass * g * np.cos(states[:, 0])
+    closed = oscillations.circle_normal_force(mass, u, g, radius, states[:, 0])
+    assert np.max(np.abs(newton - closed)) < 2e-14 * mass * g  # measured 1.8e-15 m g
+    slack = g * hy.cos(theta) + radius * rate**2  # N / m
+    ta = integrator(equations, [0.0, u / radius], pars=[g / radius], t_events=[hy.t_event(slack)])
+    ta.propagate_until(100.0)
+    expected = float(oscillations.leaving_angle(u, g, radius))
+    assert math.pi / 2 < expected < math.pi
+    assert abs(ta.state[0] - expected) < 5e-15  # measured 4.4e-16 rad
+
+
+# ---- XXV.v, XXV.vii: damped and driven oscillators ------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def oscillator():
+    x, v = hy.make_vars("x", "v")
+    k, b, force, drive = hy.par[0], hy.par[1], hy.par[2], hy.par[3]
+    return [(x, v), (v, -k * x - b * v + force * hy.cos(drive * hy.time))]
+
+
+@pytest.mark.parametrize("k, b", [(3.0, 1.1), (1.0, 2.0), (1.0, 2.0 + 1e-7), (1.0, 2.0 - 1e-7), (2.0, 7.0),
+                                  (100.0, 0.01)])
+def test_damped_motion_in_every_regime_follows_the_integration(oscillator, k, b):
+    """x'' = -k x - b x' from (x0, v0): under-, critically and over-damped, and within 1e-7 of critical."""
+    x0, v0 = 0.7, -1.3
+    grid = np.linspace(0.0, 12.0, 49)
+    states = integrator(oscillator, [x0, v0], pars=[k, b, 0.0, 0.0]).propagate_grid(grid)[-1]
+    x, v = oscillations.damped_motion(k, b, x0, v0, grid)
+    scale = max(abs(x0), abs(v0) / math.sqrt(k))
+    assert np.max(np.abs(x - states[:, 0])) < 7e-14 * scale  # measured 6.8e-15
+    assert np.max(np.abs(v - states[:, 1])) < 1e-13 * scale * math.sqrt(k)  # measured 9.3e-15
+
+
+def test_notes_damped_forms_with_their_corrected_derivatives(oscillator):
+    """The notes' (A, phi), (A, B) parametrisations: x, x' from the integration, x'' from the equation."""
+    k, b, amplitude, phase = 3.0, 1.1, 0.7, 0.4
+    grid = np.linspace(0.0, 5.0, 21)
+    x, v, a = oscillations.underdamped_notes(amplitude, phase, k, b, grid)
+    states = integrator(oscillator, [x[0], v[0]], pars=[k, b, 0.0, 0.0]).propagate_grid(grid)[-1]
+    assert np.max(np.abs(states[:, 0] - x)) < 2e-15 and np.max(np.abs(states[:, 1] - v)) < 2e-15  # measured 2.2e-16
+    assert np.max(np.abs(a - (-k * states[:, 0] - b * states[:, 1]))) < 7e-15  # measured 6.7e-16
+    b = 2.0
+    x, v, a = oscillations.critically_damped_notes(1.2, -0.8, b, grid)
+    states = integrator(oscillator, [x[0], v[0]], pars=[b * b / 4, b, 0.0, 0.0]).propagate_grid(grid)[-1]
+    assert np.max(np.abs(states[:, 1] - v)) < 3e-15  # measured 3.3e-16
+    assert np.max(np.abs(a - (-b * b / 4 * states[:, 0] - b * states[:, 1]))) < 7e-15  # measured 6.7e-16
+    k, b = 2.0, 5.0
+    x, v, a = oscillations.overdamped_notes(0.5, 1.5, k, b, grid)
+    states = integrator(oscillator, [x[0], v[0]], pars=[k, b, 0.0, 0.0]).propagate_grid(grid)[-1]
+    assert np.max(np.abs(states[:, 1] - v)) < 2e-15  # measured 1.1e-16
+    assert np.max(np.abs(a - (-k * states[:, 0] - b * states[:, 1]))) < 1e-14  # measured 1.1e-15
+
+
+@pytest.mark.parametrize("drive", [0.3, 1.9, 2.0, 2.1, 6.0])
+def test_driven_steady_state_is_a_solution(oscillator, drive):
+    """Started on the steady state A cos(w t - delta), the integration stays on it (XXV.vii)."""
+    omega0, b, force = 2.0, 0.25, 1.7
+    grid = np.linspace(0.0, 20.0, 41)
+    x, v = oscillations.driven_steady_state(omega0, b, force, drive, grid)
+    states = integrator(oscillator, [x[0], v[0]], pars=[omega0**2, b, force, drive]).propagate_grid(grid)[-1]
+    amplitude = float(oscillations.driven_amplitude(omega0, b, force, drive))
+    assert np.max(np.abs(states[:, 0] - x)) < 4e-13 * amplitude  # measured 4.0e-14
+    assert np.max(np.abs(states[:, 1] - v)) < 1.5e-13 * amplitude * drive  # measured 1.3e-14
+
+
+# ---- XX: projectiles ------------------------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def linear_drag():
+    x, y, vx, vy = hy.make_vars("x", "y", "vx", "vy")
+    g, b = hy.par[0], hy.par[1]
+    return y, vy, [(x, vx), (y, vy), (vx, -b * vx), (vy, -b * vy - g)]
+
+
+@pytest.mark.parametrize("b, angle, height", [(0.3, 45.0, 0.0), (2.0, 70.0, 5.0), (1e-6, 30.0, 0.0),
+                                              (0.5, -20.0, 40.0), (5.0, 85.0, 1.0)])
+def test_linear_drag_closed_forms_follow_the_integration(linear_drag, b, angle, height):
+    """x, y, v_x, v_y (ERRATA #34, #35: the corrected y and v_y), apex and landing against the integration."""
+    y, vy, equations = linear_drag
+    g, speed = 9.80665, 25.0
+    v_x, v_y = speed * math.cos(math.radians(angle)), speed * math.sin(math.radians(angle))
+    flight = float(projectile.linear_drag_flight_time(v_y, height, g, b))
+    grid = np.linspace(0.0, flight, 25)
+    states = integrator(equations, [0, height, v_x, v_y], pars=[g, b]).propagate_grid(grid)[-1]
+    x_c, y_c = projectile.linear_drag_position(v_x, v_y, height, g, b, grid)
+    vx_c, vy_c = projectile.linear_drag_velocity(v_x, v_y, g, b, grid)
+    size = max(float(np.max(np.abs(states[:, :2]))), 1.0)
+    position_error = max(np.max(np.abs(x_c - states[:, 0])), np.max(np.abs(y_c - states[:, 1])))
+    velocity_error = max(np.max(np.abs(vx_c - states[:, 2])), np.max(np.abs(vy_c - states[:, 3])))
+    assert position_error < 5e-15 * size  # measured 4.3e-16
+    assert velocity_error < 3e-15 * speed  # measured 2.8e-16
+    landed, _ = first_crossing(equations, [0, height, v_x, v_y], [g, b], y, hy.event_direction.negative, flight / 2)
+    assert relative(landed, flight) < 2e-15  # measured 1.7e-16
+    if v_y > 0:
+        apex = integrator(equations, [0, height, v_x, v_y], pars=[g, b], t_events=[hy.t_event(vy)])
+        apex.propagate_until(1e3)
+        assert relative(apex.time, projectile.linear_drag_apex_time(v_y, g, b)) < 2e-15  # measured 0
+        apex_height = projectile.linear_drag_apex_height(v_y, height, g, b)
+        assert relative(apex.state[1], apex_height) < 2e-15  # measured 1.5e-16
+
+
+@pytest.fixture(scope="module")
+def quadratic_drag():
+    x, y, vx, vy = hy.make_vars("x", "y", "vx", "vy")
+    g, inverse_vt2 = hy.par[0], hy.par[1]
+    speed = hy.sqrt(vx**2 + vy**2)
+    drag = g * inverse_vt2 * speed
+    return y, vy, [(x, vx), (y, vy), (vx, -drag * vx), (vy, -drag * vy - g)]
+
+
+@pytest.mark.parametrize("speed, angle, height", [(20.0, 45.0, 0.0), (300.0, 45.0, 0.0), (5.0, 10.0, 2.0),
+                                                  (50.0, 80.0, 0.0), (40.0, -30.0, 100.0), (30.0, 0.0, 10.0),
+                                                  (3000.0, 60.0, 0.0), (50.0, 89.99, 0.0)])
+def test_quadratic_drag_range_apex_and_flight_time_match_the_integration(quadratic_drag, speed, angle, height):
+    """The hodograph quadrature's flight time, range, apex and landing speed against the integrated motion with
+    drag -(g / v_t**2)|v| v (v_t = sqrt(2 m g / (C rho A)), ERRATA #32)."""
+    y, vy, equations = quadratic_drag
+    g, v_t = 9.80665, 30.0
+    theta = math.radians(angle)
+    start = [0.0, height, speed * math.cos(theta), speed * math.sin(theta)]
+    total, reach, apex_y, apex_t, apex_x, landing_speed, landing_angle = (
+        float(q) for q in projectile.quadratic_drag_flight(speed, theta, height, v_t, g))
+    landed, state = first_crossing(equations, start, [g, 1 / v_t**2], y, hy.event_direction.negative, total / 2)
+    size = max(reach, apex_y)
+    assert relative(landed, total) < 4e-13  # measured 3.7e-14
+    assert abs(state[0] - reach) < 4e-13 * size  # measured 3.4e-14
+    assert relative(math.hypot(state[2], state[3]), landing_speed) < 3e-15  # measured 2.5e-16
+    assert abs(math.atan2(state[3], state[2]) - landing_angle) < 2e-14  # measured 1.8e-15 rad
+    if angle > 0:
+        top = integrator(equations, start, pars=[g, 1 / v_t**2], t_events=[hy.t_event(vy)])
+        top.propagate_until(1e4)
+        assert relative(top.time, apex_t) < 6e-13 and relative(top.state[1], apex_y) < 6e-13  # measured 5.7e-14
+        assert abs(top.state[0] - apex_x) < 4e-13 * size  # measured 3.3e-14
+
+
+@pytest.mark.parametrize("speed", [0.0, 20.0, -10.0, -30.0, -45.0])
+def test_vertical_quadratic_drag_flights_match_the_integration(speed):
+    """Straight up, dropped, and thrown down slower than, at and faster than v_t: closed forms against the 1-D
+    equations y'' = -g -+ (g / v_t**2) y'**2 (rising, falling), integrated piecewise (|v| v has a kink at v = 0
+    that a Taylor integrator must not step across)."""
+    y, v = hy.make_vars("y", "v")
+    g, v_t, height = 9.80665, 30.0, 50.0
+    rising = [(y, v), (v, -g - g / v_t**2 * v**2)]
+    falling = [(y, v), (v, -g + g / v_t**2 * v**2)]
+    angle = math.pi / 2 if speed >= 0 else -math.pi / 2
+    total, reach, apex_y, apex_t, _, landing_speed, _ = (
+        float(q) for q in projectile.quadratic_drag_flight(abs(speed), angle, height, v_t, g))
+    start, begin = [height, speed], 0.0
+    if speed > 0:
+        up = integrator(rising, start, t_events=[hy.t_event(v)])
+        up.propagate_until(1e4)
+        assert relative(up.time, apex_t) < 2e-15 and relative(up.state[0], apex_y) < 2e-15  # measured 1.2e-16
+        start, begin = [up.state[0], 0.0], up.time
+    down = integrator(falling, start, time=begin, t_events=[hy.t_event(y)])
+    down.propagate_until(1e4)
+    assert relative(down.time, total) < 2e-15 and reach == 0.0  # measured 1.7e-16
+    assert relative(abs(down.state[1]), landing_speed) < 2e-15  # measured 1.5e-16
+
+
+def test_conical_pendulum_keeps_its_cone(quadratic_drag):
+    """A spherical pendulum started at theta0 with phi' = sqrt(g / (L cos(theta0))) (XX.ii) keeps theta = theta0."""
+    theta, phi, rate, spin = hy.make_vars("theta", "phi", "rate", "spin")
+    g, length, theta0 = 9.80665, 1.3, math.radians(35.0)
+    omega = float(projectile.conical_pendulum_rate(g, length, theta0))
+    equations = [(theta, rate), (phi, spin),
+                 (rate, hy.sin(theta) * hy.cos(theta) * spin**2 - g / length * hy.sin(theta)),
+                 (spin, -2.0 * rate * spin * hy.cos(theta) / hy.sin(theta))]
+    grid = np.linspace(0.0, 10 * 2 * math.pi / omega, 41)
+    states = integrator(equations, [theta0, 0.0, 0.0, omega]).propagate_grid(grid)[-1]
+    assert np.max(np.abs(states[:, 0] - theta0)) < 3e-15  # measured 2.2e-16 rad
+    assert relative(states[-1, 1], omega * grid[-1]) < 4e-15  # measured 3.4e-16
+    speed = float(projectile.conical_pendulum_speed(g, length, theta0))
+    assert relative(speed, omega * length * math.sin(theta0)) < 1e-15  # measured 2.2e-16
+
+
+# ---- IX: a collision as a contact force -----------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def contact():
+    """Two bodies on a line, body 1 behind body 2, in contact through a spring k and a dashpot c acting on the
+    overlap d = x1 - x2 > 0 (started at d = 0 with v1 > v2); the contact ends when d returns to 0."""
+    x1, x2, v1, v2 = hy.make_vars("x1", "x2", "v1", "v2")
+    m1, m2, k, c = hy.par[0], hy.par[1], hy.par[2], hy.par[3]
+    push = k * (x1 - x2) + c * (v1 - v2)
+    return x1, x2, v1, v2, [(x1, v1), (x2, v2), (v1, -push / m1), (v2, push / m2)]
+
+
+@pytest.mark.parametrize("m1, m2, v1, v2", [(1.0, 1.0, 2.0, 0.0), (3.0, 1.0, 1.5, -0.5), (1.0, 1e3, 4.0, 0.1),
+                                            (2.0, 0.5, 0.3, -2.0)])
+@pytest.mark.parametrize("zeta", [0.0, 0.1, 0.5])
+def test_contact_integration_gives_the_restitution_formulas(contact, m1, m2, v1, v2, zeta):
+    """A spring-dashpot contact of damping ratio zeta has e = exp(-pi zeta / sqrt(1 - zeta**2)); the integrated
+    velocities after the contact equal velocities_after(m1, v1, m2, v2, e) (IX.xi, ERRATA #12); the largest
+    compression of the pure spring is |v1 - v2| sqrt(mu / k) (IX.xii); K_int = 0 at closest approach (IX.v)."""
+    x1, x2, v1s, v2s, equations = contact
+    k = 50.0
+    mu = float(collisions.reduced_mass(m1, m2))
+    c = 2.0 * zeta * math.sqrt(k * mu)
+    end = hy.t_event(x1 - x2, direction=hy.event_direction.negative)
+    closest = []
+    turn = hy.nt_event(v1s - v2s, lambda ta, t, d: closest.append(t))
+    ta = integrator(equations, [0.0, 0.0, v1, v2], pars=[m1, m2, k, c], t_events=[end], nt_events=[turn])
+    ta.propagate_until(1e3)
+    assert len(closest) == 1
+    there = integrator(equations, [0.0, 0.0, v1, v2], pars=[m1, m2, k, c])
+    there.propagate_until(closest[0])
+    e = float(collisions.restitution_of_spring_dashpot(zeta))
+    after1, after2 = collisions.velocities_after(m1, v1, m2, v2, e)
+    scale = abs(v1 - v2)
+    assert abs(ta.state[2] - after1) < 5e-15 * scale and abs(ta.state[3] - after2) < 5e-15 * scale  # measured 4.4e-16
+    p1, p2, w1, w2 = there.state
+    assert collisions.internal_kinetic_energy(m1, w1, m2, w2) < 3e-31 * mu * scale**2  # measured 2.5e-32
+    before = collisions.kinetic_energy(m1, v1) + collisions.kinetic_energy(m2, v2)
+    at_closest = collisions.kinetic_energy(m1, w1) + collisions.kinetic_energy(m2, w2)
+    after = collisions.kinetic_energy(m1, ta.state[2]) + collisions.kinetic_energy(m2, ta.state[3])
+    assert at_closest <= after * (1 + 1e-14) and after <= before * (1 + 1e-14)  # ERRATA #1, #11: KE order
+    mechanical_closest = at_closest + 0.5 * k * (p1 - p2) ** 2
+    assert after <= mechanical_closest * (1 + 1e-14) <= before * (1 + 2e-14)  # ERRATA #11: mechanical energy
+    if zeta == 0:
+        compression = float(collisions.spring_compression(m1, v1, m2, v2, k))
+        assert relative(p1 - p2, compression) < 2e-15  # measured 1.4e-16
