@@ -19,6 +19,7 @@ from orbits_cli.commands import (
     info,
     kepler,
     lagrange,
+    lambert,
     orbit,
     pendulum,
     precision,
@@ -75,6 +76,7 @@ app.add_typer(escape.app, name="escape")
 app.command("rocket")(reports_errors(displays(rocket.command)))
 app.add_typer(transfer.app, name="transfer")
 app.command("where")(reports_errors(displays(where.command)))
+app.command("lambert")(reports_errors(displays(lambert.command)))
 app.command("collide")(reports_errors(displays(collide.command)))
 app.command("projectile")(reports_errors(displays(projectile.command)))
 app.command("pendulum")(reports_errors(displays(pendulum.command)))
@@ -84,5 +86,7 @@ bench_app.command("propagate")(reports_errors(bench.propagate))
 bench_app.command("api")(reports_errors(bench.api))
 bench_app.command("cli")(reports_errors(bench.cli))
 bench_app.command("validate")(reports_errors(bench.validate))
+bench_app.command("lambert")(reports_errors(bench.lambert))
+bench_app.command("ephemeris")(reports_errors(bench.ephemeris))
 bench_app.command("all")(reports_errors(bench.all_))
 bench_app.command("precision")(reports_errors(precision.command))

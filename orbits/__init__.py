@@ -15,6 +15,7 @@ __version__ = "0.1.0"
 _HOMES = {
     "Orbit": "orbits.orbit",
     "Binary": "orbits.binary",
+    "SpectroscopicBinary": "orbits.binary",
     "Star": "orbits.binary",
     "Flyby": "orbits.flyby",
     "RestrictedThreeBody": "orbits.lagrange",
@@ -34,6 +35,8 @@ _HOMES = {
     "Departure": "orbits.manoeuvres",
     "GravityAssist": "orbits.manoeuvres",
     "elastic_collision": "orbits.manoeuvres",
+    "lambert": "orbits.transfers",
+    "LambertTransfer": "orbits.transfers",
     "Cosmology": "orbits.cosmology",
     "ExpandingSphere": "orbits.cosmology",
     "anomalies": "orbits.kepler",

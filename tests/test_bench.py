@@ -260,6 +260,8 @@ def test_all_runs_every_benchmark_and_serialises():
     tiny = {
         "kepler": {"n_easy": 200, "n_hard": 200, "n_hyp": 200, "n_ref": 5, "repeats": 1},
         "propagate": {"n": 300, "n_ref": 3, "repeats": 1},
+        "lambert": {"n": 300, "n_ref": 3, "repeats": 1},
+        "ephemeris": {"n": 300, "repeats": 1},
         "api": {"sizes": (1,), "repeats": 1},
         "cli": {"runs": 1, "commands": [(["--help"], 0.2)]},
         "validate": {"sweep": False},
@@ -269,6 +271,16 @@ def test_all_runs_every_benchmark_and_serialises():
     text = bench.format_report(report)
     assert all(f"== {name} ==" in text for name in bench.BENCHMARKS)
     json.dumps(bench.report_to_json(report), allow_nan=False)
+
+
+def test_the_ephemeris_bench_reads_what_jplephem_reads():
+    from orbits.tools.bench_ephemeris import bench_ephemeris, format_ephemeris
+
+    rows = bench_ephemeris(n=2000, repeats=1)
+    timed = [r for r in rows if r.status == "ok"]
+    assert [r.name.split()[0] for r in timed] == ["jplephem", "orbits.ephemeris.state", "astropy"]
+    assert all(r.dr == 0.0 and r.dv == 0.0 and r.per_second > 0 for r in timed)  # the same file, the same sums
+    assert max(len(line) for line in format_ephemeris(rows).splitlines()) <= bench.WIDTH
 
 
 # --- 80-column tables -------------------------------------------------------------------------------

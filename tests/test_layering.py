@@ -79,6 +79,7 @@ CORE_MODULES = [
     "anomalies", "binary", "checks", "elements", "errors", "escape", "flyby", "friedmann", "kepler", "lagrange",
     "propagate", "quadrature", "rings", "series", "sphere", "twobody", "_dd", "_roots", "frames", "rocket",
     "manoeuvres", "assist", "collisions", "rotation", "projectile", "oscillations",
+    "lambert",
 ]
 
 
@@ -157,17 +158,18 @@ runs = [
     ["ring", "3", "--m", "1 kg", "--r", "1 m"],
     ["escape", "cosmic"],
     ["where", "Mars", "--epoch", "2026-11-25"],
-    ["collide", "--m1", "2 kg", "--v1", "3 m/s", "--m2", "1 kg", "--v2", "0 m/s", "--plot", os.path.join(out, "k.png")],
-    ["projectile", "--speed", "20 m/s", "--angle", "45", "--drag", "quadratic", "--terminal-speed", "30 m/s"],
-    ["pendulum", "--length", "1 m", "--amplitude", "170 deg", "--plot", os.path.join(out, "p.png")],
     ["orbit", "Mars", "--epoch", "2026-11-25 TDB"],
     ["escape", "geo", "Earth"],
     ["rocket", "--m0", "100 t", "--mf", "40 t", "--isp", "300 s", "--thrust", "2 MN"],
     ["transfer", "hohmann", "--r1", "6678 km", "--r2", "42164 km", "--format", "json"],
+    ["lambert", "--r1", "1,0,0 AU", "--r2", "0,1.5,0 AU", "--tof", "200 d", "--format", "json"],
     ["cosmology", "--z", "1", "--plot", os.path.join(out, "c.png")],
     ["validate", "circular", "expanding_universe", "--output", os.path.join(out, "v.json"),
      "--plot", os.path.join(out, "v.png")],
     ["info"],
+    ["collide", "--m1", "2 kg", "--v1", "3 m/s", "--m2", "1 kg", "--v2", "0 m/s", "--plot", os.path.join(out, "k.png")],
+    ["projectile", "--speed", "20 m/s", "--angle", "45", "--drag", "quadratic", "--terminal-speed", "30 m/s"],
+    ["pendulum", "--length", "1 m", "--amplitude", "170 deg", "--plot", os.path.join(out, "p.png")],
 ]
 for args in runs:
     result = CliRunner().invoke(app, args)

@@ -94,6 +94,36 @@ def validate(
     _emit(rows_to_json(rows), format_validate(rows), fmt, output)
 
 
+def lambert(
+    transfers: Annotated[int, typer.Option(help="random zero-revolution transfers (per-call peers: a subset)")] = (
+        1_000_000),
+    reference: Annotated[int, typer.Option(help="transfers checked against the mpmath propagation")] = 200,
+    repeats: RepeatsOption = 3,
+    output: OutputOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """Lambert solvers: throughput, arrival error and hard cases of orbits and its peers, in one run."""
+    from orbits.tools.bench import rows_to_json
+    from orbits.tools.bench_lambert import bench_lambert, format_lambert
+
+    rows = bench_lambert(n=transfers, n_ref=reference, repeats=repeats)
+    _emit(rows_to_json(rows), format_lambert(rows), fmt, output)
+
+
+def ephemeris(
+    epochs: Annotated[int, typer.Option(help="random TDB epochs 1900-2050")] = 100_000,
+    repeats: RepeatsOption = 3,
+    output: OutputOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """States of Mars at many epochs from DE421: orbits against jplephem and astropy reading the same file."""
+    from orbits.tools.bench import rows_to_json
+    from orbits.tools.bench_ephemeris import bench_ephemeris, format_ephemeris
+
+    rows = bench_ephemeris(n=epochs, repeats=repeats)
+    _emit(rows_to_json(rows), format_ephemeris(rows), fmt, output)
+
+
 def all_(
     quick: Annotated[bool, typer.Option(help="a tenth of the default sizes and 3 CLI runs")] = False,
     output: OutputOption = None,
@@ -107,6 +137,8 @@ def all_(
         options = {
             "kepler": {"n_easy": 100_000, "n_hard": 10_000, "n_hyp": 10_000, "n_ref": 200},
             "propagate": {"n": 100_000, "n_ref": 50},
+            "lambert": {"n": 100_000, "n_ref": 50},
+            "ephemeris": {"n": 10_000},
             "api": {"sizes": (1, 100_000)},
             "cli": {"runs": 3},
         }

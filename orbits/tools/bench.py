@@ -1141,9 +1141,37 @@ def _blocks(label_width, columns, width=WIDTH):
 # --- everything -----------------------------------------------------------------------------------
 
 #: name -> (run with default sizes, format) of every benchmark, in the order `orbits bench all` runs them.
+def _bench_lambert(**options):
+    from orbits.tools.bench_lambert import bench_lambert
+
+    return bench_lambert(**options)
+
+
+def _format_lambert(rows):
+    from orbits.tools.bench_lambert import format_lambert
+
+    return format_lambert(rows)
+
+
+def _bench_ephemeris(**options):
+    from orbits.tools.bench_ephemeris import bench_ephemeris
+
+    return bench_ephemeris(**options)
+
+
+def _format_ephemeris(rows):
+    from orbits.tools.bench_ephemeris import format_ephemeris
+
+    return format_ephemeris(rows)
+
+
+#: every benchmark: name -> (run, format); Lambert's and the ephemeris' live in their own modules (which use this
+#: module's table helpers) and are loaded when run
 BENCHMARKS = {
     "kepler": (bench_kepler, format_rows),
     "propagate": (bench_propagate, format_propagate),
+    "lambert": (_bench_lambert, _format_lambert),
+    "ephemeris": (_bench_ephemeris, _format_ephemeris),
     "api": (bench_api, format_api),
     "cli": (bench_cli, format_cli),
     "validate": (bench_validate, format_validate),

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from orbits.tools.bench import _best_time, _mega, _sig, _table
+from orbits.tools.bench import WIDTH, _best_time, _mega, _sig, _table, _wrap
 
 #: the DE421 chain of Mars relative to the solar-system barycentre
 _MARS = ((0, 4), (4, 499))
@@ -24,6 +24,7 @@ class EphemerisRow:
 
     name: str
     status: str
+    n: int
     per_second: float
     dr: float
     dv: float
@@ -84,22 +85,22 @@ def bench_ephemeris(n: int = 100_000, seed: int = 0, repeats: int = 3) -> list[E
     from orbits import ephemeris
 
     if ephemeris.available_source() != "de421":
-        return [EphemerisRow("orbits", "needs orbits[ephemeris] (skyfield-data, jplephem)", np.nan, np.nan, np.nan)]
+        return [EphemerisRow("orbits", "needs orbits[ephemeris] (skyfield-data, jplephem)", n, np.nan, np.nan, np.nan)]
     when = _epochs(n, seed)
     ephemeris.state("Mars", when[:2], center="SSB", source="de421")  # open the kernel outside the timing
     seconds, (r_ref, v_ref) = _best_time(_jplephem(when), repeats)
-    rows = [EphemerisRow("jplephem (two segments, raw)", "ok", n / seconds, 0.0, 0.0)]
+    rows = [EphemerisRow("jplephem (two segments, raw)", "ok", n, n / seconds, 0.0, 0.0)]
     for name, factory in (("orbits.ephemeris.state", _orbits), ("astropy get_body_barycentric_posvel", _astropy)):
         seconds, (r, v) = _best_time(factory(when), repeats)
-        rows.append(EphemerisRow(name, "ok", n / seconds, float(np.abs(r - r_ref).max()),
+        rows.append(EphemerisRow(name, "ok", n, n / seconds, float(np.abs(r - r_ref).max()),
                                  float(np.abs(v - v_ref).max())))
     if importlib.util.find_spec("skyfield") is None:
-        rows.append(EphemerisRow("skyfield", "not installed", np.nan, np.nan, np.nan))
+        rows.append(EphemerisRow("skyfield", "not installed", n, np.nan, np.nan, np.nan))
     return rows
 
 
-def ephemeris_table(rows: list[EphemerisRow], n: int) -> list[str]:
-    """The bench as lines of at most 80 columns: M states/s, the ratio to jplephem, and the largest gaps."""
+def format_ephemeris(rows: list[EphemerisRow]) -> str:
+    """The bench as a table of at most 80 columns: M states/s, the ratio to jplephem, and the largest gaps."""
     reference = next((r.per_second for r in rows if r.name.startswith("jplephem")), np.nan)
     cells = []
     for r in rows:
@@ -109,5 +110,5 @@ def ephemeris_table(rows: list[EphemerisRow], n: int) -> list[str]:
         cells.append([r.name, _mega(r.per_second), _sig(r.per_second / reference, 3), _sig(r.dr, 2),
                       _sig(r.dv, 2)])
     header = ["Mars from the barycentre, DE421", "M states/s", "x jplephem", "max |dr| m", "max |dv| m/s"]
-    return [f"{n:,} random TDB epochs 1900-2050, positions and velocities, one thread, best of the repeats",
-            *_table(header, cells, stack=True)]
+    title = f"{rows[0].n:,} random TDB epochs 1900-2050: positions and velocities, one thread, best of the repeats"
+    return "\n".join([*_wrap(title, WIDTH), *_table(header, cells, stack=True)])
