@@ -14,9 +14,9 @@ modules they take constants from: numba checks only the file that defines a cach
 without it a change to a helper or a constant in another file would load stale machine code.
 
 Settings, read once per process:
-- ``ORBITS_JIT`` chooses when the compiled kernels run: ``auto`` (the default) for Kepler batches of at least
-  AUTO_MIN_BATCH elements, so that a calculator query never imports numba, and for every propagation; ``1``
-  always; ``0`` never. The float64
+- ``ORBITS_JIT`` chooses when the compiled kernels run: ``auto`` (the default) for Kepler and propagation batches
+  of at least AUTO_MIN_BATCH elements, so that a calculator query or a scene's few hundred outputs never import
+  numba; ``1`` always; ``0`` never. The float64
   NumPy implementations (tested against the same mpmath references) run otherwise, and when numba is not
   installed.
 - ``ORBITS_NUM_THREADS`` caps the threads a large batch is split over (default: the cores this process
@@ -42,10 +42,9 @@ PARALLEL_MIN = 1 << 15
 #: Modules of orbits/core whose constants and helpers the kernels (orbits/core/_fast*.py) compile in.
 _KERNEL_DEPENDENCIES = ("kepler.py", "propagate.py", "_roots.py", "series.py")
 
-#: Kepler batches from this size on start the compiled kernels by themselves ("auto" mode); smaller ones, such as
-#: a calculator query, take the NumPy implementation (the same accuracy: tests/core/test_fast_kepler.py) and never
-#: import numba. The propagator runs its kernel at every size while its NumPy version is less accurate on
-#: hyperbolas (6.6e-15 against 1.3e-15 on tests/test_precision.py's flyby; issue 14).
+#: Kepler and propagation batches from this size on start the compiled kernels by themselves ("auto" mode); smaller
+#: ones, such as a calculator query, take the NumPy implementation (the same algorithm and accuracy:
+#: tests/core/test_fast_kepler.py, test_propagate.py, test_propagate_long_flights.py) and never import numba.
 AUTO_MIN_BATCH = 1 << 16
 
 _state = {"mode": None, "threads": None, "pool": None, "cache_dir": None, "announced": set()}

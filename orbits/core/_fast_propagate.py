@@ -1,19 +1,21 @@
-"""Compiled universal-variable propagator (numba): orbits.core.propagate's algorithm, vectorised.
+"""Compiled universal-variable propagator (numba): a port of orbits.core.propagate's algorithm.
 
-Imported only through orbits.core.propagate when the compiled kernels are enabled (orbits.core._fast).
-Same steps as the NumPy version: period reduction of dt and alpha = 2 / r - v**2 / mu in double-double
-arithmetic, scaling to |r0| = 1 and mu = 1, time reversal for dt < 0, bracketed Halley iteration on the
-universal Kepler equation, Lagrange f and g; the two agree to 1e-14 in position
-(tests/core/test_fast_propagate.py). What differs, all measured on the benchmark's mixed states:
-- Pass 1 runs _FIXED_STEPS branch-free Halley steps on blocks of 256 states whose quantities sit in
-  1-D scratch rows, so LLVM vectorises every loop (loops over (n, 3) arrays, or one loop storing six
-  rows, it does not: 0.25 and 0.66 us per state instead of 0.11). Pass 2 runs the safeguarded
-  iteration on the states pass 1 leaves uncertified (none of the benchmark's).
-- Stumpff functions from orbits.core._fast_math's sin, cos and exp (vectorisable, within 1 ulp), with
-  1 - cos s = sin**2 s / (1 + cos s) for cos s > 0 and cosh s - 1 = sinh**2 s / (cosh s + 1).
-- The starter is the better, by Newton step length, of Vallado's guess and the parabolic (Barker)
-  guess: 2.5-3 Halley steps on average instead of 3.2-5.9, and never more than 5 (62 % of hyperbolas
-  took more than 5 from Vallado's guess alone).
+Imported only through orbits.core.propagate, when orbits.core._fast.use lets a batch run compiled. Every step
+is the NumPy version's, function for function (same names): period reduction of dt and alpha = 2 / r -
+v**2 / mu in double-double arithmetic, scaling to |r0| = 1 and mu = 1, time reversal for dt < 0, the starter
+(_vallado_guess, _barker_guess, _starter), pass 1 (FIXED_STEPS bracketed Halley steps, _polish, the
+certificate), pass 2 on the uncertified states (_solve_universal: bracket grown by doubling, safeguarded
+Halley), the Stumpff formulas and the Lagrange f and g. A fix is made in propagate.py and ported here;
+tests/core/test_propagate.py and test_propagate_long_flights.py hold both paths to the same mpmath bounds.
+What is the kernel's own, all measured on the benchmark's mixed states:
+- Pass 1 runs branch-free on blocks of 256 states whose quantities sit in 1-D scratch rows, so LLVM
+  vectorises every loop (loops over (n, 3) arrays, or one loop storing six rows, it does not: 0.25 and
+  0.66 us per state instead of 0.11).
+- sin, cos, exp, the starter's logarithm (to 3e-6) and cube root (to 1e-11) come from
+  orbits.core._fast_math (vectorisable; sin, cos and exp within 1 ulp), so the two paths agree to rounding,
+  not bit for bit; its sin and cos are NaN beyond s = 64, which the iteration treats as an overshoot.
+- The starter takes 2.5-3 Halley steps on average and never more than 5 (62 % of hyperbolas took more
+  than 5 from Vallado's guess alone).
 One thread: 8.5 M states/s at 1e-15 worst position error (NumPy version: 0.7-0.9 M/s).
 """
 
@@ -27,12 +29,12 @@ from orbits.core._fast_kepler import _INVALID, _halley_step
 from orbits.core._fast_math import _cbrt_approx, _exp, _horner, _log_approx, _sin_cos, _two_product, _two_sum
 from orbits.core._roots import MAX_ITERATIONS
 from orbits.core.kepler import TWO_PI_1, TWO_PI_2
+from orbits.core.propagate import BRACKET_DOUBLINGS, FIXED_STEPS, SERIES_LIMIT
 from orbits.core.propagate import C2_SERIES as _C2_SERIES
 from orbits.core.propagate import C3_SERIES as _C3_SERIES
 
 _X_MINUS_SIN = tuple(float(c) for c in kepler._X_MINUS_SIN)  # (x - sin x) / x**3 in powers of x**2
 _SINH_MINUS_X = tuple(float(c) for c in kepler._SINH_MINUS_X)
-_BRACKET_DOUBLINGS = 2100
 
 
 # --- double-double arithmetic (orbits.core._dd), on scalars ---------------------------------------
@@ -103,44 +105,81 @@ def _reduce_by_periods(rx, ry, rz, vx, vy, vz, mu, dt):
 
 @jit(inline=True)
 def _stumpff(z):
-    """(c0, c1, c2, c3) of z, branch free: series for |z| <= 1, else sin and cos (z > 1) or exp (z < -1)
-    of s = sqrt(|z|) from orbits.core._fast_math; overflows to inf or NaN (never a wrong finite value)
-    beyond z = -5e5, like the NumPy version."""
+    """propagate.stumpff, branch free: series for |z| <= 1, else sin and cos (z > 1) or exp (z < -1) of
+    s = sqrt(|z|) from orbits.core._fast_math, in the same formulas; overflows to inf beyond z = -5e5.
+    Returns (c0, c1, c2, c3, exp sqrt(max(-z, 1)), its inverse): the hyperbolic terms reuse the exponential."""
     c2_series, c3_series = _horner(_C2_SERIES, z), _horner(_C3_SERIES, z)
     s = math.sqrt(max(z, 1.0))
     sin, cos = _sin_cos(s)
     one_minus_cos = sin * sin / (1.0 + cos) if cos > 0.0 else 1.0 - cos
-    s_minus_sin = s * s * s * _horner(_X_MINUS_SIN, z) if s < 2.0 else s - sin
+    s_minus_sin = s * s * s * _horner(_X_MINUS_SIN, z) if s < SERIES_LIMIT else s - sin
     t = math.sqrt(max(-z, 1.0))
     exp = _exp(t)
-    sinh, cosh = 0.5 * (exp - 1.0 / exp), 0.5 * (exp + 1.0 / exp)
-    sinh_minus_t = t * t * t * _horner(_SINH_MINUS_X, -z) if t < 2.0 else sinh - t
+    inverse = 1.0 / exp
+    sinh, cosh = 0.5 * (exp - inverse), 0.5 * (exp + inverse)
+    cosh_minus_one = sinh * ((1.0 - inverse) / (1.0 + inverse))
+    sinh_minus_t = t * t * t * _horner(_SINH_MINUS_X, -z) if t < SERIES_LIMIT else sinh - t
     if abs(z) <= 1.0:
-        return 1.0 - z * c2_series, 1.0 - z * c3_series, c2_series, c3_series
+        return 1.0 - z * c2_series, 1.0 - z * c3_series, c2_series, c3_series, exp, inverse
     if z > 0.0:
-        return cos, sin / s, one_minus_cos / z, s_minus_sin / (s * z)
-    return cosh, sinh / t, sinh * sinh / ((cosh + 1.0) * -z), sinh_minus_t / (t * -z)
+        return cos, sin / s, one_minus_cos / z, s_minus_sin / (s * z), exp, inverse
+    return cosh, sinh / t, cosh_minus_one / -z, sinh_minus_t / (t * -z), exp, inverse
 
 
 @jit(inline=True)
-def _g_functions(chi, alpha):
-    c0, c1, c2, c3 = _stumpff(alpha * chi * chi)
-    return c0, chi * c1, chi * chi * c2, chi * chi * chi * c3
+def _g_functions(chi, alpha, grow, decay):
+    """(G0, G1, G2, G3, e sinh H, e cosh H) at chi: propagate._g_functions and propagate._hyperbolic_terms."""
+    c0, c1, c2, c3, exp, inverse = _stumpff(alpha * chi * chi)
+    e_sinh, e_cosh = 0.5 * (grow * exp - decay * inverse), 0.5 * (grow * exp + decay * inverse)
+    return c0, chi * c1, chi * chi * c2, chi * chi * chi * c3, e_sinh, e_cosh
 
 
 @jit(inline=True)
-def _universal_residual(chi, tau, r0, sigma0, alpha):
-    """(F - tau, F', F'') with F = r0 G1 + sigma0 G2 + G3; a non-finite F counts as +inf (above the root)."""
-    g0, g1, g2, g3 = _g_functions(chi, alpha)
+def _hyperbolic_coefficients(r0, sigma0, alpha, p):
+    """propagate._hyperbolic_coefficients: (e exp H0, e exp -H0) of a hyperbola, 0 on other orbits."""
+    beta = -alpha if alpha < 0.0 else 0.0
+    e_cosh, e_sinh = 1.0 + r0 * beta, sigma0 * math.sqrt(beta)
+    larger = e_cosh + abs(e_sinh)
+    smaller = (1.0 + beta * p) / larger
+    grow, decay = (smaller, larger) if sigma0 < 0.0 else (larger, smaller)
+    return (grow, decay) if alpha < 0.0 else (0.0, 0.0)
+
+
+@jit(inline=True)
+def _inverse_powers(alpha):
+    """propagate._inverse_powers: (1 / beta, 1 / sqrt(beta), 1 / beta**1.5), beta = -alpha."""
+    inverse = 1.0 / -alpha
+    inverse_root = math.sqrt(max(-alpha, 0.0)) * inverse
+    return inverse, inverse_root, inverse * inverse_root
+
+
+@jit(inline=True)
+def _anomaly_form(chi, r0, sigma0, alpha, g1, g2, g3, e_sinh, inverse, inverse_15):
+    """propagate._anomaly_form: whether F is better summed in the hyperbolic anomaly than in the G form."""
+    g_terms = abs(r0 * g1) + abs(sigma0 * g2) + abs(g3)
+    h_terms = abs(e_sinh) * inverse_15 + (abs(sigma0) + chi) * inverse
+    return alpha * chi * chi < -1.0 and h_terms < g_terms
+
+
+@jit(inline=True)
+def _universal_residual(chi, tau, r0, sigma0, alpha, grow, decay):
+    """propagate._residual: (F - tau, F', F'') with F = r0 G1 + sigma0 G2 + G3, in the hyperbolic anomaly where
+    _anomaly_form says so; a non-finite F counts as +inf."""
+    g0, g1, g2, g3, e_sinh, e_cosh = _g_functions(chi, alpha, grow, decay)
     f = (r0 * g1 + sigma0 * g2 + g3) - tau
     df = r0 * g0 + sigma0 * g1 + g2
     d2f = sigma0 * g0 + (1.0 - alpha * r0) * g1
+    inverse, inverse_root, inverse_15 = _inverse_powers(alpha)
+    f_h = (e_sinh * inverse_15 - (sigma0 + chi) * inverse) - tau
+    df_h, d2f_h = (e_cosh - 1.0) * inverse, e_sinh * inverse_root
+    far = _anomaly_form(chi, r0, sigma0, alpha, g1, g2, g3, e_sinh, inverse, inverse_15)
+    f, df, d2f = (f_h, df_h, d2f_h) if far else (f, df, d2f)
     return (f if np.isfinite(f) else np.inf), df, d2f
 
 
 @jit(inline=True)
 def _vallado_guess(tau, r0, sigma0, alpha):
-    """propagate._starter, branch free: tau alpha on ellipses, Vallado's logarithmic guess on hyperbolas
+    """propagate._vallado_guess, branch free: tau alpha on ellipses, Vallado's logarithmic guess on hyperbolas
     (with a 3e-6 logarithm, plenty for a first guess)."""
     sqrt_minus_a = math.sqrt(max(-1.0 / alpha, 0.0))
     ratio = -2.0 * alpha * tau / (sigma0 + sqrt_minus_a * (1.0 - alpha * r0))
@@ -152,76 +191,77 @@ def _vallado_guess(tau, r0, sigma0, alpha):
 
 @jit(inline=True)
 def _barker_guess(tau, sigma0, p):
-    """chi on the parabola with the same p = h**2 and r0.v0: sqrt(p) (D - D0), D = tan(nu / 2) from
-    Barker's equation D + D**3 / 3 = D0 + D0**3 / 3 + 2 tau / p**1.5 (Cardano, cube root to 1e-11)."""
+    """propagate._barker_guess (cube root to 1e-11): chi on the parabola with the same p = h**2 and r0.v0;
+    0 where that is negative or overflows."""
     root_p = math.sqrt(p)
     d0 = sigma0 / root_p
     w = d0 + d0 * d0 * d0 / 3.0 + 2.0 * tau / (p * root_p)
     c = _cbrt_approx(1.5 * abs(w) + math.sqrt(2.25 * w * w + 1.0))
-    return max(root_p * (math.copysign(c - 1.0 / c, w) - d0), 0.0)
+    guess = root_p * (math.copysign(c - 1.0 / c, w) - d0)
+    return guess if 0.0 < guess < np.inf else 0.0
 
 
 @jit(inline=True)
-def _starter(tau, r0, sigma0, alpha, p):
-    """The better of Vallado's guess and the parabolic guess, by the length of the Newton step from each.
+def _starter(tau, r0, sigma0, alpha, p, grow, decay):
+    """propagate._starter: the better of Vallado's guess and the parabolic guess, by Newton step length.
 
     Measured on the benchmark's mixed states (1e5; safeguarded Halley iterations to convergence):
     ellipses 3.2 / 3.1 / 2.95 mean steps (Vallado / parabolic / better of the two), hyperbolas 5.9 /
     3.0 / 2.45 with 62 % / 8 % / 0 % needing more than 5, near-parabolic orbits 5.4 / 2.5 / 2.5.
     """
     vallado, barker = _vallado_guess(tau, r0, sigma0, alpha), _barker_guess(tau, sigma0, p)
-    f_v, df_v, _ = _universal_residual(vallado, tau, r0, sigma0, alpha)
-    f_b, df_b, _ = _universal_residual(barker, tau, r0, sigma0, alpha)
+    f_v, df_v, _ = _universal_residual(vallado, tau, r0, sigma0, alpha, grow, decay)
+    f_b, df_b, _ = _universal_residual(barker, tau, r0, sigma0, alpha, grow, decay)
     step_v, step_b = abs(f_v / df_v), abs(f_b / df_b)
-    barker_better = np.isfinite(step_b) and not (step_v <= step_b)  # as propagate._starter
+    barker_better = np.isfinite(step_b) and not (step_v <= step_b)
     return barker if barker_better else vallado
 
 
 @jit
-def _residual_call(chi, tau, r0, sigma0, alpha):
+def _residual_call(chi, tau, r0, sigma0, alpha, grow, decay):
     """_universal_residual as a function call: pass 2 calls it instead of inlining three more copies
     (measured: compiling the propagation kernel took 35 s with them inlined, see the module docstring)."""
-    return _universal_residual(chi, tau, r0, sigma0, alpha)
+    return _universal_residual(chi, tau, r0, sigma0, alpha, grow, decay)
 
 
 @jit
-def _solve_universal(tau, r0, sigma0, alpha, p):
-    """chi >= 0 with F(chi) = tau (propagate._solve_universal, from _starter); NaN if the iteration cap is hit."""
+def _solve_universal(tau, r0, sigma0, alpha, p, grow, decay):
+    """Pass 2, propagate._solve_safeguarded: chi >= 0 with F(chi) = tau; NaN if the iteration cap is hit."""
     hi = max(tau / r0, 1e-300)
-    for _ in range(_BRACKET_DOUBLINGS):
-        if _residual_call(hi, tau, r0, sigma0, alpha)[0] >= 0.0:
+    for _ in range(BRACKET_DOUBLINGS):
+        if _residual_call(hi, tau, r0, sigma0, alpha, grow, decay)[0] >= 0.0:
             break
         hi *= 2.0
     lo = 0.0
-    x = min(max(_starter(tau, r0, sigma0, alpha, p), lo), hi)
+    x = min(max(_starter(tau, r0, sigma0, alpha, p, grow, decay), lo), hi)
     for _ in range(MAX_ITERATIONS):
-        f, df, d2f = _residual_call(x, tau, r0, sigma0, alpha)
+        f, df, d2f = _residual_call(x, tau, r0, sigma0, alpha, grow, decay)
         if f < 0:
             lo = x
         if f > 0:
             hi = x
         x, done = _halley_step(x, f, df, d2f, lo, hi)
         if done:
-            f, df, _ = _residual_call(x, tau, r0, sigma0, alpha)
+            f, df, _ = _residual_call(x, tau, r0, sigma0, alpha, grow, decay)
             polished = x - f / df
             return polished if (np.isfinite(polished) and f != 0) else x
     return np.nan
 
 
 @jit(inline=True)
-def _polish(x, tau, r0, sigma0, alpha):
-    """(x after one Newton step, the step): the final step of orbits.core._roots.halley_in_bracket."""
-    f, df, _ = _universal_residual(x, tau, r0, sigma0, alpha)
+def _polish(x, tau, r0, sigma0, alpha, grow, decay):
+    """propagate._polish: (x after one Newton step, the step)."""
+    f, df, _ = _universal_residual(x, tau, r0, sigma0, alpha, grow, decay)
     step = f / df
     polished = x - step
     return (polished if (np.isfinite(polished) and f != 0) else x), step
 
 
 @jit(inline=True)
-def _fixed_step(x, lo, hi, tau, r0, sigma0, alpha):
-    """One branch-free Halley step: (x, lo, hi, |step|), bisecting or doubling when the step leaves the
-    bracket [lo, hi] (hi may still be +inf)."""
-    f, df, d2f = _universal_residual(x, tau, r0, sigma0, alpha)
+def _fixed_step(x, lo, hi, tau, r0, sigma0, alpha, grow, decay):
+    """propagate._fixed_step, branch free: one Halley step (x, lo, hi, |step|), bisecting or doubling when the
+    step leaves the bracket [lo, hi] (hi may still be +inf)."""
+    f, df, d2f = _universal_residual(x, tau, r0, sigma0, alpha, grow, decay)
     lo = x if f < 0.0 else lo
     hi = x if f > 0.0 else hi
     new = x - f / (df - 0.5 * f * d2f / df)
@@ -260,6 +300,12 @@ def _semilatus(scaled):
 
 
 @jit(inline=True)
+def _coefficients(scaled):
+    """(grow, decay) = (e exp H0, e exp -H0) of the scaled problem (0, 0 unless it is a hyperbola)."""
+    return _hyperbolic_coefficients(scaled[10], scaled[11], scaled[12], _semilatus(scaled))
+
+
+@jit(inline=True)
 def _valid(rx, ry, rz, vx, vy, vz, mu, dt):
     """Finite state, mu and dt, mu > 0 and r x v != 0 (the NumPy version raises otherwise)."""
     hx, hy, hz = ry * vz - rz * vy, rz * vx - rx * vz, rx * vy - ry * vx
@@ -270,11 +316,17 @@ def _valid(rx, ry, rz, vx, vy, vz, mu, dt):
 
 @jit(inline=True)
 def _state_at(chi, scaled):
-    """(r, v) as six floats from the Lagrange f and g at chi; NaN where chi is NaN."""
+    """(r, v) as six floats from the Lagrange f and g at chi, as propagate._lagrange; NaN where chi is NaN."""
     length, speed, back, x, y, z, u, v, w, tau, r0, sigma0, alpha, dt = scaled
-    g0, g1, g2, g3 = _g_functions(chi, alpha)
-    r_new = r0 * g0 + sigma0 * g1 + g2
-    f, g = 1.0 - g2 / r0, r0 * g1 + sigma0 * g2
+    grow, decay = _coefficients(scaled)
+    g0, g1, g2, g3, e_sinh, e_cosh = _g_functions(chi, alpha, grow, decay)
+    inverse, _, inverse_15 = _inverse_powers(alpha)
+    possible = alpha * chi * chi < -1.0
+    r_terms, r_terms_h = abs(r0 * g0) + abs(sigma0 * g1) + abs(g2), (abs(e_cosh) + 1.0) * inverse
+    g_terms, g_terms_h = abs(r0 * g1) + abs(sigma0 * g2), abs(e_sinh) * inverse_15 + (abs(sigma0) + abs(g1)) * inverse
+    r_new = (e_cosh - 1.0) * inverse if (possible and r_terms_h < r_terms) else r0 * g0 + sigma0 * g1 + g2
+    g_far = e_sinh * inverse_15 - (sigma0 + g1) * inverse
+    f, g = 1.0 - g2 / r0, (g_far if (possible and g_terms_h < g_terms) else r0 * g1 + sigma0 * g2)
     f_dot, g_dot = -g1 / (r_new * r0), 1.0 - g2 / r_new
     vel_scale = back * speed
     return (
@@ -290,10 +342,9 @@ def _state_at(chi, scaled):
 # Rows of the per-block scratch array of pass 1: the inputs and outputs de-interleaved, the scaled
 # problem and the iteration state. LLVM vectorises loops over 1-D rows, not over (n, 3) arrays.
 _RX, _RY, _RZ, _VX, _VY, _VZ, _MU, _DT = range(8)
-_TAU, _R0, _SIGMA0, _ALPHA, _CHI, _LO, _HI, _LAST = range(8, 16)
-_OUT = 16  # rows 16..21: r and v of the result
+_TAU, _R0, _SIGMA0, _ALPHA, _GROW, _DECAY, _CHI, _LO, _HI, _LAST = range(8, 18)
+_OUT = 18  # rows 18..23: r and v of the result
 _BLOCK = 256  # states per block: the scratch rows stay in the L1 cache between the steps
-_FIXED_STEPS = 5  # Halley steps of pass 1
 
 
 @jit
@@ -313,13 +364,15 @@ def _setup_block(n, scratch):
     rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
     mu, dt = scratch[_MU], scratch[_DT]
     tau, r0, sigma0, alpha = scratch[_TAU], scratch[_R0], scratch[_SIGMA0], scratch[_ALPHA]
-    chi, lo, hi = scratch[_CHI], scratch[_LO], scratch[_HI]
+    grow, decay, chi, lo, hi = scratch[_GROW], scratch[_DECAY], scratch[_CHI], scratch[_LO], scratch[_HI]
     invalid = 0
     for j in range(n):
         invalid += not _valid(rx[j], ry[j], rz[j], vx[j], vy[j], vz[j], mu[j], dt[j])
         scaled = _scaled(rx[j], ry[j], rz[j], vx[j], vy[j], vz[j], mu[j], dt[j])
         tau[j], r0[j], sigma0[j], alpha[j] = scaled[9], scaled[10], scaled[11], scaled[12]
-        chi[j] = _starter(tau[j], r0[j], sigma0[j], alpha[j], _semilatus(scaled))
+        p = _semilatus(scaled)
+        grow[j], decay[j] = _hyperbolic_coefficients(r0[j], sigma0[j], alpha[j], p)
+        chi[j] = _starter(tau[j], r0[j], sigma0[j], alpha[j], p, grow[j], decay[j])
         lo[j], hi[j] = 0.0, np.inf
     return invalid
 
@@ -328,19 +381,21 @@ def _setup_block(n, scratch):
 def _step_block(n, scratch):
     """One branch-free Halley step for each state of the block (vectorised)."""
     tau, r0, sigma0, alpha = scratch[_TAU], scratch[_R0], scratch[_SIGMA0], scratch[_ALPHA]
+    grow, decay = scratch[_GROW], scratch[_DECAY]
     chi, lo, hi, last = scratch[_CHI], scratch[_LO], scratch[_HI], scratch[_LAST]
     for j in range(n):
-        chi[j], lo[j], hi[j], last[j] = _fixed_step(chi[j], lo[j], hi[j], tau[j], r0[j], sigma0[j], alpha[j])
+        chi[j], lo[j], hi[j], last[j] = _fixed_step(chi[j], lo[j], hi[j], tau[j], r0[j], sigma0[j], alpha[j],
+                                                    grow[j], decay[j])
 
 
 @jit
 def _certify_block(n, scratch):
-    """Polish chi and certify it (vectorised): NaN unless the last Halley step was below 2**-26
-    relative and the polishing step below 2**-40."""
+    """Polish chi and certify it (vectorised), as propagate._solve_certified: NaN unless the last Halley step
+    was below 2**-26 relative and the polishing step below 2**-40."""
     tau, r0, sigma0, alpha = scratch[_TAU], scratch[_R0], scratch[_SIGMA0], scratch[_ALPHA]
-    chi, last = scratch[_CHI], scratch[_LAST]
+    grow, decay, chi, last = scratch[_GROW], scratch[_DECAY], scratch[_CHI], scratch[_LAST]
     for j in range(n):
-        x, step = _polish(chi[j], tau[j], r0[j], sigma0[j], alpha[j])
+        x, step = _polish(chi[j], tau[j], r0[j], sigma0[j], alpha[j], grow[j], decay[j])
         certified = last[j] <= 2.0**-26 * chi[j] and abs(step) <= 2.0**-40 * chi[j]
         chi[j] = x if certified else np.nan
 
@@ -386,7 +441,7 @@ def _store_block(first, n, scratch, r, v):
 def propagate(start, stop, r0, v0, mu, dt, r, v):
     """r[i], v[i] at t0 + dt[i] from r0[i], v0[i] about mu[i]; returns invalid * 2**32 + unconverged.
 
-    Pass 1 runs _FIXED_STEPS branch-free Halley steps on every state, block by block (vectorised);
+    Pass 1 runs FIXED_STEPS branch-free Halley steps on every state, block by block (vectorised);
     states it leaves uncertified (NaN) run the safeguarded iteration in pass 2.
     """
     scratch = np.empty((_OUT + 6, _BLOCK))
@@ -395,7 +450,7 @@ def propagate(start, stop, r0, v0, mu, dt, r, v):
         n = min(_BLOCK, stop - first)
         _load_block(first, n, r0, v0, mu, dt, scratch)
         invalid += _setup_block(n, scratch)
-        for _ in range(_FIXED_STEPS):
+        for _ in range(FIXED_STEPS):
             _step_block(n, scratch)
         _certify_block(n, scratch)
         _evaluate_positions(n, scratch)
@@ -407,7 +462,8 @@ def propagate(start, stop, r0, v0, mu, dt, r, v):
     for i in range(start, stop):
         if np.isnan(r[i, 0]):
             scaled = _scaled(r0[i, 0], r0[i, 1], r0[i, 2], v0[i, 0], v0[i, 1], v0[i, 2], mu[i], dt[i])
-            chi = _solve_universal(scaled[9], scaled[10], scaled[11], scaled[12], _semilatus(scaled))
+            grow, decay = _coefficients(scaled)
+            chi = _solve_universal(scaled[9], scaled[10], scaled[11], scaled[12], _semilatus(scaled), grow, decay)
             state = _state_at(chi, scaled)
             for k in range(3):
                 r[i, k] = r0[i, k] if scaled[13] == 0.0 else state[k]

@@ -7,17 +7,33 @@ Method (Goodyear 1965, in the G-function form of Stiefel & Scheifele): the state
 modulo the period, negative times are handled by time reversal (r, v, -dt) -> (r, -v, dt), and the
 universal Kepler equation
     r0 G1(chi) + sigma0 G2(chi) + G3(chi) = dt,   G_k = chi**k c_k(alpha chi**2)
-is solved for chi by bracketed Halley iteration (F' = r > 0, so the root is unique). The Stumpff
-functions c_k come from their series for |z| <= 1 and from cancellation-free closed forms beyond
-(z > 0: 2 sin(s/2)**2 / z and (s - sin s) / s**3; z < 0 likewise with sinh), so orbits with
-|1 - e| down to 1e-16 and exact parabolas propagate without a special case.
+is solved for chi (F' = r > 0, so the root is unique) in two passes:
+1. from the starter (the better, by Newton step length, of Vallado's guess and the parabolic guess),
+   FIXED_STEPS Halley steps kept inside [lo, hi] (initially [0, inf): a step leaving it bisects, or
+   doubles while hi is unbounded), one polishing Newton step, and a certificate: the last Halley step
+   below 2**-26 and the Newton step below 2**-40 relative;
+2. the states pass 1 does not certify (none of the benchmark's mixed states) run the safeguarded
+   iteration: the bracket [0, hi] grown by doubling until F(hi) >= 0, Halley from the starter with
+   bisection (orbits.core._roots.halley_in_bracket), then the polishing step.
+The Stumpff functions c_k come from their series for |z| <= 1 and from cancellation-free closed forms
+beyond (z > 0: sin s and cos s of s = sqrt z, 1 - cos s = sin**2 s / (1 + cos s) while cos s > 0;
+z < 0: E = exp t of t = sqrt(-z), cosh t - 1 = sinh t tanh(t / 2), tanh(t / 2) = (1 - 1/E) / (1 + 1/E);
+s - sin s and sinh t - t from their series below 2), so orbits with |1 - e| down to 1e-16 and exact
+parabolas propagate without a special case.
+On a hyperbola (beta = -alpha > 0) started far out on its way in, the terms r0 G1 and sigma0 G2 nearly cancel
+(digits lost grow with r0 / q: 3e-12 near the asymptote). Where alpha chi**2 < -1 and its terms are smaller, F
+is summed in the hyperbolic anomaly H = H0 + sqrt(beta) chi instead: F = e sinh H / beta**1.5 - (sigma0 + chi)
+/ beta, with e exp(+-H0) from 1 + r0 beta +- sigma0 sqrt(beta) and, for the one that cancels, from their
+product e**2 = 1 + beta h**2; likewise r and the Lagrange g, each where that form cancels less.
 Radial orbits (r x v = 0) raise DegenerateOrbitError: the collision with the primary is not
 regularised here.
 
-Speed: with numba installed the same algorithm runs compiled, one state at a time
-(orbits/core/_fast_propagate.py); this NumPy version runs otherwise (ORBITS_JIT=0) and re-runs any
-batch the kernel flags, so that invalid input raises the same messages. Timings are in the README's
-Benchmarks section.
+Speed: the compiled kernel (orbits/core/_fast_propagate.py) is a port of this algorithm, step by step
+(same starter, passes, safeguards and Stumpff formulas; its sin, cos, exp, log and cube root are its own
+vectorisable versions, so the two agree to rounding, not bit for bit). orbits.core._fast.use decides: batches
+from AUTO_MIN_BATCH states on run compiled, smaller ones (a calculator query, a scene's outputs) here without
+importing numba. This version also re-runs any batch the kernel flags, so that invalid input raises the same
+messages. Timings are in the README's Benchmarks section.
 """
 
 import numpy as np
@@ -28,17 +44,28 @@ from orbits.core._roots import halley_in_bracket
 from orbits.core.checks import check_finite
 from orbits.core.elements import check_state
 from orbits.core.errors import DegenerateOrbitError
-from orbits.core.kepler import TWO_PI_1, TWO_PI_2, sinh_minus_x, x_minus_sin
+from orbits.core.kepler import _SINH_MINUS_X, _X_MINUS_SIN, TWO_PI_1, TWO_PI_2
 from orbits.core.series import factorial_series, horner
 
 #: c_k(z) = sum_j (-z)**j / (2j + k)! for k = 2, 3, to 12 terms (|z| <= 1)
 C2_SERIES, C3_SERIES = factorial_series(2, -1.0, 12), factorial_series(3, -1.0, 12)
 
+#: Below this s = sqrt(|z|), s - sin s and sinh s - s come from their series s**3 P(z) (they cancel above 1/2).
+SERIES_LIMIT = 2.0
+
+#: Halley steps of pass 1 (then certified): the starter needs 2.5-3 on average and at most 5 on the benchmark's
+#: mixed states (orbits/core/_fast_propagate.py).
+FIXED_STEPS = 5
+
+#: Doublings of hi = tau / r0 that pass 2 may take to bracket the root (F grows at least linearly in chi).
+BRACKET_DOUBLINGS = 2100
+
 
 def stumpff(z: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Stumpff functions (c0, c1, c2, c3) of z: c0 = cos sqrt z, c1 = sin sqrt z / sqrt z, c2, c3.
 
-    Overflows to inf (not NaN) for z below about -5e5, where cosh sqrt(-z) exceeds float64.
+    The formulas of the module docstring, which the compiled kernel uses too. Overflows to inf (not NaN) for z
+    below about -5e5, where cosh sqrt(-z) exceeds float64.
     """
     z = np.asarray(z, dtype=float)
     c0, c1, c2, c3 = (np.empty_like(z) for _ in range(4))
@@ -46,13 +73,21 @@ def stumpff(z: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarra
     zs = z[small]
     c2[small], c3[small] = horner(C2_SERIES, zs), horner(C3_SERIES, zs)
     c0[small], c1[small] = 1.0 - zs * c2[small], 1.0 - zs * c3[small]
-    s = np.sqrt(z[pos])
-    c0[pos], c1[pos] = np.cos(s), np.sin(s) / s
-    c2[pos], c3[pos] = 2.0 * np.sin(0.5 * s) ** 2 / z[pos], x_minus_sin(s) / (s * z[pos])
-    s = np.sqrt(-z[neg])
+    zp = z[pos]
+    s = np.sqrt(zp)
+    sin, cos = np.sin(s), np.cos(s)
+    one_minus_cos = np.where(cos > 0.0, sin * sin / (1.0 + np.maximum(cos, 0.0)), 1.0 - cos)
+    s_minus_sin = np.where(s < SERIES_LIMIT, s * s * s * horner(_X_MINUS_SIN, zp), s - sin)
+    c0[pos], c1[pos], c2[pos], c3[pos] = cos, sin / s, one_minus_cos / zp, s_minus_sin / (s * zp)
+    zn = -z[neg]
+    t = np.sqrt(zn)
     with np.errstate(over="ignore"):
-        c0[neg], c1[neg] = np.cosh(s), np.sinh(s) / s
-        c2[neg], c3[neg] = 2.0 * np.sinh(0.5 * s) ** 2 / -z[neg], sinh_minus_x(s) / (s * -z[neg])
+        exp = np.exp(t)
+        inverse = 1.0 / exp
+        sinh, cosh = 0.5 * (exp - inverse), 0.5 * (exp + inverse)
+        cosh_minus_one = sinh * ((1.0 - inverse) / (1.0 + inverse))
+        sinh_minus_t = np.where(t < SERIES_LIMIT, t * t * t * horner(_SINH_MINUS_X, zn), sinh - t)
+        c0[neg], c1[neg], c2[neg], c3[neg] = cosh, sinh / t, cosh_minus_one / zn, sinh_minus_t / (t * zn)
     return c0, c1, c2, c3
 
 
@@ -63,65 +98,159 @@ def _g_functions(chi, alpha):
         return c0, chi * c1, chi * chi * c2, chi * chi * chi * c3
 
 
+def _hyperbolic_coefficients(r0, sigma0, alpha, p):
+    """(grow, decay) = (e exp H0, e exp -H0) of a hyperbola (0 on other orbits), H0 the hyperbolic anomaly at
+    t0: with beta = -alpha, 1 + r0 beta = e cosh H0 and sigma0 sqrt(beta) = e sinh H0, and the smaller of the
+    two from grow decay = e**2 = 1 + beta p, p = h**2 (the difference cancels on the way in or out)."""
+    beta = np.where(alpha < 0.0, -alpha, 0.0)
+    e_cosh, e_sinh = 1.0 + r0 * beta, sigma0 * np.sqrt(beta)
+    larger = e_cosh + np.abs(e_sinh)
+    smaller = (1.0 + beta * p) / larger
+    grow, decay = np.where(sigma0 < 0.0, smaller, larger), np.where(sigma0 < 0.0, larger, smaller)
+    return np.where(alpha < 0.0, grow, 0.0), np.where(alpha < 0.0, decay, 0.0)
+
+
+def _hyperbolic_terms(chi, alpha, grow, decay):
+    """(e sinh H, e cosh H) at chi: H = H0 + sqrt(-alpha) chi (only where alpha chi**2 < -1)."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        exp = np.exp(np.sqrt(np.maximum(-alpha * chi * chi, 1.0)))
+        inverse = 1.0 / exp
+        return 0.5 * (grow * exp - decay * inverse), 0.5 * (grow * exp + decay * inverse)
+
+
+def _inverse_powers(alpha):
+    """(1 / beta, 1 / sqrt(beta), 1 / beta**1.5), beta = -alpha (meaningful on hyperbolas only): one division
+    instead of one per term (the kernel's vectorised loops pay for every division)."""
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        inverse = 1.0 / -alpha
+        inverse_root = np.sqrt(np.maximum(-alpha, 0.0)) * inverse
+        return inverse, inverse_root, inverse * inverse_root
+
+
+def _anomaly_form(chi, r0, sigma0, alpha, g, e_sinh, inverse, inverse_15):
+    """Where F is better summed in the hyperbolic anomaly H (beta = -alpha) as
+    F = e sinh H / beta**1.5 - (sigma0 + chi) / beta than as r0 G1 + sigma0 G2 + G3: alpha chi**2 < -1 and the
+    terms of the first are smaller, so that less cancels. That is the case on a hyperbola flown from far out on
+    its way in, where sigma0 G2 nearly cancels r0 G1; near e = 1 with |H| small it is e sinh H - H that
+    cancels, and the G form is kept."""
+    g0, g1, g2, g3 = g
+    with np.errstate(over="ignore", invalid="ignore"):
+        g_terms = np.abs(r0 * g1) + np.abs(sigma0 * g2) + np.abs(g3)
+        h_terms = np.abs(e_sinh) * inverse_15 + (np.abs(sigma0) + chi) * inverse
+        return (alpha * chi * chi < -1.0) & (h_terms < g_terms)
+
+
+def _residual(chi, tau, r0, sigma0, alpha, grow, decay):
+    """(F - tau, F', F'') with F = r0 G1 + sigma0 G2 + G3; F is increasing, so a non-finite F (overflow at huge
+    chi) counts as +inf, above the root. In the anomaly form (see _anomaly_form) F' = (e cosh H - 1) / beta and
+    F'' = e sinh H / sqrt(beta)."""
+    g0, g1, g2, g3 = g = _g_functions(chi, alpha)
+    e_sinh, e_cosh = _hyperbolic_terms(chi, alpha, grow, decay)
+    inverse, inverse_root, inverse_15 = _inverse_powers(alpha)
+    with np.errstate(over="ignore", invalid="ignore"):
+        f = (r0 * g1 + sigma0 * g2 + g3) - tau
+        df = r0 * g0 + sigma0 * g1 + g2
+        d2f = sigma0 * g0 + (1.0 - alpha * r0) * g1
+        f_h = (e_sinh * inverse_15 - (sigma0 + chi) * inverse) - tau
+        df_h, d2f_h = (e_cosh - 1.0) * inverse, e_sinh * inverse_root
+    far = _anomaly_form(chi, r0, sigma0, alpha, g, e_sinh, inverse, inverse_15)
+    f, df, d2f = np.where(far, f_h, f), np.where(far, df_h, df), np.where(far, d2f_h, d2f)
+    return np.where(np.isfinite(f), f, np.inf), df, d2f
+
+
 def _vallado_guess(tau, r0, sigma0, alpha):
     """tau alpha on ellipses; on hyperbolas Vallado's logarithmic guess, the exponential regime where Halley's
     method from a linear guess would crawl: chi0 = sqrt(-a) ln(-2 alpha tau / (sigma0 + sqrt(-a) (1 - alpha r0))),
     a = 1 / alpha (tau / r0 where it is not usable)."""
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        sqrt_minus_a = np.sqrt(-1.0 / alpha)
-        log_guess = sqrt_minus_a * np.log(-2.0 * alpha * tau / (sigma0 + sqrt_minus_a * (1.0 - alpha * r0)))
-    linear_guess = np.where(alpha > 0, tau * alpha, tau / r0)
-    return np.maximum(np.where((alpha < 0) & np.isfinite(log_guess) & (log_guess > 0), log_guess, linear_guess), 0.0)
+        sqrt_minus_a = np.sqrt(np.maximum(-1.0 / alpha, 0.0))
+        ratio = -2.0 * alpha * tau / (sigma0 + sqrt_minus_a * (1.0 - alpha * r0))
+        usable = (alpha < 0.0) & (ratio >= np.finfo(float).tiny) & (ratio < np.inf)
+        log_guess = sqrt_minus_a * np.log(np.where(usable, ratio, 1.0))
+    linear_guess = np.where(alpha > 0.0, tau * alpha, tau / r0)
+    return np.maximum(np.where(usable & (log_guess > 0.0), log_guess, linear_guess), 0.0)
 
 
 def _barker_guess(tau, sigma0, p):
     """chi on the parabola with the same p = h**2 and r0.v0: sqrt(p) (D - D0), D = tan(nu / 2) from Barker's
-    equation D + D**3 / 3 = D0 + D0**3 / 3 + 2 tau / p**1.5 (Cardano)."""
+    equation D + D**3 / 3 = D0 + D0**3 / 3 + 2 tau / p**1.5 (Cardano); 0 where that is negative or overflows."""
     with np.errstate(over="ignore", invalid="ignore"):
         root_p = np.sqrt(p)
         d0 = sigma0 / root_p
         w = d0 + d0 * d0 * d0 / 3.0 + 2.0 * tau / (p * root_p)
         c = np.cbrt(1.5 * np.abs(w) + np.sqrt(2.25 * w * w + 1.0))
         guess = root_p * (np.copysign(c - 1.0 / c, w) - d0)
-    return np.where(np.isfinite(guess), np.maximum(guess, 0.0), 0.0)
+        return np.where((guess > 0.0) & (guess < np.inf), guess, 0.0)
 
 
-def _starter(tau, r0, sigma0, alpha, p, residual):
+def _starter(tau, r0, sigma0, alpha, p, grow, decay):
     """First guess for chi: the better, by the length of the Newton step from each, of Vallado's guess and the
-    parabolic (Barker) guess. The compiled kernel (orbits.core._fast_propagate) ports this starter."""
+    parabolic (Barker) guess (a step that overflowed is never the better)."""
     vallado, barker = _vallado_guess(tau, r0, sigma0, alpha), _barker_guess(tau, sigma0, p)
-    every = np.nonzero(np.ones(tau.shape, dtype=bool))
-    f_v, df_v, _ = residual(vallado, every)
-    f_b, df_b, _ = residual(barker, every)
+    f_v, df_v, _ = _residual(vallado, tau, r0, sigma0, alpha, grow, decay)
+    f_b, df_b, _ = _residual(barker, tau, r0, sigma0, alpha, grow, decay)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         step_v, step_b = np.abs(f_v / df_v), np.abs(f_b / df_b)
-    barker_better = np.isfinite(step_b) & ~(step_v <= step_b)  # a step that overflowed is never the better
+    barker_better = np.isfinite(step_b) & ~(step_v <= step_b)
     return np.where(barker_better, barker, vallado)
 
 
-def _solve_universal(tau, r0, sigma0, alpha, p):
-    """chi >= 0 with r0 G1 + sigma0 G2 + G3 = tau >= 0 (scaled units, mu = 1; p = h**2)."""
+def _fixed_step(x, lo, hi, tau, r0, sigma0, alpha, grow, decay):
+    """One Halley step kept inside [lo, hi] (lo and hi first moved to x by the sign of F - tau): bisection, or
+    doubling while hi is +inf, when the step leaves the bracket. Returns (x, lo, hi, |step|)."""
+    f, df, d2f = _residual(x, tau, r0, sigma0, alpha, grow, decay)
+    lo, hi = np.where(f < 0.0, x, lo), np.where(f > 0.0, x, hi)
+    with np.errstate(all="ignore"):
+        new = x - f / (df - 0.5 * f * d2f / df)
+        inside = np.isfinite(new) & (lo <= new) & (new <= hi)
+        fallback = np.where(hi < np.inf, 0.5 * (lo + hi), 2.0 * np.fmax(np.fmax(lo, x), 1e-300))
+    new = np.where(inside, new, fallback)
+    return new, lo, hi, np.abs(new - x)
 
-    def residual(chi, idx):
-        g0, g1, g2, g3 = _g_functions(chi, alpha[idx])
-        with np.errstate(over="ignore", invalid="ignore"):
-            f = (r0[idx] * g1 + sigma0[idx] * g2 + g3) - tau[idx]
-            df = r0[idx] * g0 + sigma0[idx] * g1 + g2
-            d2f = sigma0[idx] * g0 + (1.0 - alpha[idx] * r0[idx]) * g1
-        # F is increasing, so a non-finite value (overflow at huge chi) lies above the root.
-        return np.where(np.isfinite(f), f, np.inf), df, d2f
 
-    all_idx = np.nonzero(np.ones(tau.shape, dtype=bool))
+def _polish(x, tau, r0, sigma0, alpha, grow, decay):
+    """(x after one Newton step, the step): the last step of both passes."""
+    f, df, _ = _residual(x, tau, r0, sigma0, alpha, grow, decay)
+    with np.errstate(all="ignore"):
+        step = f / df
+        polished = x - step
+    return np.where(np.isfinite(polished) & (f != 0), polished, x), step
+
+
+def _solve_certified(tau, r0, sigma0, alpha, p, grow, decay):
+    """Pass 1: (chi, certified) after FIXED_STEPS bracketed Halley steps from the starter and the polish."""
+    x, lo, hi = _starter(tau, r0, sigma0, alpha, p, grow, decay), np.zeros_like(tau), np.full_like(tau, np.inf)
+    for _ in range(FIXED_STEPS):
+        x, lo, hi, last = _fixed_step(x, lo, hi, tau, r0, sigma0, alpha, grow, decay)
+    chi, step = _polish(x, tau, r0, sigma0, alpha, grow, decay)
+    return chi, (last <= 2.0**-26 * x) & (np.abs(step) <= 2.0**-40 * x)
+
+
+def _solve_safeguarded(tau, r0, sigma0, alpha, p, grow, decay):
+    """Pass 2: chi by Halley inside a bracket grown from tau / r0 until F(hi) >= tau, from the starter."""
     hi = np.maximum(tau / r0, 1e-300)
-    for _ in range(2100):  # grow the bracket until F(hi) >= 0; F grows at least linearly in chi
-        f, _, _ = residual(hi, all_idx)
-        short = ~(f >= 0)
+    for _ in range(BRACKET_DOUBLINGS):
+        short = ~(_residual(hi, tau, r0, sigma0, alpha, grow, decay)[0] >= 0)
         if not np.any(short):
             break
         hi = np.where(short, 2.0 * hi, hi)
     lo = np.zeros_like(tau)
-    start = np.clip(_starter(tau, r0, sigma0, alpha, p, residual), lo, hi)
+    start = np.clip(_starter(tau, r0, sigma0, alpha, p, grow, decay), lo, hi)
+
+    def residual(chi, idx):
+        return _residual(chi, tau[idx], r0[idx], sigma0[idx], alpha[idx], grow[idx], decay[idx])
+
     return halley_in_bracket(start, lo, hi, residual, "universal Kepler solve", {"dt": tau, "alpha": alpha})
+
+
+def _solve_universal(tau, r0, sigma0, alpha, p, grow, decay):
+    """chi >= 0 with r0 G1 + sigma0 G2 + G3 = tau >= 0 (scaled units, mu = 1; p = h**2): pass 1, then pass 2 on
+    the states pass 1 leaves uncertified."""
+    chi, certified = _solve_certified(tau, r0, sigma0, alpha, p, grow, decay)
+    redo = ~certified
+    if np.any(redo):
+        chi[redo] = _solve_safeguarded(*(x[redo] for x in (tau, r0, sigma0, alpha, p, grow, decay)))
+    return chi
 
 
 def _reduce_by_periods(r0, v0, mu, dt):
@@ -153,16 +282,29 @@ def _reduce_by_periods(r0, v0, mu, dt):
 def propagate(r0: ArrayLike, v0: ArrayLike, mu: ArrayLike, dt: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     """State (r [m], v [m/s]) at t0 + dt [s] on the Kepler orbit through r0 [m], v0 [m/s] about mu [m**3/s**2].
 
-    Accuracy against an mpmath reference (tests/core/test_propagate.py): positions within 5e-15 relative over
-    +-1000 periods for e up to 1 - 1e-6 (measured 5.6e-16) and within 1e-14 for |1 - e| down to 1e-12;
-    velocities within 40 eps / sqrt(1 - e) (measured 4.1 eps / sqrt(1 - e)); near-parabolic hyperbolas flown for
-    1e9 s within 1e-14 in position. The compiled kernel (orbits.core._fast_propagate) ports this algorithm.
+    Accuracy against an mpmath reference, the same bounds on the NumPy and the compiled path
+    (tests/core/test_propagate.py, tests/core/test_propagate_long_flights.py): positions within 5e-15 relative
+    over +-1000 periods for e up to 1 - 1e-6 (measured 7.1e-16) and within 1e-14 for |1 - e| down to 1e-12
+    (measured 1.1e-15); velocities within 40 eps / sqrt(1 - e) (measured 4.2 eps / sqrt(1 - e)); near-parabolic
+    hyperbolas and ellipses (|1 - e| from 1e-7 to 1e-2) flown +-1e9 s within 1e-14 (measured 8.4e-16); flybys
+    through periapsis within 2e-14 (measured 3.8e-15), hyperbolas started near their asymptote at their
+    conditioning (8.2e-15). Batches from
+    orbits.core._fast.AUTO_MIN_BATCH states on run the compiled port of this algorithm (ORBITS_JIT decides).
     """
-    if _fast.enabled():  # at every batch size: on hyperbolas this NumPy version is still less accurate (issue 14)
+    if _fast.use(_batch_size(r0, v0, mu, dt)):
         result = _propagate_compiled(r0, v0, mu, dt)
         if result is not None:
             return result
     return _propagate_numpy(r0, v0, mu, dt)
+
+
+def _batch_size(r0, v0, mu, dt):
+    """Number of states the call propagates (0 if the shapes do not broadcast: the NumPy version then raises)."""
+    try:
+        shape = np.broadcast_shapes(np.shape(r0)[:-1], np.shape(v0)[:-1], np.shape(mu), np.shape(dt))
+    except ValueError:
+        return 0
+    return int(np.prod(shape))
 
 
 def _propagate_compiled(r0, v0, mu, dt):
@@ -193,6 +335,25 @@ def _contiguous(x, shape):
     return np.require(x, requirements=["C", "W"])
 
 
+def _lagrange(chi, r0, sigma0, alpha, grow, decay):
+    """(r, f, g, f', g') at chi: f = 1 - G2 / r0, g = r0 G1 + sigma0 G2, f' = -G1 / (r r0), g' = 1 - G2 / r with
+    r = r0 G0 + sigma0 G1 + G2. Where alpha chi**2 < -1, r = (e cosh H - 1) / beta and
+    g = e sinh H / beta**1.5 - (sigma0 + G1) / beta instead, each where its terms are the smaller (as in
+    _anomaly_form, but judged for r and g on their own: far out on a long flight F is better summed in H, g not)."""
+    g0, g1, g2, _ = _g_functions(chi, alpha)
+    e_sinh, e_cosh = _hyperbolic_terms(chi, alpha, grow, decay)
+    inverse, _, inverse_15 = _inverse_powers(alpha)
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        possible = alpha * chi * chi < -1.0
+        r_terms, r_terms_h = np.abs(r0 * g0) + np.abs(sigma0 * g1) + np.abs(g2), (np.abs(e_cosh) + 1.0) * inverse
+        g_terms = np.abs(r0 * g1) + np.abs(sigma0 * g2)
+        g_terms_h = np.abs(e_sinh) * inverse_15 + (np.abs(sigma0) + np.abs(g1)) * inverse
+        r = np.where(possible & (r_terms_h < r_terms), (e_cosh - 1.0) * inverse, r0 * g0 + sigma0 * g1 + g2)
+        g = np.where(possible & (g_terms_h < g_terms), e_sinh * inverse_15 - (sigma0 + g1) * inverse,
+                     r0 * g1 + sigma0 * g2)
+    return r, 1.0 - g2 / r0, g, -g1 / (r * r0), 1.0 - g2 / r
+
+
 def _propagate_numpy(r0, v0, mu, dt):
     """propagate in NumPy (masked iterations over the whole batch)."""
     r0, v0, mu = check_state(r0, v0, mu)
@@ -218,11 +379,10 @@ def _propagate_numpy(r0, v0, mu, dt):
     tau = np.abs(tau)
     sigma0 = np.sum(x * w, axis=-1)
     h_scaled = np.cross(x, w)
-    chi = _solve_universal(tau, r_scaled, sigma0, alpha, np.sum(h_scaled * h_scaled, axis=-1))
-    g0, g1, g2, g3 = _g_functions(chi, alpha)
-    r_new = r_scaled * g0 + sigma0 * g1 + g2
-    f, g = 1.0 - g2 / r_scaled, r_scaled * g1 + sigma0 * g2
-    f_dot, g_dot = -g1 / (r_new * r_scaled), 1.0 - g2 / r_new
+    p = np.sum(h_scaled * h_scaled, axis=-1)
+    grow, decay = _hyperbolic_coefficients(r_scaled, sigma0, alpha, p)
+    chi = _solve_universal(tau, r_scaled, sigma0, alpha, p, grow, decay)
+    r_new, f, g, f_dot, g_dot = _lagrange(chi, r_scaled, sigma0, alpha, grow, decay)
     x_new = f[..., None] * x + g[..., None] * w
     w_new = f_dot[..., None] * x + g_dot[..., None] * w
     w_new = np.where(backwards[..., None], -w_new, w_new)
