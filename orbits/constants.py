@@ -98,7 +98,8 @@ def _standish(a_au, e, inc, mean_longitude, perihelion_longitude, node):
     """Mean elements about the Sun from Standish's a (AU), e, I, L, long. perihelion and long. node (deg),
     ecliptic and equinox of J2000: argp = varpi - Omega, M = L - varpi."""
     return MeanElements("Sun", a_au * AU, e, _deg(inc), _deg(node % 360.0),
-                        _deg((perihelion_longitude - node) % 360.0), _deg((mean_longitude - perihelion_longitude) % 360.0),
+                        _deg((perihelion_longitude - node) % 360.0),
+                        _deg((mean_longitude - perihelion_longitude) % 360.0),
                         _STANDISH)
 
 

@@ -74,7 +74,8 @@ _ALIASES = {"ssb": "solar system barycentre", "solar system barycenter": "solar 
             "barycentre": "solar system barycentre", "barycenter": "solar system barycentre",
             "emb": "Earth-Moon barycentre", "earth-moon barycenter": "Earth-Moon barycentre"}
 #: astropy's names for the points its built-in ephemeris has
-_BUILTIN_NAMES = {"Sun": "sun", "Mercury": "mercury", "Venus": "venus", "Earth-Moon barycentre": "earth-moon-barycenter",
+_BUILTIN_NAMES = {"Sun": "sun", "Mercury": "mercury", "Venus": "venus",
+                  "Earth-Moon barycentre": "earth-moon-barycenter",
                   "Earth": "earth", "Moon": "moon", "Mars": "mars", "Jupiter": "jupiter", "Saturn": "saturn",
                   "Uranus": "uranus", "Neptune": "neptune"}
 #: the built-in ephemeris against DE421 (km), barycentric: twice the worst of 200 random TDB epochs 1900-2050
@@ -82,7 +83,8 @@ _BUILTIN_NAMES = {"Sun": "sun", "Mercury": "mercury", "Venus": "venus", "Earth-M
 #: 1,434 / 5,454, Earth 4.2 / 11.2, Moon 6.8 / 19.1, Mars 5,305 / 17,887, Jupiter 57,936 / 241,848,
 #: Saturn 143,184 / 584,057, Uranus 460,566 / 1,173,075, Neptune 195,915 / 276,563); tests/api/test_ephemeris.py
 BUILTIN_ACCURACY_KM = {"Sun": 12.0, "Mercury": 2.5e3, "Venus": 5.2e3, "Earth-Moon barycentre": 1.1e4, "Earth": 23.0,
-                       "Moon": 40.0, "Mars": 3.6e4, "Jupiter": 4.9e5, "Saturn": 1.2e6, "Uranus": 2.4e6, "Neptune": 5.6e5}
+                       "Moon": 40.0, "Mars": 3.6e4, "Jupiter": 4.9e5, "Saturn": 1.2e6, "Uranus": 2.4e6,
+                       "Neptune": 5.6e5}
 
 #: GM (m3/s2) of each DE421 point that carries mass, from JPL DE430 (Folkner et al. 2014, IPN Progress Report
 #: 42-196, Table 8): the masses an N-body model of these points uses. Jupiter-Pluto are whole systems, as their

@@ -25,6 +25,7 @@ from orbits import display, inputs, units
 from orbits.constants import Body, body
 from orbits.core import lagrange
 from orbits.core.errors import OrbitDomainError, UnknownNameError
+from orbits.nbody import NBodyProblem
 
 POINTS = lagrange.POINTS
 PER_SECOND = 1 / u.s
@@ -201,6 +202,37 @@ class RestrictedThreeBody(display.Displayed):
             c = lagrange.jacobi_constant(grid, np.zeros(3), self.mu)
         r = float(self.r)
         return x * r << units.M, y * r << units.M, c * float(self._scale_squared) << units.M_PER_S**2
+
+    # ---- a test particle, for an integrator --------------------------------------------------------
+    def test_particle_problem(self, r: u.Quantity, v: u.Quantity, times: u.Quantity) -> NBodyProblem:
+        """The binary and one massless particle started at the rotating-frame state r (length), v (speed), shape
+        (3,), as an NBodyProblem for orbits.validate.backends.integrate, in code units: G (M + m) = 1, r = 1,
+        n = 1 (the binary's period is 2 pi), output at n t for `times` (time Quantity, increasing, > 0).
+
+        Bodies: 0 = M at (-mu, 0, 0), 1 = m at (1 - mu, 0, 0), 2 = the particle; rotating_track turns the result
+        back into rotating-frame positions.
+        """
+        if np.ndim(self.mu) != 0:
+            raise OrbitDomainError("test_particle_problem needs a single binary; this object holds an array of them")
+        mu = float(self.mu)
+        r0 = inputs.vector(r, units.M, "position r") / float(self.r)
+        v0 = inputs.vector(v, units.M_PER_S, "velocity v") / float(self._n * self.r)
+        r_in, v_in = lagrange.rotating_to_inertial(r0, v0, 0.0)
+        return NBodyProblem(
+            gm=[1.0 - mu, mu, 0.0],
+            positions=[[-mu, 0.0, 0.0], [1.0 - mu, 0.0, 0.0], r_in],
+            velocities=[[0.0, -mu, 0.0], [0.0, 1.0 - mu, 0.0], v_in],
+            n_active=2,
+            times=units.to_si(times, units.S, "times") * float(self._n),
+        )
+
+    def rotating_track(self, positions: np.ndarray) -> u.Quantity:
+        """Rotating-frame positions (m), shape (K, 3), of the particle of a test_particle_problem from the integrated
+        code-unit positions (K, 3, 3), in the frame the integrated primaries define (x from M to m)."""
+        positions = np.asarray(positions, dtype=float)
+        mu = float(self.mu)
+        track = lagrange.rotating_coordinates(positions[:, 2], positions[:, 0], positions[:, 1], mu)
+        return track * float(self.r) << units.M
 
     # ---- tables ---------------------------------------------------------------------------------
     def __repr__(self) -> str:

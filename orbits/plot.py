@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Any
 import astropy.units as u
 import numpy as np
 
-from orbits import display, units
+from orbits import display, inputs, units
 from orbits.io import write_atomic
 
 if TYPE_CHECKING:
@@ -388,6 +388,143 @@ def _equal_3d(ax):
     ax.set_zlim3d(centre[2] - half, centre[2] + half)
 
 
+# ---- the solar system at a date (issue 16, item 5) -----------------------------------------------------------
+
+SOLAR_SYSTEM = {
+    "inner": ("Mercury", "Venus", "Earth", "Mars"),
+    "outer": ("Jupiter", "Saturn", "Uranus", "Neptune", "Pluto"),
+}
+SOLAR_SYSTEM["all"] = SOLAR_SYSTEM["inner"] + SOLAR_SYSTEM["outer"]
+#: points of the ephemeris drawn as the planet they stay next to at this scale
+_DRAWN_AS = {"Moon": "Earth", "Earth-Moon barycentre": "Earth", "solar system barycentre": "Sun"}
+
+
+def solar_system_part(body: str) -> str:
+    """The part of solar_system that shows `body` (a planet, Pluto, the Moon or a barycentre): "inner" for
+    Mercury-Mars and the Earth-Moon pair, "all" for Jupiter-Pluto (so the Earth is in the picture too)."""
+    from orbits import ephemeris
+
+    name = _DRAWN_AS.get(ephemeris.point_name(body), ephemeris.point_name(body))
+    return "all" if name in SOLAR_SYSTEM["outer"] else "inner"
+
+
+def solar_system(
+    epoch: Any,
+    ax: Any = None,
+    which: str = "inner",
+    projection: str = "xy",
+    *,
+    highlight: str | None = None,
+    observer: str | None = None,
+    source: str = "auto",
+) -> tuple[Any, Any]:
+    """Draw the planets (and Pluto for "outer" and "all") on their osculating heliocentric orbits at `epoch`, in
+    the ecliptic frame of J2000, each body's position a dot with its name beside it and the Sun at the centre.
+
+    Parameters
+    ----------
+    epoch : astropy Time or ISO string (read as UTC unless it names its scale; see orbits.ephemeris.epoch)
+    which : "inner" (Mercury-Mars), "outer" (Jupiter-Pluto) or "all"
+    projection : "xy" (the ecliptic seen from its north pole), "xz", "yz" or "3d"
+    highlight : a body drawn with a thick orbit and a bold label (the Moon and the Earth-Moon barycentre are
+        drawn as the Earth)
+    observer : with `highlight`, a body from which a dashed line of sight is drawn to it
+    source : the ephemeris, "auto", "de421" or "builtin" (astropy's, which has no Pluto: Pluto is then left out
+        and the title says so)
+
+    The orbits are `Orbit.from_body(name, epoch)` drawn by `orbits` (the first time each orbit passes through the
+    body's position); the title gives the date in TDB and the ephemeris that answered. DE421 gives Jupiter-Pluto
+    as system barycentres, and their legend entries say so. Tested in tests/api/test_plot_and_display.py (the
+    dots equal astropy's reading of DE421, rotated to the ecliptic, to 1e-9 AU).
+    """
+    from orbits import ephemeris
+    from orbits.orbit import Orbit
+
+    if which not in SOLAR_SYSTEM:
+        raise ValueError(f"which {which!r} is not one of {', '.join(SOLAR_SYSTEM)}")
+    when = ephemeris.epoch(epoch)
+    names = list(SOLAR_SYSTEM[which])
+    first = ephemeris.state(names[0], when, "Sun", source=source)
+    missing = []
+    if first.source == ephemeris.BUILTIN and "Pluto" in names:
+        names.remove("Pluto")
+        missing.append("Pluto (not in astropy's built-in ephemeris)")
+    states = {name: ephemeris.state(name, when, "Sun", source=source) for name in names}
+    drawn = [Orbit.from_body(name, when, source=source) for name in names]
+    fig, ax = orbits(*drawn, ax=ax, projection=projection, primary="Sun", labels=[s.point for s in states.values()])
+    axes_index = PROJECTIONS[projection]
+    scale = _axis_scale(ax)
+    target = None if highlight is None else _DRAWN_AS.get(ephemeris.point_name(highlight),
+                                                          ephemeris.point_name(highlight))
+    if target is not None and target not in (*names, "Sun"):
+        raise ValueError(f"{highlight} is not drawn in the {which} solar system ({', '.join(names)})")
+    positions = {name: orbit.r.to_value(u.m) * scale for name, orbit in zip(names, drawn)}
+    shown = None if highlight is None else ephemeris.point_name(highlight)
+    for name in _uncrowded(positions, axes_index, target):
+        text = f"{shown} (at {name})" if name == target and shown != target else name  # "Moon (at Earth)"
+        _label_point(ax, positions[name], axes_index, text, bold=name == target)
+    if target in names:
+        curve = next(line for line in ax.get_lines() if line.get_label() == states[target].point)
+        curve.set_linewidth(3.0)
+    if target is not None and observer is not None and ephemeris.point_name(observer) != target:
+        positions["Sun"] = np.zeros(3)
+        _line_of_sight(ax, when, observer, target, positions, axes_index, scale, source)
+    title = f"The {'' if which == 'all' else which + ' '}solar system on {when.tdb.iso[:16]} TDB (ecliptic J2000)"
+    title += f"\npositions: {first.source}"
+    if missing:
+        title += f"\nleft out: {', '.join(missing)}"
+    notes = ax.get_title()  # a closest approach inside the Sun, if any, stays in the title
+    ax.set_title(title + (f"\n{notes}" if notes else ""), fontsize="medium")
+    return fig, ax
+
+
+def _axis_scale(ax):
+    """Metres to the unit in the x label of a picture drawn by `orbits` ("x [AU]" -> 1 / 1.496e11)."""
+    text = ax.get_xlabel().rsplit("[", 1)[1].rstrip("]")
+    return u.m.to(u.Unit(text))
+
+
+def _uncrowded(positions, axes_index, first, spacing=0.04):
+    """The bodies whose names fit: the highlighted one first, then each whose dot is more than `spacing` of the
+    picture's half-size from the Sun and from every dot named already (the inner planets of the whole solar
+    system crowd round the Sun; the legend names them)."""
+    seen = {name: np.array([point[i] for i in axes_index]) for name, point in positions.items()}
+    size = max(np.linalg.norm(point) for point in seen.values())
+    named, taken = [], [np.zeros(len(axes_index))]
+    for name in sorted(seen, key=lambda n: n != first):
+        if name == first or all(np.linalg.norm(seen[name] - other) > spacing * size for other in taken):
+            named.append(name)
+            taken.append(seen[name])
+    return named
+
+
+def _label_point(ax, point, axes_index, text, bold):
+    """The body's name beside its dot."""
+    weight = "bold" if bold else "normal"
+    if len(axes_index) == 3:
+        ax.text(*(point[i] for i in axes_index), f"  {text}", fontsize="small", fontweight=weight, gid="name")
+        return
+    ax.annotate(text, tuple(point[i] for i in axes_index), textcoords="offset points", xytext=(5, 5),
+                fontsize="small", fontweight=weight, gid="name")
+
+
+def _line_of_sight(ax, when, observer, target, positions, axes_index, scale, source):
+    """A dashed line from the observer (drawn or not) to the target."""
+    from orbits import ephemeris
+    from orbits.core import frames
+
+    seer = ephemeris.point_name(observer)
+    if seer in positions:
+        start = positions[seer]
+    else:
+        seen = ephemeris.state(seer, when, "Sun", source=source)
+        start = frames.equatorial_to_ecliptic(seen.r_si) * scale
+    ends = np.stack([start, positions[target]])
+    ax.plot(*(ends[:, i] for i in axes_index), color="0.3", ls="--", lw=1.0, gid="line of sight",
+            label=f"line of sight from {seer}")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small", frameon=False)
+
+
 def flyby_plane(flyby: "Flyby", ax: Any = None, unit: u.UnitBase | None = None) -> tuple[Any, Any]:
     """Draw a single Flyby in its plane: the hyperbola about the focus within 4 max(b, q) of it, both asymptotes
     there, the impact parameter b (the focus's distance from the incoming asymptote), the closest approach, and
@@ -485,6 +622,110 @@ def binary_plane(binary: "Binary", ax: Any = None, unit: u.UnitBase | None = Non
     )
     ax.plot(0, 0, marker="+", ms=12, color="k", ls="none", label="centre of mass")
     _finish_plane(ax, unit, "x toward periapsis")
+    return fig, ax
+
+
+def _sky_unit(size_m, distance_m):
+    """(unit, metres -> unit factor) of a sky picture: a length unit, or with a distance an angle (arcsec or mas,
+    small angles: offset / distance rad)."""
+    if distance_m is None:
+        unit = _length_unit(size_m)
+        return unit, u.m.to(unit)
+    unit = u.mas if size_m / distance_m < 1 * u.arcsec.to(u.rad) else u.arcsec
+    return unit, u.rad.to(unit) / distance_m
+
+
+def binary_sky(binary: "Binary", ax: Any = None, distance: u.Quantity | None = None,
+               samples: int = 721) -> tuple[Any, Any]:
+    """The apparent orbit of star 2 about star 1 on the sky, north up and east to the LEFT (as the sky is seen):
+    the relative orbit r2 - r1 projected along the line of sight, star 1 at the origin, star 2 now with an arrow
+    along its motion, periastron, the line of nodes (position angle Omega) with the ascending node (where star 2
+    recedes) and the descending node. Offsets in a length unit, or in arcsec (mas) given the `distance`.
+
+    Elements in the sky frame of orbits.binary (x north, y east, z away from the observer). The projected ellipse
+    has area pi a b |cos i| (tests/api/test_binary_observables.py).
+    """
+    from orbits.core import elements
+
+    if binary.shape != ():
+        raise ValueError(f"binary_sky draws one binary; this Binary holds {binary.shape}: index it first")
+    rel = binary.relative
+    rel._require_ellipse("an apparent orbit")
+    fig, ax = _axes(ax)
+    p, e, inc, raan, argp = (float(x) for x in (rel.p, rel.e, rel.inc, rel.raan, rel.argp))
+    mu = float(rel.mu)
+
+    def sky(nu):
+        r, v = elements.elements_to_state(p, e, inc, raan, argp, np.asarray(nu, dtype=float), mu)
+        return r, v
+
+    distance_m = None if distance is None else float(inputs.positive(distance, units.M, "distance"))
+    unit, scale = _sky_unit(p / (1 - e), distance_m)
+    track, _ = sky(np.linspace(-np.pi, np.pi, samples))
+    east, north = track[..., 1] * scale, track[..., 0] * scale
+    ax.plot(east, north, color="C0", lw=1.5, label="apparent orbit of star 2")
+    ax.plot(0, 0, marker="*", ms=14, color="orange", ls="none", label="star 1")
+    reach = 1.15 * np.max(np.hypot(east, north))
+    node = np.array([np.sin(raan), np.cos(raan)]) * reach  # (east, north) along position angle Omega
+    ax.plot([-node[0], node[0]], [-node[1], node[1]], color="gray", ls="--", lw=1, gid="line of nodes",
+            label=f"line of nodes, position angle {np.degrees(raan) % 360:.4g} deg")
+    nodes, _ = sky(np.array([-argp, np.pi - argp]))
+    ax.plot(nodes[0, 1] * scale, nodes[0, 0] * scale, marker="^", ms=8, color="C3", ls="none",
+            gid="ascending node", label="ascending node (receding)")
+    ax.plot(nodes[1, 1] * scale, nodes[1, 0] * scale, marker="v", ms=8, color="C2", ls="none",
+            gid="descending node", label="descending node (approaching)")
+    if e > _CIRCULAR:
+        peri, _ = sky(0.0)
+        ax.plot(peri[1] * scale, peri[0] * scale, marker="o", mfc="none", color="C0", ls="none", gid="periastron",
+                label="periastron")
+    now_r, now_v = sky(float(rel.nu))
+    ax.plot(now_r[1] * scale, now_r[0] * scale, marker="o", color="k", ls="none", gid="star 2 now",
+            label="star 2 now")
+    arrow = now_v[:2] / max(np.hypot(*now_v[:2]), 1e-300) * 0.12 * reach
+    ax.annotate("", xy=(now_r[1] * scale + arrow[1], now_r[0] * scale + arrow[0]),
+                xytext=(now_r[1] * scale, now_r[0] * scale), arrowprops=dict(arrowstyle="->", color="k"))
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.invert_xaxis()  # east to the left, as the sky is seen
+    text = unit.to_string()
+    ax.set_xlabel(f"east offset [{text}] (east to the left)")
+    ax.set_ylabel(f"north offset [{text}]")
+    ax.set_title(f"i = {np.degrees(inc):.4g} deg, Omega = {np.degrees(raan):.4g} deg, "
+                 f"omega = {np.degrees(argp):.4g} deg, e = {e:.4g}", fontsize="medium")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small", frameon=False)
+    return fig, ax
+
+
+def radial_velocity_curves(binary: "Binary", ax: Any = None, cycles: float = 1.25, samples: int = 600
+                           ) -> tuple[Any, Any]:
+    """Both stars' radial velocities (> 0 receding) against orbital phase from periastron, over `cycles` periods,
+    with the systemic velocity gamma and each star's semi-amplitude K in the legend."""
+    if binary.shape != ():
+        raise ValueError(f"radial_velocity_curves draws one binary; this Binary holds {binary.shape}: "
+                         f"index it first")
+    if ax is None:
+        import matplotlib.pyplot as plt
+
+        fig, ax = plt.subplots(figsize=(9.5, 4.8), layout="constrained")
+    else:
+        fig = ax.figure
+    period = binary.period.to_value(u.s)
+    phase = np.linspace(0.0, cycles, samples)
+    dt = (phase * period - binary.time_since_periapsis.to_value(u.s)) << u.s
+    v1, v2 = binary.radial_velocities(dt)
+    k1, k2 = binary.rv_semi_amplitude1, binary.rv_semi_amplitude2
+    unit = display.axis_unit(max(k1, k2, np.abs(binary.center_of_mass_velocity[2])))
+    text = display.unit_text(unit)
+    for v, k, name, color in ((v1, k1, "star 1", "C0"), (v2, k2, "star 2", "C1")):
+        ax.plot(phase, v.to_value(unit), color=color, lw=1.5,
+                label=f"{name}, K = {display.quantity_text(k, digits=4)}")
+    gamma = binary.center_of_mass_velocity[2].to_value(unit)
+    ax.axhline(gamma, color="gray", ls="--", lw=1, label=f"systemic velocity {gamma:.4g} {text}")
+    ax.set_xlabel(f"orbital phase from periastron [periods of {display.quantity_text(binary.period, digits=5)}]")
+    ax.set_ylabel(f"radial velocity [{text}] (> 0 receding)")
+    ax.set_xlim(0, cycles)
+    ax.grid(alpha=0.3)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small", frameon=False)
     return fig, ax
 
 
@@ -595,34 +836,92 @@ def cosmology_overview(cosmology: "Cosmology", label: str, z_max: float = 10.0) 
 
 
 def lagrange_plane(
-    system: "RestrictedThreeBody", ax: Any = None, extent: float = 1.5, points: int = 401
+    system: "RestrictedThreeBody",
+    ax: Any = None,
+    extent: float = 1.5,
+    points: int = 401,
+    trajectories: dict[str, u.Quantity] | None = None,
+    shade: bool = True,
 ) -> tuple[Any, Any]:
-    """Rotating-frame view of a RestrictedThreeBody: the primaries, L1..L5, and the zero-velocity curves at the
-    Jacobi constants of L1, L2 and L3 (a particle with that constant cannot enter where C(x, y) < C)."""
-    fig, ax = _axes(ax)
+    """Rotating-frame view of a RestrictedThreeBody (axes in units of the separation r, x from M to m): the
+    primaries, L1..L5, the zero-velocity curves at the Jacobi constants of L1, L2 and L3, and, with `shade`, the
+    regions they forbid (a particle of Jacobi constant C cannot enter where C(x, y) = -2 Phi < C): lightest where
+    only a particle of C(L1) is kept out, darkest where even one of C(L3) is. `trajectories` {label: rotating-frame
+    positions (K, 3) length Quantity} are drawn over them, e.g. RestrictedThreeBody.rotating_track of an
+    integration (a tadpole about L4, a horseshoe through L3).
+    """
+    from orbits.display import body_name
+
+    if ax is None:
+        import matplotlib.pyplot as plt
+
+        fig, ax = plt.subplots(figsize=(9.6, 6.4), layout="constrained")
+    else:
+        fig = ax.figure
     x, y, c = system.zero_velocity_grid(extent=extent, points=points)
     r = float(system.separation.to_value(u.m))
-    levels = np.sort(system.jacobi_constants.to_value(c.unit)[:3])
-    contours = ax.contour(
-        x.to_value(u.m) / r, y.to_value(u.m) / r, c.value, levels=levels, colors=["C2", "C1", "C0"], linewidths=1.2
-    )
-    ax.clabel(
-        contours,
-        fmt={level: f"C(L{k + 1})" for k, level in enumerate(system.jacobi_constants.value[:3])},
-        fontsize="x-small",
-    )
+    xs, ys = x.to_value(u.m) / r, y.to_value(u.m) / r
+    values = np.where(np.isfinite(c.value), c.value, np.finfo(float).max)
+    constants = system.jacobi_constants.to_value(c.unit)
+    levels = np.sort(constants[:3])  # C(L3) < C(L2) < C(L1)
+    if shade:
+        bottom = min(float(values.min()), constants[3]) - 1.0
+        ax.contourf(xs, ys, values, levels=[bottom, *levels], colors=["0.55", "0.72", "0.88"], zorder=0)
+        import matplotlib.patches as mpatches
+
+        for shade_color, k in (("0.88", 1), ("0.72", 2), ("0.55", 3)):
+            ax.add_patch(mpatches.Rectangle((0, 0), 0, 0, color=shade_color, label=f"forbidden at C(L{k})"))
+    contours = ax.contour(xs, ys, values, levels=levels, colors=["C2", "C1", "C0"], linewidths=1.0, zorder=1)
+    ax.clabel(contours, fmt={level: f"C(L{k + 1})" for k, level in enumerate(constants[:3])}, fontsize="x-small")
     mu = float(system.mass_ratio.to_value(u.one))
-    ax.plot([-mu], [0], marker="o", ms=12, color="C0", ls="none", label=f"primary (1 - mu), mu = {mu:.4g}")
-    ax.plot([1 - mu], [0], marker="o", ms=6, color="C7", ls="none", label="secondary")
+    ax.plot([-mu], [0], marker="o", ms=11, color="C0", ls="none", zorder=3,
+            label=f"{body_name(system.gm_primary)} (M)")
+    ax.plot([1 - mu], [0], marker="o", ms=6, color="C7", ls="none", zorder=3,
+            label=f"{body_name(system.gm_secondary)} (m), mu = {mu:.4g}")
     xy = system.positions.to_value(u.m)[:, :2] / r
     for k, (px, py) in enumerate(xy):
-        ax.plot(px, py, marker="x", color="C3", ls="none", label="Lagrange points" if k == 0 else None)
+        ax.plot(px, py, marker="x", color="C3", ls="none", zorder=3, label="Lagrange points" if k == 0 else None)
         ax.annotate(f"L{k + 1}", (px, py), textcoords="offset points", xytext=(4, 4), fontsize="small")
+    for k, (label, track) in enumerate((trajectories or {}).items()):
+        shown = units.to_si(track, units.M, f"trajectory {label!r}") / r
+        ax.plot(shown[:, 0], shown[:, 1], color=f"C{(k + 4) % 10}", lw=1.0, zorder=2, label=label, gid="trajectory")
     ax.set_aspect("equal")
-    ax.set_xlabel("x (rotating frame) [separation r]")
+    ax.set_xlim(-extent, extent)
+    ax.set_ylim(-extent, extent)
+    ax.set_xlabel(f"x (rotating frame) [separation r = {display.quantity_text(system.separation, digits=6)}]")
     ax.set_ylabel("y (rotating frame) [separation r]")
     ax.grid(alpha=0.3)
-    ax.legend(loc="lower left", fontsize="small")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small", frameon=False)
+    return fig, ax
+
+
+def coorbital_plane(system: "RestrictedThreeBody", trajectories: dict[str, u.Quantity], ax: Any = None
+                    ) -> tuple[Any, Any]:
+    """Co-orbital motion unrolled: each trajectory's longitude from the secondary as seen from the primary (deg,
+    -180 to 180) against its distance from the primary minus r (units of r), with L3 (at +-180 deg), L4 (+60),
+    L5 (-60) and the secondary (0) marked. A tadpole stays on one side of the secondary; a horseshoe crosses
+    +-180 deg and turns back before reaching the secondary. `trajectories` as for lagrange_plane."""
+    fig, ax = _axes(ax)
+    r = float(system.separation.to_value(u.m))
+    mu = float(system.mass_ratio.to_value(u.one))
+    for k, (label, track) in enumerate(trajectories.items()):
+        shown = units.to_si(track, units.M, f"trajectory {label!r}") / r
+        x, y = shown[:, 0] + mu, shown[:, 1]  # from the primary, at (-mu, 0)
+        longitude = np.degrees(np.arctan2(y, x))
+        offset = np.hypot(x, y) - 1.0
+        jumps = np.flatnonzero(np.abs(np.diff(longitude)) > 180) + 1  # no line across the +-180 deg seam
+        longitude, offset = np.insert(longitude, jumps, np.nan), np.insert(offset, jumps, np.nan)
+        ax.plot(longitude, offset, color=f"C{(k + 4) % 10}", lw=1.0, label=label, gid="trajectory")
+    for name, where in (("L3", -180.0), ("L5", -60.0), ("secondary", 0.0), ("L4", 60.0), ("L3", 180.0)):
+        ax.axvline(where, color="0.6" if name != "secondary" else "C7", lw=0.8, ls=":" if name != "secondary" else "-")
+        ax.annotate(name, (where, 1.0), xycoords=("data", "axes fraction"), textcoords="offset points",
+                    xytext=(2, -10), fontsize="small")
+    ax.set_xlim(-180, 180)
+    ax.set_xticks(np.arange(-180, 181, 60))
+    ax.set_xlabel("longitude from the secondary, seen from the primary [deg]")
+    ax.set_ylabel("distance from the primary - r [separation r]")
+    ax.grid(alpha=0.3)
+    _legend_outside(ax)
     return fig, ax
 
 
@@ -644,15 +943,65 @@ def ring_breakup(
         seed * np.exp(growth_rate * np.asarray(times)),
         color="C3",
         ls="--",
-        label=f"round-off x exp({growth_rate:.3g} t)",
+        label=f"round-off x exp({growth_rate:.3g} t)" if growth_rate > 0 else "round-off, linearly stable",
     )
-    ax.axvline(breakup_time, color="gray", ls=":", label=f"predicted break-up t = {breakup_time:.3g}")
+    if np.isfinite(breakup_time):
+        ax.axvline(breakup_time, color="gray", ls=":", label=f"predicted break-up t = {breakup_time:.3g}")
+    ax.axhline(BREAKUP_LEVEL, color="C3", lw=0.8, ls="-.", gid="break-up level",
+               label=f"break-up level {BREAKUP_LEVEL:g} of the radius")
     ax.set_ylim(1e-17, 10)
     ax.set_xlabel("time [1 / angular velocity]")
     ax.set_ylabel("largest chord error [ring radius]")
     ax.grid(alpha=0.3, which="major")
     ax.legend(loc="best", fontsize="small")
     return fig, ax
+
+
+#: the shape deviation called break-up (orbits.rings.BREAKUP_DEVIATION, repeated to keep plot's imports light)
+BREAKUP_LEVEL = 1e-3
+
+
+def ring_snapshots(times: np.ndarray, positions: np.ndarray, growth_rate: float, breakup_time: float,
+                   first_body: int = 0, moments: Sequence[float] = (0.0, 1.0, 1.25, 1.5)) -> tuple[Any, np.ndarray]:
+    """A ring breaking up: its shape deviation against time on top (ring_breakup, with the 1e-3 break-up level),
+    and below it the bodies at the outputs nearest `moments` x the predicted break-up time, in the frame turning
+    with the ring, each panel with the regular n-gon it started as. Code units of orbits.validate.builders.
+    ring_problem: `positions` (K, N, 3) in ring radii (ring bodies from index `first_body`; a central mass before
+    them is drawn as a star), times in 1 / omega."""
+    import matplotlib.pyplot as plt
+
+    from orbits.core import rings
+
+    times, positions = np.asarray(times, dtype=float), np.asarray(positions, dtype=float)
+    ring = positions[:, first_body:]
+    deviations = rings.shape_deviation(ring, 1.0)
+    fig = plt.figure(figsize=(11, 7.2), layout="constrained")
+    grid = fig.add_gridspec(2, len(moments), height_ratios=(1.3, 1))
+    top = fig.add_subplot(grid[0, :])
+    ring_breakup(times, deviations, growth_rate, breakup_time, ax=top)
+    top.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize="small", frameon=False)
+    n = ring.shape[1]
+    angle = np.linspace(0, 2 * np.pi, n + 1)
+    panels = []
+    for column, moment in enumerate(moments):
+        ax = fig.add_subplot(grid[1, column])
+        target = moment * breakup_time if np.isfinite(breakup_time) else moment / max(moments) * times[-1]
+        k = int(np.argmin(np.abs(times - target)))
+        ax.plot(np.cos(angle), np.sin(angle), color="0.7", lw=0.8, ls="--", label="regular n-gon")
+        c, s = np.cos(times[k]), np.sin(times[k])  # into the frame turning with the ring (omega = 1)
+        x, y = c * ring[k, :, 0] + s * ring[k, :, 1], -s * ring[k, :, 0] + c * ring[k, :, 1]
+        ax.plot(x, y, marker="o", ms=5, ls="none", color="C0", gid="bodies")
+        if first_body:
+            ax.plot(positions[k, 0, 0], positions[k, 0, 1], marker="*", ms=10, color="orange", ls="none")
+        top.plot(times[k], max(deviations[k], 1e-17), marker="v", color="k", ls="none", gid="snapshot")
+        ax.set_title(f"t = {times[k]:.3g}\ndeviation {deviations[k]:.1e}", fontsize="small")
+        ax.set_aspect("equal")
+        reach = max(1.6, 1.1 * float(np.max(np.hypot(x, y))))
+        ax.set_xlim(-reach, reach)
+        ax.set_ylim(-reach, reach)
+        ax.tick_params(labelsize="x-small")
+        panels.append(ax)
+    return fig, np.array([top, *panels])
 
 
 def validation_residuals(report: Any, ax: Any = None) -> tuple[Any, Any]:

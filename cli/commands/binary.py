@@ -1,4 +1,6 @@
-"""`orbits binary`: every section XXII quantity of two finite masses about their centre of mass."""
+"""`orbits binary`: every section XXII quantity of two finite masses about their centre of mass, what an observer
+sees of them (the apparent orbit, the radial-velocity curves), and back from a measured radial-velocity curve
+(--K) to the mass function and the companion's mass."""
 
 from typing import TYPE_CHECKING, Annotated
 
@@ -14,46 +16,114 @@ from orbits_cli.options import (
     PeriapsisArgumentOption,
     PlotOption,
     TrueAnomalyOption,
+    _writable,
     save_plot,
 )
 
 if TYPE_CHECKING:
     from astropy.units import Quantity
 
-    from orbits.binary import Binary
+    from orbits.binary import Binary, SpectroscopicBinary
     from orbits.constants import Body
 
 MASS_HELP = "body name (Earth, Moon, Sun, Jupiter), mass ('1.989e30 kg', '1 solMass') or GM ('3.986e14 m3/s2')"
+SkyOption = Annotated[str | None, typer.Option(
+    "--sky", callback=_writable("--plot"), help="draw the apparent orbit on the sky (north up, east left) to this "
+    ".png, .svg or .pdf file; the elements are read in the sky frame (x north, y east, z away from us)")]
+RvOption = Annotated[str | None, typer.Option(
+    "--rv", callback=_writable("--plot"), help="draw both stars' radial-velocity curves to this .png, .svg or .pdf")]
 
 
 def command(
-    m1: Annotated[str, typer.Option("--m1", help=f"star 1 (the notes' M): {MASS_HELP}")],
-    m2: Annotated[str, typer.Option("--m2", help=f"star 2 (the notes' m): {MASS_HELP}")],
+    m1: Annotated[str | None, typer.Option("--m1", help=f"star 1 (the notes' M): {MASS_HELP}")] = None,
+    m2: Annotated[str | None, typer.Option("--m2", help=f"star 2 (the notes' m): {MASS_HELP}")] = None,
     a: Annotated[str | None, typer.Option("--a", help="relative semi-major axis a1 + a2, e.g. '384399 km'")] = None,
     p: Annotated[str | None, typer.Option("--p", help="relative semi-latus rectum")] = None,
     q: Annotated[str | None, typer.Option("--q", help="periapsis separation")] = None,
     period: Annotated[str | None, typer.Option("--period", help="orbital period, e.g. '27.32 d' (sets a)")] = None,
     e: EccentricityOption = 0.0,
-    inc: InclinationOption = "0",
-    raan: NodeOption = "0",
-    argp: PeriapsisArgumentOption = "0",
-    nu: TrueAnomalyOption = "0",
+    inc: InclinationOption = None,
+    raan: NodeOption = None,
+    argp: PeriapsisArgumentOption = None,
+    nu: TrueAnomalyOption = None,
+    k: Annotated[str | None, typer.Option(
+        "--K", help="star 1's measured radial-velocity semi-amplitude ('59 m/s'), with --period and --e: the mass "
+        "function; with --m1 the companion's minimum mass (and its mass, given --inc)")] = None,
+    gamma: Annotated[str | None, typer.Option(
+        "--gamma", help="systemic (centre-of-mass) radial velocity, e.g. '12 km/s' [default: 0]")] = None,
+    distance: Annotated[str | None, typer.Option(
+        "--distance", help="distance of the binary, e.g. '10 pc': --sky in arcsec instead of a length")] = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
+    sky: SkyOption = None,
+    rv: RvOption = None,
 ) -> None:
-    """Masses, relative orbit, each star's orbit about the centre of mass, energy and angular momentum (XXII)."""
+    """Masses, relative orbit, each star's orbit about the centre of mass, energy and angular momentum (XXII), and
+    the radial-velocity semi-amplitudes and mass function. With --K: from a measured radial-velocity curve to the
+    mass function and the companion's (minimum) mass."""
     from orbits import inputs
     from orbits_cli import render
 
-    result = build(m1, m2, a, p, q, period, e, inc, raan, argp, nu)
+    if k is not None:
+        result = spectroscopic(k, period, e, m1, inc, {"--m2": m2, "--a": a, "--p": p, "--q": q, "--raan": raan,
+                                                       "--argp": argp, "--nu": nu, "--gamma": gamma,
+                                                       "--distance": distance, "--plot": plot, "--sky": sky,
+                                                       "--rv": rv})
+        render.emit(f"From star 1's radial velocities: {result!r}", result.quantities(inputs.names(only)), fmt.value)
+        return
+    if m1 is None or m2 is None:
+        raise typer.BadParameter("give both masses --m1 and --m2 (or --K and --period for a measured "
+                                 "radial-velocity curve)")
+    result = build(m1, m2, a, p, q, period, e, inc, raan, argp, nu, gamma)
+    draw(result, plot, sky, rv, distance)
+    groups = [("relative_", "relative orbit (star 2 about star 1)"), ("star1_", "star 1 about the centre of mass"),
+              ("star2_", "star 2 about the centre of mass")]
+    render.emit(f"Binary of {m1} and {m2}", result.quantities(inputs.names(only)), fmt.value, groups=groups)
+
+
+def draw(result: "Binary", plot: str | None, sky: str | None, rv: str | None, distance: str | None) -> None:
+    """The pictures asked for: the orbits about the centre of mass, the sky, the radial velocities."""
+    from orbits.inputs import parse_quantity
+
+    if distance is not None and sky is None:
+        raise typer.BadParameter("--distance sets the scale of --sky: give --sky FILE too")
     if plot:
         from orbits.plot import binary_plane
 
         save_plot(lambda: binary_plane(result), plot)
-    groups = [("relative_", "relative orbit (star 2 about star 1)"), ("star1_", "star 1 about the centre of mass"),
-              ("star2_", "star 2 about the centre of mass")]
-    render.emit(f"Binary of {m1} and {m2}", result.quantities(inputs.names(only)), fmt.value, groups=groups)
+    if sky:
+        from orbits.plot import binary_sky
+
+        far = None if distance is None else parse_quantity(distance, "length", "--distance")
+        save_plot(lambda: binary_sky(result, distance=far), sky)
+    if rv:
+        from orbits.plot import radial_velocity_curves
+
+        save_plot(lambda: radial_velocity_curves(result), rv)
+
+
+def spectroscopic(k: str, period: str | None, e: float, m1: str | None, inc: str | None,
+                  others: dict[str, str | None]) -> "SpectroscopicBinary":
+    """The SpectroscopicBinary of --K, --period, --e and, if given, --m1 and --inc; BadParameter for options that
+    belong to a binary of known masses."""
+    from orbits.binary import SpectroscopicBinary
+    from orbits.inputs import parse_angle, parse_quantity
+
+    given = [name for name, value in others.items() if value is not None]
+    if given:
+        verb = "does" if len(given) == 1 else "do"
+        raise typer.BadParameter(f"{', '.join(given)} {verb} not apply with --K: a radial-velocity curve gives "
+                                 f"the mass function; drop --K to describe a binary of known masses")
+    if period is None:
+        raise typer.BadParameter("--K needs the period of the radial-velocity curve: --period '4.23 d'")
+    return SpectroscopicBinary.from_curve(
+        parse_quantity(period, "time", "--period"),
+        parse_quantity(k, "speed", "--K"),
+        e,
+        primary_mass=None if m1 is None else mass_or_body(m1, "--m1"),
+        inc=None if inc is None else parse_angle(inc, "--inc"),
+    )
 
 
 def build(
@@ -64,12 +134,16 @@ def build(
     q: str | None,
     period: str | None,
     e: float,
-    inc: str,
-    raan: str,
-    argp: str,
-    nu: str,
+    inc: str | None,
+    raan: str | None,
+    argp: str | None,
+    nu: str | None,
+    gamma: str | None = None,
 ) -> "Binary":
     """The Binary described by the options; BadParameter when no size (or more than one) is given."""
+    import astropy.units as u
+    import numpy as np
+
     from orbits import Binary, inputs
     from orbits_cli import params
 
@@ -79,11 +153,16 @@ def build(
         raise typer.BadParameter(f"give exactly one size of --a, --p, --q, --period; got {given or 'none'}")
     kind = "time" if given[0] == "period" else "length"
     size = {given[0]: inputs.parse_quantity(sizes[given[0]], kind, f"--{given[0]}")}
+    com_v = None
+    if gamma is not None:
+        along_sight = inputs.parse_quantity(gamma, "speed", "--gamma").to_value(u.m / u.s)
+        com_v = np.array([0.0, 0.0, along_sight]) << u.m / u.s  # z: the line of sight, away from us
     return Binary.from_elements(
         mass_or_body(m1, "--m1"),
         mass_or_body(m2, "--m2"),
         e=e,
-        **params.orientation(inc, raan, argp, nu),
+        **params.orientation(*(x or "0" for x in (inc, raan, argp, nu))),
+        com_v=com_v,
         **size,
     )
 

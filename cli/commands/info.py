@@ -36,7 +36,7 @@ def show(fmt: str) -> None:
     render.print_tables([grid, _bodies(facts["bodies"]), sources], "orbits info")
 
 
-def _bodies(rows: list) -> "Table":
+def _bodies(rows: list):
     """The catalogue as a table in natural units: GM km3/s2, radius km, rotation d (- retrograde), J2."""
     from rich import box
     from rich.table import Table
@@ -51,5 +51,6 @@ def _bodies(rows: list) -> "Table":
     for b in rows:
         rotation = b["rotation_period_s"] / 86400.0 * (-1 if b["retrograde"] else 1)
         table.add_row(b["name"], b["kind"], b["parent"] or "", number(b["gm_m3_s2"] / 1e9, 7),
-                      number(b["radius_m"] / 1e3, 6), number(rotation, 6), "" if b["j2"] is None else number(b["j2"], 5))
+                      number(b["radius_m"] / 1e3, 6), number(rotation, 6),
+                      "" if b["j2"] is None else number(b["j2"], 5))
     return table

@@ -5,7 +5,7 @@ from typing import TYPE_CHECKING, Annotated
 import typer
 
 from orbits_cli.commands.binary import MASS_HELP, mass_or_body
-from orbits_cli.options import Format, FormatOption, OnlyOption
+from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
 
 if TYPE_CHECKING:
     from orbits.lagrange import RestrictedThreeBody
@@ -21,10 +21,12 @@ def command(
     points: Annotated[str, typer.Option("--points", help="comma-separated points, e.g. L1,L4")] = "L1,L2,L3,L4,L5",
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
+    plot: PlotOption = None,
 ) -> None:
     """Lagrange points L1..L5 (rotating frame, x from M to m), Jacobi constants and linear stability (XXII.viii).
 
-    growth_rate is 0 for a linearly stable point; eigenvalues are (re, im) pairs in 1/s.
+    growth_rate is 0 for a linearly stable point; eigenvalues are (re, im) pairs in 1/s. --plot draws the
+    rotating frame: the points, the zero-velocity curves through L1..L3 and the regions they forbid.
     """
     from orbits import inputs
     from orbits_cli import render
@@ -33,6 +35,10 @@ def command(
     mu = float(system.mass_ratio.value)
     title = f"Lagrange points of {primary} and {secondary}, mu = {mu:.10g} (rotating frame, origin at the barycentre)"
     quantities = system.quantities(inputs.names(only), points=inputs.names(points))
+    if plot:
+        from orbits.plot import lagrange_plane
+
+        save_plot(lambda: lagrange_plane(system), plot)
     if fmt == Format.json:
         render.emit(title, quantities, fmt.value)
     else:

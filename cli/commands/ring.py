@@ -1,11 +1,14 @@
 """`orbits ring`: n equal masses on a regular n-gon, optionally about a central mass (XXIII, Maxwell's ring)."""
 
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
 from orbits_cli.commands.binary import MASS_HELP, mass_or_body
-from orbits_cli.options import Format, FormatOption, OnlyOption
+from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
+
+if TYPE_CHECKING:
+    from orbits import Ring
 
 
 def command(
@@ -17,9 +20,12 @@ def command(
     ] = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
+    plot: PlotOption = None,
 ) -> None:
     """Angular velocity, period, speed, U, K, E, L of a ring (XXIII) and its linear stability: growth rate,
-    break-up time from float64 round-off, and the central mass that makes a ring of n >= 7 stable."""
+    break-up time from float64 round-off, and the central mass that makes a ring of n >= 7 stable. --plot
+    integrates the ring with heyoka (or rebound) to 1.5 break-up times (20 periods if it is stable) and draws
+    its shape deviation, the 1e-3 break-up level and snapshots."""
     from orbits import Ring, inputs
     from orbits_cli import render
 
@@ -30,4 +36,27 @@ def command(
         central_mass=None if central_mass is None else mass_or_body(central_mass, "--central-mass"),
     )
     title = f"Ring of {n} bodies" + ("" if central_mass is None else f" about {central_mass}")
-    render.emit(title, ring.quantities(inputs.names(only)), fmt.value)
+    quantities = ring.quantities(inputs.names(only))
+    if plot:
+        save_plot(lambda: breakup_picture(ring), plot)
+    render.emit(title, quantities, fmt.value)
+
+
+def breakup_picture(ring: "Ring") -> tuple:
+    """The ring integrated from its exact state (code units: radius 1, omega = 1) and drawn breaking up."""
+    import numpy as np
+
+    from orbits.plot import ring_snapshots
+    from orbits.validate import backends
+    from orbits.validate.builders import ring_problem
+
+    beta = float(ring.central_mass_ratio.value)
+    _, probe = ring_problem(ring.n, [1.0], central_ratio=beta)
+    end = 1.5 * probe.breakup_time if np.isfinite(probe.breakup_time) else 40 * np.pi
+    problem, expected = ring_problem(ring.n, np.linspace(0, end, 400)[1:], central_ratio=beta)
+    backend = "heyoka" if backends.available("heyoka") else "rebound"
+    result = backends.integrate(backend, problem)
+    fig, axes = ring_snapshots(result.times, result.positions, expected.growth_rate, expected.breakup_time,
+                               expected.first_body)
+    fig.suptitle(f"{ring!r}, integrated by {backend}")
+    return fig, axes

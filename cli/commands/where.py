@@ -4,7 +4,16 @@ from typing import Annotated
 
 import typer
 
-from orbits_cli.options import Ephemeris, EphemerisOption, EpochOption, Format, FormatOption, OnlyOption
+from orbits_cli.options import (
+    Ephemeris,
+    EphemerisOption,
+    EpochOption,
+    Format,
+    FormatOption,
+    OnlyOption,
+    PlotOption,
+    save_plot,
+)
 
 
 def command(
@@ -14,9 +23,12 @@ def command(
     ephemeris: EphemerisOption = Ephemeris.auto,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
+    plot: PlotOption = None,
 ) -> None:
     """Distance from the Sun and the observer, elongation from the Sun (XXI.xi), phase angle, light time and
-    geometric ICRF right ascension and declination of a body at a date (default: now)."""
+    geometric ICRF right ascension and declination of a body at a date (default: now). --plot draws the solar
+    system at that date (the inner planets, or all of them for Jupiter-Pluto) with the body and the line of sight
+    from the observer."""
     from astropy.time import Time
 
     from orbits import ephemeris as eph
@@ -28,4 +40,10 @@ def command(
     seen = sighting.from_observer
     title = (f"{seen.point} seen from {seen.center}, {when.tdb.iso[:19]} TDB (geometric, no light-time "
              f"correction); source: {seen.source}")
-    render.emit(title, sighting.quantities(inputs.names(only)), fmt.value)
+    quantities = sighting.quantities(inputs.names(only))
+    if plot:
+        from orbits.plot import solar_system, solar_system_part
+
+        save_plot(lambda: solar_system(when, which=solar_system_part(body_name), highlight=body_name,
+                                       observer=observer, source=ephemeris.value), plot)
+    render.emit(title, quantities, fmt.value)

@@ -22,8 +22,8 @@ from orbits.core.errors import OrbitsError, SceneError
 from orbits.nbody import NBodyProblem
 from orbits.scene import MODEL_KEYS, show, unknown_keys
 from orbits.validate.builders import (
-    POINTS,
     MERCURY_GR_ADVANCE,
+    POINTS,
     expanding_sphere_problem,
     fitted_growth_rate,
     lagrange_test_particles_problem,

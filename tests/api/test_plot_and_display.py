@@ -4,12 +4,22 @@ import astropy.units as u
 import matplotlib
 import numpy as np
 import pytest
+from astropy.time import Time
 
 from orbits import Orbit, scene
 from orbits.plot import orbit_plane, save, validation_residuals
 from orbits.validate.run import validate
 
 matplotlib.use("Agg")
+
+
+@pytest.fixture(autouse=True)
+def _close_figures():
+    """Every test draws new figures; close them, or pyplot warns (an error here) past 20 open ones."""
+    yield
+    import matplotlib.pyplot as plt
+
+    plt.close("all")
 
 
 def labels(ax):
@@ -272,3 +282,142 @@ def test_flyby_of_jupiter_past_the_sun_stays_in_its_window_and_warns():
     assert any(line.get_label() == "trajectory, e = 1 + 6.3e-07" for line in ax.get_lines())
     assert "they collide" in ax.get_title()
     assert collision_note(Flyby.past("Jupiter", v_inf=5.6 * u.km / u.s, periapsis=200_000 * u.km)) is None
+
+
+# ---- the solar system at a date (issue 16, item 5) -----------------------------------------------------------
+
+OBLIQUITY_J2000 = np.radians(84381.448 / 3600)  # IAU 1976, the obliquity of JPL's ecliptic J2000
+
+
+def _astropy_heliocentric_ecliptic_au(name, when):
+    """astropy reading the same DE421 file, Sun-centred, turned about the equinox to the ecliptic of J2000."""
+    from astropy.coordinates import get_body_barycentric
+
+    from orbits import ephemeris
+
+    kernel = ephemeris.kernel_path()
+    r = (get_body_barycentric(name.lower(), when, ephemeris=kernel)
+         - get_body_barycentric("sun", when, ephemeris=kernel)).xyz.to_value(u.AU)
+    c, s = np.cos(OBLIQUITY_J2000), np.sin(OBLIQUITY_J2000)
+    return np.array([r[0], c * r[1] + s * r[2], -s * r[1] + c * r[2]])
+
+
+def test_solar_system_puts_each_planet_where_de421_has_it():
+    from orbits.plot import solar_system
+
+    when = Time("2026-11-25", scale="utc")
+    _, ax = solar_system(when, which="all")
+    assert "2026-11-25 00:01 TDB" in ax.get_title() and "DE421" in ax.get_title()  # TDB = UTC + 69.18 s
+    dots = {line.get_color(): line.get_xydata()[0] for line in _by_gid(ax, "body now")}
+    curves = {line.get_label(): line for line in ax.get_lines() if line.get_gid() is None}
+    for name in ["Mercury", "Venus", "Earth", "Mars", "Jupiter", "Saturn", "Uranus", "Neptune", "Pluto"]:
+        inner = name in ("Mercury", "Venus", "Earth", "Mars")
+        label = name if inner else f"{name} system barycentre (planet and moons)"
+        curve = curves[label]
+        dot = dots[curve.get_color()]
+        expected = _astropy_heliocentric_ecliptic_au(name, when)
+        np.testing.assert_allclose(dot, expected[:2], rtol=0, atol=8e-15 * np.linalg.norm(expected))  # measured 8e-16
+        gap = np.min(np.hypot(*(curve.get_xydata() - dot).T))  # the osculating orbit runs through the body
+        assert gap < 0.005 * np.linalg.norm(expected)  # 721 points, pi / 720 = 0.0044 of r apart; measured 0.0040
+    names = {text.get_text() for text in ax.texts if text.get_gid() == "name"}
+    assert {"Jupiter", "Saturn", "Uranus", "Neptune", "Pluto"} <= names  # the inner ones crowd round the Sun
+    assert not {"Mercury", "Venus"} & names
+    assert "[AU]" in ax.get_xlabel() and any(line.get_label().startswith("Sun") for line in ax.get_lines())
+
+
+def test_solar_system_inner_names_every_planet_and_highlights_one_with_its_line_of_sight():
+    from orbits.plot import solar_system
+
+    _, ax = solar_system("2026-11-25", which="inner", highlight="mars", observer="Earth")
+    names = {text.get_text(): text for text in ax.texts if text.get_gid() == "name"}
+    assert set(names) == {"Mercury", "Venus", "Earth", "Mars"} and names["Mars"].get_fontweight() == "bold"
+    curves = {line.get_label(): line for line in ax.get_lines()}
+    assert curves["Mars"].get_linewidth() == 3.0 and curves["Earth"].get_linewidth() < 3.0
+    sight = _by_gid(ax, "line of sight")[0].get_xydata()
+    dots = {line.get_color(): line.get_xydata()[0] for line in _by_gid(ax, "body now")}
+    np.testing.assert_array_equal(sight, [dots[curves["Earth"].get_color()], dots[curves["Mars"].get_color()]])
+    from orbits import ephemeris
+
+    seen = ephemeris.where("Mars", "2026-11-25")  # the sight line's length in 3D is the Earth-Mars distance
+    when = Time("2026-11-25", scale="utc")
+    earth, mars = (_astropy_heliocentric_ecliptic_au(name, when) for name in ("Earth", "Mars"))
+    assert np.linalg.norm(mars - earth) == pytest.approx(seen.observer_distance.to_value(u.AU), rel=1e-12)
+    _, ax = solar_system("2026-11-25", which="inner", highlight="Moon")
+    assert "Moon (at Earth)" in {text.get_text() for text in ax.texts}
+
+
+def test_solar_system_without_de421_leaves_pluto_out_and_says_so():
+    from orbits.plot import solar_system
+
+    _, ax = solar_system("2026-11-25", which="outer", source="builtin")
+    assert "left out: Pluto" in ax.get_title() and "astropy built-in" in ax.get_title()
+    assert {line.get_label() for line in ax.get_lines()} >= {"Jupiter", "Saturn", "Uranus", "Neptune"}
+    assert not any("Pluto" in line.get_label() for line in ax.get_lines())
+
+
+def test_solar_system_3d_and_bad_choices():
+    from orbits.plot import solar_system, solar_system_part
+
+    _, ax = solar_system("J2000", which="inner", projection="3d")
+    assert ax.name == "3d" and "z [AU]" in ax.get_zlabel()
+    assert {"Mercury", "Venus", "Earth", "Mars"} <= {text.get_text().strip() for text in ax.texts}
+    with pytest.raises(ValueError, match="which 'middle' is not one of inner, outer, all"):
+        solar_system("J2000", which="middle")
+    with pytest.raises(ValueError, match="Saturn is not drawn in the inner solar system"):
+        solar_system("J2000", which="inner", highlight="Saturn")
+    assert [solar_system_part(b) for b in ("Mars", "moon", "EMB", "Jupiter", "Pluto")] == [
+        "inner", "inner", "inner", "all", "all"]
+
+
+# ---- binary observables (issue 18, item 3) ------------------------------------------------------------------
+
+
+def _visual_binary():
+    from orbits import Binary
+
+    return Binary.from_elements(1.1 * u.solMass, 0.8 * u.solMass, period=20 * u.yr, e=0.5, inc=50 * u.deg,
+                                raan=30 * u.deg, argp=100 * u.deg, nu=40 * u.deg, com_v=[0, 0, 12] * u.km / u.s)
+
+
+def test_binary_sky_draws_the_apparent_orbit_north_up_east_left():
+    from orbits.plot import binary_sky
+
+    pair = _visual_binary()
+    _, ax = binary_sky(pair)
+    east, north = [line for line in ax.get_lines() if line.get_label() == "apparent orbit of star 2"][0].get_xydata().T
+    a, e = pair.relative.semi_major_axis.to_value(u.AU), 0.5
+    area = 0.5 * abs(np.dot(east, np.roll(north, 1)) - np.dot(north, np.roll(east, 1)))  # shoelace
+    projected = np.pi * a * a * np.sqrt(1 - e * e) * np.cos(np.radians(50))  # pi a b cos i
+    assert area == pytest.approx(projected, rel=1e-4)  # 721 points: measured 1.9e-5
+    node = _by_gid(ax, "ascending node")[0].get_xydata()[0]
+    assert np.degrees(np.arctan2(node[0], node[1])) == pytest.approx(30, abs=1e-12)  # position angle Omega
+    rho, theta = pair.sky_position()
+    now = _by_gid(ax, "star 2 now")[0].get_xydata()[0]
+    rho_au = rho.to_value(u.AU)
+    assert tuple(now) == pytest.approx((rho_au * np.sin(theta.value), rho_au * np.cos(theta.value)), rel=1e-12)
+    left, right = ax.get_xlim()
+    assert left > right and "east" in ax.get_xlabel() and "north" in ax.get_ylabel()  # east to the left
+    assert "i = 50 deg" in ax.get_title()
+    _, ax = binary_sky(pair, distance=10 * u.pc)
+    far = _by_gid(ax, "star 2 now")[0].get_xydata()[0]
+    np.testing.assert_allclose(far, now * 0.1, rtol=1e-12)  # 1 AU at 10 pc is 0.1 arcsec
+    assert "[arcsec]" in ax.get_xlabel()
+
+
+def test_radial_velocity_curves_span_two_k_about_the_systemic_velocity():
+    from orbits.plot import radial_velocity_curves
+
+    pair = _visual_binary()
+    fig, ax = radial_velocity_curves(pair, cycles=1.0, samples=4001)
+    curves = {line.get_label().split(",")[0]: line.get_ydata() for line in ax.get_lines()}
+    k1, k2 = pair.rv_semi_amplitude1.to_value(u.km / u.s), pair.rv_semi_amplitude2.to_value(u.km / u.s)
+    assert np.ptp(curves["star 1"]) == pytest.approx(2 * k1, rel=3e-6)  # sampled extrema; measured 3.1e-7
+    assert np.ptp(curves["star 2"]) == pytest.approx(2 * k2, rel=3e-6)
+    np.testing.assert_allclose(curves["star 1"] - 12, -(curves["star 2"] - 12) * 0.8 / 1.1, rtol=1e-12, atol=1e-12)
+    gamma = [line for line in ax.get_lines() if line.get_label().startswith("systemic")][0]
+    assert gamma.get_ydata()[0] == pytest.approx(12) and "km / s" in ax.get_ylabel()
+    phase = ax.get_lines()[0].get_xdata()
+    _, v2 = pair.radial_velocities(phase[1000] * pair.period - pair.time_since_periapsis)
+    assert curves["star 2"][1000] == pytest.approx(v2.to_value(u.km / u.s), rel=1e-13)
+    fig.canvas.draw()
+    assert ax.get_legend().get_window_extent().x0 >= ax.get_window_extent().x1  # the legend is off the data

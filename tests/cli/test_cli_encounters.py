@@ -5,6 +5,7 @@ import json
 import pytest
 from typer.testing import CliRunner
 
+from orbits import BODIES
 from orbits_cli.main import app
 
 runner = CliRunner()
@@ -30,6 +31,29 @@ def test_binary_from_masses_and_a_period_with_only():
     )
     assert list(data) == ["star1_periapsis_speed"]
     assert abs(data["star1_periapsis_speed"]["value"] - 125.59) < 0.01  # a hot Jupiter's pull on its star
+
+
+def test_binary_radial_velocity_semi_amplitudes_and_mass_function():
+    """The Sun's reflex from Jupiter seen edge-on: K1 = 2 pi a1 / (P sqrt(1 - e**2)), 12.5 m/s; and back from K."""
+    data = run_json("binary", "--m1", "Sun", "--m2", "Jupiter", "--a", "5.2026 AU", "--e", "0.0484", "--inc", "90",
+                    "--only", "rv_semi_amplitude1,rv_semi_amplitude2,mass_function,period")
+    k1, period = data["rv_semi_amplitude1"]["value"], data["period"]["value"]
+    assert data["rv_semi_amplitude1"]["unit"] == "m / s" and abs(k1 - 12.47) < 0.01
+    ratio = BODIES["Sun"].gm / BODIES["Jupiter"].gm  # K2 / K1 = m1 / m2
+    assert data["rv_semi_amplitude2"]["value"] / k1 == pytest.approx(ratio, rel=1e-14)
+    back = run_json("binary", "--K", f"{k1!r} m/s", "--period", f"{period!r} s", "--e", "0.0484", "--m1", "Sun")
+    assert back["mass_function"]["value"] == pytest.approx(data["mass_function"]["value"], rel=1e-14)
+    assert back["minimum_companion_mass"]["value"] == pytest.approx(BODIES["Jupiter"].mass, rel=1e-14)
+
+
+def test_binary_draws_the_sky_and_the_radial_velocities(tmp_path):
+    sky, rv = tmp_path / "sky.png", tmp_path / "rv.svg"
+    result = runner.invoke(app, ["binary", "--m1", "1.1 solMass", "--m2", "0.8 solMass", "--period", "20 yr", "--e",
+                                 "0.5", "--inc", "50", "--raan", "30", "--argp", "100", "--gamma", "12 km/s", "--sky",
+                                 str(sky), "--distance", "10 pc", "--rv", str(rv), "--only", "mass_function"])
+    assert result.exit_code == 0, result.output
+    assert sky.read_bytes()[:4] == b"\x89PNG" and sky.stat().st_size > 20_000
+    assert b"<svg" in rv.read_bytes()[:1000]
 
 
 def test_binary_table():
@@ -101,6 +125,13 @@ def test_escape_speed_geo_and_elongation():
         (["binary", "--m1", "Earth", "--m2", "Moon", "--a", "1 km", "--period", "1 d"], "give exactly one size"),
         (["binary", "--m1", "Earth", "--m2", "Moon", "--period", "1 d", "--e", "1.5"], "e = 1.5 is outside"),
         (["binary", "--m1", "Earth", "--m2", "Moon", "--a", "7000 s"], "not a length"),
+        (["binary", "--m1", "Earth", "--a", "1 km"], "give both masses --m1 and --m2"),
+        (["binary", "--K", "59 m/s", "--period", "4 d", "--m2", "Moon", "--rv", "x.png"], "--m2, --rv do not apply"),
+        (["binary", "--K", "59 m/s"], "--K needs the period"),
+        (["binary", "--K", "59 km", "--period", "4 d"], "--K"),
+        (["binary", "--K", "59 m/s", "--period", "4 d", "--m1", "Sun", "--inc", "0"], "inclination i = 0.0 deg"),
+        (["binary", "--m1", "Sun", "--m2", "Earth", "--a", "1 AU", "--distance", "1 pc"], "give --sky FILE too"),
+        (["binary", "--m1", "Sun", "--m2", "Earth", "--a", "1 AU", "--sky", "sky.gif"], "must end in .png"),
         (["flyby", "--primary", "Earth", "--v-inf", "0 km/s", "--b", "1 km"], "v_inf = 0.0 m / s is outside"),
         (["flyby", "--primary", "Earth", "--v-inf", "1 km/s", "--b", "-1 km"], "impact parameter b = -1000.0 m"),
         (["flyby", "--primary", "Earth", "--v-inf", "1 km/s"], "exactly one of --b"),

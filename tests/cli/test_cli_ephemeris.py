@@ -64,3 +64,17 @@ def test_info_lists_the_catalogue():
     assert bodies["Titan"]["parent"] == "Saturn" and bodies["Venus"]["retrograde"] is True
     table = run("info").stdout
     assert "Ganymede" in table and max(len(line) for line in table.splitlines()) <= 80
+
+
+@pytest.mark.parametrize("body_name", ["Mars", "Saturn", "Moon"])
+def test_where_plots_the_solar_system_at_that_date(tmp_path, body_name):
+    target = tmp_path / f"{body_name}.png"
+    result = run("where", body_name, "--epoch", "2026-11-25", "--plot", str(target), "--only", "elongation")
+    assert result.exit_code == 0, result.output
+    assert target.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and target.stat().st_size > 20_000
+    assert "elongation" in result.stdout
+
+
+def test_where_plot_refuses_an_unknown_format_before_any_work(tmp_path):
+    result = run("where", "Mars", "--plot", str(tmp_path / "sky.gif"))
+    assert result.exit_code == 2 and "must end in .png, .svg or .pdf" in result.output

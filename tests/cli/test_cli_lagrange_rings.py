@@ -96,3 +96,20 @@ def test_ring_table_and_non_integer_count():
     assert result.exit_code == 0, result.output
     assert "Ring of 7 bodies about Earth" in result.stdout and "central_mass_threshold" in result.stdout
     assert run("ring", "2.5", "--m", "1 kg", "--r", "1 m").exit_code == 2
+
+
+@pytest.mark.parametrize("args", [
+    ["lagrange", "Earth", "Moon", "--only", "period"],
+    ["ring", "5", "--m", "1e20 kg", "--r", "1e5 km", "--only", "breakup_time"],
+    ["ring", "8", "--m", "1e20 kg", "--r", "1e5 km", "--central-mass", "3e22 kg", "--only", "period"],
+])
+def test_lagrange_and_ring_draw_their_pictures(tmp_path, args):
+    target = tmp_path / "picture.png"
+    result = run(*args, "--plot", str(target))
+    assert result.exit_code == 0, result.output
+    assert target.read_bytes()[:4] == b"\x89PNG" and target.stat().st_size > 20_000
+
+
+def test_lagrange_plot_refuses_a_bad_suffix_before_any_work(tmp_path):
+    result = run("lagrange", "Earth", "Moon", "--plot", str(tmp_path / "x.jpg"))
+    assert result.exit_code == 2 and "must end in .png, .svg or .pdf" in result.output

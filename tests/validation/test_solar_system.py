@@ -6,8 +6,7 @@ import pytest
 
 from orbits.core.errors import SceneError
 from orbits.nbody import NBodyProblem
-from orbits.validate import models, validate_scene
-from orbits.validate import _heyoka, _rebound
+from orbits.validate import _heyoka, _rebound, models, validate_scene
 
 
 @pytest.fixture(scope="module")
