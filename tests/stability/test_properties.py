@@ -38,4 +38,6 @@ def test_unit_invariance_km_versus_au(a_au, e, nu_deg):
     in_km = Orbit.from_elements("Sun", a=(a_au * u.AU).to(u.km), e=e, nu=(nu_deg * u.deg).to(u.rad))
     for name in ("period", "periapsis_speed", "radius", "speed", "time_since_periapsis"):
         x, y = getattr(in_au, name).si.value, getattr(in_km, name).si.value
-        assert abs(x - y) <= 8 * 2**-53 * max(abs(x), abs(y)) + 1e-300
+        # The km input carries the AU -> km -> m conversion's rounding (p differs by 2 ulp) and the period raises
+        # it to the 1.5 power: measured 8.0 * 2**-53 relative (7 ulp) at a = 0.15 AU, e = 0.2999, nu = 0.
+        assert abs(x - y) <= 16 * 2**-53 * max(abs(x), abs(y)) + 1e-300
