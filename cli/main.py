@@ -22,6 +22,7 @@ from orbits_cli.commands import (
     lambert,
     orbit,
     pendulum,
+    porkchop,
     precision,
     projectile,
     ring,
@@ -77,6 +78,7 @@ app.command("rocket")(reports_errors(displays(rocket.command)))
 app.add_typer(transfer.app, name="transfer")
 app.command("where")(reports_errors(displays(where.command)))
 app.command("lambert")(reports_errors(displays(lambert.command)))
+app.command("porkchop")(reports_errors(displays(porkchop.command)))
 app.command("collide")(reports_errors(displays(collide.command)))
 app.command("projectile")(reports_errors(displays(projectile.command)))
 app.command("pendulum")(reports_errors(displays(pendulum.command)))

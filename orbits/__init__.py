@@ -37,6 +37,7 @@ _HOMES = {
     "elastic_collision": "orbits.manoeuvres",
     "lambert": "orbits.transfers",
     "LambertTransfer": "orbits.transfers",
+    "Porkchop": "orbits.porkchop",
     "Cosmology": "orbits.cosmology",
     "ExpandingSphere": "orbits.cosmology",
     "anomalies": "orbits.kepler",

@@ -163,6 +163,8 @@ runs = [
     ["rocket", "--m0", "100 t", "--mf", "40 t", "--isp", "300 s", "--thrust", "2 MN"],
     ["transfer", "hohmann", "--r1", "6678 km", "--r2", "42164 km", "--format", "json"],
     ["lambert", "--r1", "1,0,0 AU", "--r2", "0,1.5,0 AU", "--tof", "200 d", "--format", "json"],
+    ["porkchop", "--launch", "2026-10-01:2026-12-01", "--arrival", "2027-07-01:2027-10-01", "--step", "15 d",
+     "--plot", os.path.join(out, "pc.png")],
     ["cosmology", "--z", "1", "--plot", os.path.join(out, "c.png")],
     ["validate", "circular", "expanding_universe", "--output", os.path.join(out, "v.json"),
      "--plot", os.path.join(out, "v.png")],

@@ -1,0 +1,50 @@
+"""`orbits porkchop`: launch energy C3 and arrival v_inf of the transfers on a grid of launch and arrival dates."""
+
+from typing import Annotated
+
+import typer
+
+from orbits_cli.options import Ephemeris, EphemerisOption, Format, FormatOption, OnlyOption, PlotOption, save_plot
+
+
+def _window(text: str, option: str) -> tuple[str, str]:
+    """'START:END' (ISO dates) as a pair of strings."""
+    start, sep, end = text.partition(":")
+    if not sep or not start.strip() or not end.strip():
+        raise typer.BadParameter(f"{option} {text!r}: write START:END dates, e.g. 2026-09-01:2027-01-31")
+    return start.strip(), end.strip()
+
+
+def command(
+    departure: Annotated[str, typer.Option("--from", help="the departure body, e.g. Earth")] = "Earth",
+    target: Annotated[str, typer.Option("--to", help="the arrival body, e.g. Mars")] = "Mars",
+    launch: Annotated[str, typer.Option("--launch", help="launch dates START:END, e.g. 2026-09-01:2027-01-31")
+                      ] = "2026-09-01:2027-01-31",
+    arrival: Annotated[str, typer.Option("--arrival", help="arrival dates START:END, e.g. 2027-06-01:2028-03-01")
+                       ] = "2027-06-01:2028-03-01",
+    step: Annotated[str, typer.Option("--step", help="spacing of both date axes, e.g. '1 d'")] = "1 d",
+    ephemeris: EphemerisOption = Ephemeris.auto,
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+    plot: PlotOption = None,
+) -> None:
+    """The transfers of least departure C3, least arrival v_inf and least total v_inf among the zero-revolution
+    prograde Lambert transfers about the Sun on a grid of launch and arrival dates (patched conics, DE421 states).
+    JSON adds each minimum's dates as TDB Julian dates (*_jd_tdb); --plot draws the porkchop."""
+    from orbits import Porkchop, inputs
+    from orbits_cli import render
+
+    chart = Porkchop.between(departure, target, _window(launch, "--launch"), _window(arrival, "--arrival"),
+                             inputs.parse_quantity(step, "time", "--step"), source=ephemeris.value)
+    quantities = chart.quantities(inputs.names(only))
+    if fmt.value != "json":
+        quantities = {k: v for k, v in quantities.items() if not k.endswith("_jd_tdb")}
+    groups = [(prefix, f"least {best.kind}: {best.launch.tdb.iso[:10]} -> {best.arrival.tdb.iso[:10]}")
+              for prefix, best in chart.minima().items()]
+    if plot:
+        from orbits.plot import porkchop
+
+        save_plot(lambda: porkchop(chart), plot)
+    title = (f"{chart.departure} to {chart.target}, launch -> arrival dates (TDB) on a grid of "
+             f"{chart.launch_dates.size} x {chart.arrival_dates.size}; positions: {chart.source}")
+    render.emit(title, quantities, fmt.value, groups=groups)

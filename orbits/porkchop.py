@@ -1,0 +1,340 @@
+"""Porkchop plots: departure C3 and arrival v_inf of the ballistic transfers on a grid of launch and arrival dates.
+
+    >>> import astropy.units as u
+    >>> from orbits import Porkchop
+    >>> p = Porkchop.between("Earth", "Mars", launch=("2026-09-01", "2027-01-31"),
+    ...                      arrival=("2027-06-01", "2028-03-01"), step=5 * u.day)
+    >>> best = p.minimum_c3
+    >>> best.launch.tdb.iso[:10], round(float(best.c3.to_value(u.km**2 / u.s**2)), 2)
+    ('2026-10-31', 9.18)
+
+Each cell (launch date t1, arrival date t2 > t1) is one zero-revolution Lambert problem about the Sun from the
+departure body's heliocentric position at t1 to the arrival body's at t2 (orbits.lambert, the whole grid in one
+vectorised call), on the prograde solution: the transfer's angular momentum on the north side of the ecliptic of
+J2000, the side the planets' orbits turn to. Then
+
+    C3 = |v1 - v_departure_body(t1)|**2,   v_inf at arrival = |v2 - v_arrival_body(t2)|,
+
+the patched-conic hyperbolic excess energy at launch and speed at arrival (the planets' own gravity ignored).
+Positions and velocities are heliocentric ICRF from orbits.ephemeris (JPL DE421, or astropy's built-in ephemeris
+without the extra); the frame does not change C3 or v_inf. The Sun's GM is DE430's (Folkner et al. 2014), the mass
+that goes with the ephemeris: orbits.ephemeris.DE430_GM["Sun"]. Cells whose arrival is not after the launch are
+invalid: masked in every grid, never a number.
+
+Tests (tests/api/test_porkchop.py): the returned v1, propagated by the mpmath reference (orbits.tools.reference),
+reaches the arrival body as astropy reads it from DE421 to 1e-12 of its distance; C3 and v_inf recomputed from
+astropy's DE421 velocities; a coarse grid's minima against a fine grid's (the step's quadratic error). No published
+mission-design minimum is compared yet: none was found in a citeable form (see the test module).
+"""
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
+
+import astropy.units as u
+import numpy as np
+from astropy.time import Time, TimeDelta
+from astropy.utils.masked import Masked
+
+from orbits import display, ephemeris, inputs, units
+from orbits.core import frames
+from orbits.core.errors import OrbitDomainError
+from orbits.tables import quantity_table
+from orbits.transfers import lambert
+
+#: the Sun's GM (m3/s2) used for the transfers: JPL DE430's, the mass that goes with the ephemeris
+SUN_GM = ephemeris.DE430_GM["Sun"]
+#: the north pole of the ecliptic of J2000 in the ICRF: a prograde transfer's angular momentum points to its side
+ECLIPTIC_POLE = frames.ecliptic_to_equatorial(np.array([0.0, 0.0, 1.0]))
+#: the largest grid computed (cells): 4 million cells take about 0.5 GB of float64 arrays
+MAX_CELLS = 4_000_000
+KM2_PER_S2 = u.km**2 / u.s**2
+
+
+def _window(value: Any, name: str) -> tuple[Time, Time]:
+    """(start, end) as TDB Times from a pair of dates (Time or ISO strings), start not after end."""
+    try:
+        start, end = value
+    except (TypeError, ValueError):
+        raise OrbitDomainError(f"{name} window: give (start, end) dates, e.g. ('2026-09-01', '2027-01-31'); "
+                               f"got {value!r}") from None
+    start, end = (Time(*ephemeris.tdb_julian_dates(ephemeris.epoch(d)), format="jd", scale="tdb")
+                  for d in (start, end))
+    if not (start.isscalar and end.isscalar):
+        raise OrbitDomainError(f"{name} window: start and end must each be one date")
+    if end < start:
+        raise OrbitDomainError(f"{name} window: the end {end.iso[:16]} TDB is before the start {start.iso[:16]} TDB")
+    return start, end
+
+
+def _dates(start: Time, end: Time, step_days: float) -> Time:
+    """start, start + step, ... up to end (within a microsecond), TDB."""
+    span = float((end - start).to_value(u.day))
+    count = int(np.floor(span / step_days + 1e-9)) + 1
+    return start + TimeDelta(np.arange(count) * step_days, format="jd", scale="tdb")
+
+
+def _masked(values: np.ndarray, valid: np.ndarray, unit: u.UnitBase) -> Masked:
+    """A masked Quantity: the invalid cells masked (their NaN never shown)."""
+    return Masked(values << unit, mask=~valid)
+
+
+def _date_text(when: Time) -> str:
+    return f"{when.tdb.iso[:10]}"
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class PorkchopMinimum(display.Displayed):
+    """The grid cell where one figure of merit (`kind`: C3, arrival v_inf or total v_inf) is least: its dates and
+    the transfer's C3 (m2/s2), departure and arrival v_inf (m/s) and time of flight (s), SI floats."""
+
+    kind: str
+    launch: Time
+    arrival: Time
+    c3_si: float
+    departure_v_inf_si: float
+    arrival_v_inf_si: float
+    tof_si: float
+
+    @property
+    def c3(self) -> u.Quantity:
+        """C3 = v_inf**2 at departure (m2/s2)."""
+        return self.c3_si << units.M**2 / units.S**2
+
+    @property
+    def departure_v_inf(self) -> u.Quantity:
+        """|v1 - v_departure_body| (m/s)."""
+        return self.departure_v_inf_si << units.M_PER_S
+
+    @property
+    def arrival_v_inf(self) -> u.Quantity:
+        """|v2 - v_arrival_body| (m/s)."""
+        return self.arrival_v_inf_si << units.M_PER_S
+
+    @property
+    def total_v_inf(self) -> u.Quantity:
+        """Departure plus arrival v_inf (m/s)."""
+        return self.departure_v_inf_si + self.arrival_v_inf_si << units.M_PER_S
+
+    @property
+    def time_of_flight(self) -> u.Quantity:
+        """Arrival minus launch date (s)."""
+        return self.tof_si << units.S
+
+    @property
+    def launch_jd_tdb(self) -> u.Quantity:
+        """The launch date as a TDB Julian date (d): for machines (JSON)."""
+        return float(self.launch.tdb.jd) << u.day
+
+    @property
+    def arrival_jd_tdb(self) -> u.Quantity:
+        """The arrival date as a TDB Julian date (d): for machines (JSON)."""
+        return float(self.arrival.tdb.jd) << u.day
+
+    def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
+        """{name: Quantity} of MINIMUM_NAMES (or `only` those)."""
+        return quantity_table(lambda name: getattr(self, name), MINIMUM_NAMES, only)
+
+    def _display_quantities(self) -> dict[str, u.Quantity]:
+        return {k: v for k, v in self.quantities().items() if not k.endswith("_jd_tdb")}
+
+    def __repr__(self) -> str:
+        """E.g. "PorkchopMinimum(C3, launch 2026-11-05, arrival 2027-09-02, C3 = 8.86 km2 / s2, ...)"."""
+        return display.one_line(
+            "PorkchopMinimum", self.kind, f"launch {_date_text(self.launch)}", f"arrival {_date_text(self.arrival)}",
+            "C3 = " + display.summary(self.c3, digits=4), "v_inf arrival = " + display.summary(self.arrival_v_inf,
+                                                                                            digits=4),
+            "tof = " + display.summary(self.time_of_flight, digits=4))
+
+
+#: what PorkchopMinimum.quantities() lists
+MINIMUM_NAMES = ("c3", "departure_v_inf", "arrival_v_inf", "total_v_inf", "time_of_flight", "launch_jd_tdb",
+                 "arrival_jd_tdb")
+#: the minima a Porkchop reports, by the prefix of their names in Porkchop.quantities()
+MINIMA = {"min_c3_": "minimum_c3", "min_arrival_v_inf_": "minimum_arrival_v_inf", "min_total_": "minimum_total"}
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class Porkchop(display.Displayed):
+    """Ballistic transfers from `departure` to `target` on a grid: rows are arrival dates, columns launch dates.
+
+    SI float64 fields: r/v of the departure body at each launch date (n, 3) and of the target at each arrival date
+    (m, 3), the transfer velocities v1_si, v2_si (m, n, 3) (NaN where invalid), valid (m, n) and the Sun's GM.
+    Build with Porkchop.between.
+    """
+
+    departure: str
+    target: str
+    launch_dates: Time
+    arrival_dates: Time
+    r_departure: np.ndarray
+    v_departure: np.ndarray
+    r_target: np.ndarray
+    v_target: np.ndarray
+    v1_si: np.ndarray
+    v2_si: np.ndarray
+    valid: np.ndarray
+    mu: float
+    source: str
+
+    @classmethod
+    def between(cls, departure: str, target: str, launch: tuple[Any, Any], arrival: tuple[Any, Any],
+                step: u.Quantity = 1 * u.day, *, source: str = "auto") -> "Porkchop":
+        """Solve the zero-revolution prograde Lambert transfer of every (launch, arrival) pair on the grid.
+
+        Parameters
+        ----------
+        departure, target : ephemeris points (orbits.ephemeris.points()), different, neither the Sun nor the
+            solar-system barycentre (any case: "earth", "Mars").
+        launch, arrival : (start, end) dates, astropy Times or ISO strings (UTC unless they name a scale).
+        step : Quantity ['time'] > 0, the spacing of both date axes (default 1 d).
+        source : the ephemeris: "auto", "de421" or "builtin".
+
+        Raises OrbitDomainError when no arrival date follows a launch date, a date is outside the ephemeris, the
+        grid exceeds MAX_CELLS, or a body is not a planet-like point (UnknownNameError for an unknown name).
+        """
+        names = [ephemeris.point_name(b) for b in (departure, target)]
+        for name in names:
+            if name in ("Sun", "solar system barycentre"):
+                raise OrbitDomainError(f"porkchop: {name} cannot be a departure or target body (transfers are "
+                                       f"about the Sun); give planets, Pluto or the Moon")
+        if names[0] == names[1]:
+            raise OrbitDomainError(f"porkchop: the departure and target bodies are both {names[0]}")
+        step_days = float(inputs.positive(step, units.S, "date step")) / 86400.0
+        launch_window, arrival_window = _window(launch, "launch"), _window(arrival, "arrival")
+        if arrival_window[1] <= launch_window[0]:
+            raise OrbitDomainError(
+                f"porkchop: the arrival window ends ({arrival_window[1].iso[:16]} TDB) before the launch window "
+                f"starts ({launch_window[0].iso[:16]} TDB): no transfer has a positive time of flight")
+        launches, arrivals = _dates(*launch_window, step_days), _dates(*arrival_window, step_days)
+        if launches.size * arrivals.size > MAX_CELLS:
+            raise OrbitDomainError(f"porkchop: {launches.size} launch x {arrivals.size} arrival dates = "
+                                   f"{launches.size * arrivals.size:,} cells; at most {MAX_CELLS:,}: take a longer "
+                                   f"step or shorter windows")
+        start = ephemeris.state(names[0], launches, "Sun", source=source)
+        end = ephemeris.state(names[1], arrivals, "Sun", source=source)
+        return cls._solved(names, launches, arrivals, start, end)
+
+    @classmethod
+    def _solved(cls, names, launches, arrivals, start, end) -> "Porkchop":
+        """Solve the valid cells in one lambert call and lay the velocities out on the (arrival, launch) grid."""
+        tof = (arrivals.tdb.jd1[:, None] - launches.tdb.jd1[None, :]) + (
+            arrivals.tdb.jd2[:, None] - launches.tdb.jd2[None, :])
+        tof = tof * 86400.0
+        valid = tof > 0
+        rows, cols = np.nonzero(valid)
+        transfer = lambert(start.r_si[cols] << units.M, end.r_si[rows] << units.M, tof[valid] << units.S,
+                           SUN_GM << units.M3_PER_S2, normal=ECLIPTIC_POLE)
+        v1 = np.full(valid.shape + (3,), np.nan)
+        v2 = np.full(valid.shape + (3,), np.nan)
+        v1[valid], v2[valid] = transfer.v1_si, transfer.v2_si
+        return cls(names[0], names[1], launches, arrivals, start.r_si, start.v_si, end.r_si, end.v_si, v1, v2,
+                   valid, SUN_GM, start.source)
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        """(arrival dates, launch dates)."""
+        return self.valid.shape
+
+    def _grid(self, values: np.ndarray, unit: u.UnitBase) -> Masked:
+        return _masked(np.where(self.valid, values, np.nan), self.valid, unit)
+
+    @cached_property
+    def _departure_v_inf(self) -> np.ndarray:
+        return np.linalg.norm(self.v1_si - self.v_departure[None, :, :], axis=-1)
+
+    @cached_property
+    def _arrival_v_inf(self) -> np.ndarray:
+        return np.linalg.norm(self.v2_si - self.v_target[:, None, :], axis=-1)
+
+    @cached_property
+    def _tof(self) -> np.ndarray:
+        days = (self.arrival_dates.tdb.jd1[:, None] - self.launch_dates.tdb.jd1[None, :]) + (
+            self.arrival_dates.tdb.jd2[:, None] - self.launch_dates.tdb.jd2[None, :])
+        return days * 86400.0
+
+    @property
+    def c3(self) -> Masked:
+        """C3 = |v1 - v_departure|**2 (m2/s2), (arrival, launch) grid, invalid cells masked."""
+        return self._grid(self._departure_v_inf**2, units.M**2 / units.S**2)
+
+    @property
+    def departure_v_inf(self) -> Masked:
+        """|v1 - v_departure| (m/s) on the grid."""
+        return self._grid(self._departure_v_inf, units.M_PER_S)
+
+    @property
+    def arrival_v_inf(self) -> Masked:
+        """|v2 - v_target| (m/s) on the grid."""
+        return self._grid(self._arrival_v_inf, units.M_PER_S)
+
+    @property
+    def total_v_inf(self) -> Masked:
+        """Departure plus arrival v_inf (m/s) on the grid."""
+        return self._grid(self._departure_v_inf + self._arrival_v_inf, units.M_PER_S)
+
+    @property
+    def time_of_flight(self) -> Masked:
+        """Arrival minus launch date (s) on the grid; cells with tof <= 0 masked."""
+        return self._grid(self._tof, units.S)
+
+    @property
+    def v1(self) -> Masked:
+        """Heliocentric ICRF velocity on departure (m/s), (arrival, launch, 3)."""
+        return Masked(self.v1_si << units.M_PER_S, mask=np.broadcast_to(~self.valid[..., None], self.v1_si.shape))
+
+    @property
+    def v2(self) -> Masked:
+        """Heliocentric ICRF velocity on arrival (m/s), (arrival, launch, 3)."""
+        return Masked(self.v2_si << units.M_PER_S, mask=np.broadcast_to(~self.valid[..., None], self.v2_si.shape))
+
+    def _minimum(self, kind: str, merit: np.ndarray) -> PorkchopMinimum:
+        """The valid cell where `merit` is least (the first such cell in row-major order on ties)."""
+        flat = int(np.argmin(np.where(self.valid, merit, np.inf)))
+        row, col = np.unravel_index(flat, self.shape)
+        return PorkchopMinimum(kind, self.launch_dates[col], self.arrival_dates[row],
+                               float(self._departure_v_inf[row, col] ** 2), float(self._departure_v_inf[row, col]),
+                               float(self._arrival_v_inf[row, col]), float(self._tof[row, col]))
+
+    @cached_property
+    def minimum_c3(self) -> PorkchopMinimum:
+        """The cell of least launch energy C3."""
+        return self._minimum("C3", self._departure_v_inf)
+
+    @cached_property
+    def minimum_arrival_v_inf(self) -> PorkchopMinimum:
+        """The cell of least arrival v_inf."""
+        return self._minimum("arrival v_inf", self._arrival_v_inf)
+
+    @cached_property
+    def minimum_total(self) -> PorkchopMinimum:
+        """The cell of least departure plus arrival v_inf."""
+        return self._minimum("total v_inf", self._departure_v_inf + self._arrival_v_inf)
+
+    def minima(self) -> dict[str, PorkchopMinimum]:
+        """{name prefix ("min_c3_", ...): PorkchopMinimum} of the three figures of merit."""
+        return {prefix: getattr(self, attribute) for prefix, attribute in MINIMA.items()}
+
+    def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
+        """{prefix + name: Quantity} of each minimum (prefixes min_c3_, min_arrival_v_inf_, min_total_; names
+        MINIMUM_NAMES), or `only` those."""
+        table = {prefix + name: q for prefix, best in self.minima().items() for name, q in best.quantities().items()}
+        return quantity_table(table.__getitem__, list(table), only)
+
+    def _display_quantities(self) -> dict[str, u.Quantity]:
+        return {k: v for k, v in self.quantities().items() if not k.endswith("_jd_tdb")}
+
+    def __repr__(self) -> str:
+        """E.g. "Porkchop(Earth to Mars, launch 2026-09-01..2027-01-31 x arrival 2027-06-01..2028-03-01, 31 x 56
+        cells, min C3 = 8.86 km2 / s2 on 2026-11-05 -> 2027-09-02, ...)" on one line."""
+        best, slow = self.minimum_c3, self.minimum_arrival_v_inf
+        return display.one_line(
+            "Porkchop", f"{self.departure} to {self.target}",
+            f"launch {_date_text(self.launch_dates[0])}..{_date_text(self.launch_dates[-1])} x arrival "
+            f"{_date_text(self.arrival_dates[0])}..{_date_text(self.arrival_dates[-1])}",
+            f"{self.launch_dates.size} x {self.arrival_dates.size} dates",
+            f"min C3 = {display.summary(best.c3, digits=4)} ({_date_text(best.launch)} -> "
+            f"{_date_text(best.arrival)})",
+            f"min arrival v_inf = {display.summary(slow.arrival_v_inf, digits=4)} ({_date_text(slow.launch)} -> "
+            f"{_date_text(slow.arrival)})")

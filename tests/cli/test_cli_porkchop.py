@@ -1,0 +1,58 @@
+"""`orbits porkchop`: the tables, exact SI JSON with the dates, the picture, one-line errors with exit status 2."""
+
+import json
+
+import astropy.units as u
+import pytest
+from typer.testing import CliRunner
+
+from orbits import Porkchop
+from orbits_cli.main import app
+
+COARSE = ["--launch", "2026-09-01:2027-01-31", "--arrival", "2027-06-01:2028-03-01", "--step", "10 d"]
+
+
+def run(*args):
+    return CliRunner().invoke(app, ["porkchop", *args])
+
+
+def test_table_names_the_minima_and_their_dates():
+    result = run(*COARSE)
+    assert result.exit_code == 0, result.output
+    assert "least C3: 2026-10-31 -> 2027-08-20" in result.output and "9.183492" in result.output
+    assert "least arrival v_inf" in result.output and "least total v_inf" in result.output
+    assert "jd_tdb" not in result.output and "nan" not in result.output
+    assert max(map(len, result.output.splitlines())) <= 80
+
+
+def test_json_is_the_library_exactly_with_julian_dates():
+    result = run(*COARSE, "--format", "json")
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.output)
+    chart = Porkchop.between("Earth", "Mars", ("2026-09-01", "2027-01-31"), ("2027-06-01", "2028-03-01"),
+                             10 * u.day)
+    assert data["min_c3_c3"] == {"value": chart.minimum_c3.c3_si, "unit": "m2 / s2"}
+    assert data["min_c3_launch_jd_tdb"]["value"] == chart.minimum_c3.launch.tdb.jd
+    assert data["min_total_arrival_jd_tdb"]["value"] == chart.minimum_total.arrival.tdb.jd
+
+
+def test_plot_file(tmp_path):
+    target = tmp_path / "porkchop.png"
+    result = run(*COARSE, "--plot", str(target))
+    assert result.exit_code == 0, result.output
+    assert target.stat().st_size > 10_000
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--to", "Vulcan", *COARSE], "no ephemeris for 'Vulcan'"),
+    (["--launch", "2026-09-01", "--step", "10 d"], "--launch '2026-09-01': write START:END"),
+    (["--launch", "2028-01-01:2028-02-01", "--arrival", "2027-01-01:2027-03-01"], "no transfer has a positive"),
+    (["--launch", "2060-01-01:2060-02-01", "--arrival", "2060-06-01:2060-09-01", "--step", "10 d"], "outside DE421"),
+    ([*COARSE[:4], "--step", "-1 d"], "date step"),
+    ([*COARSE[:4], "--step", "5 kg"], "--step"),
+])
+def test_bad_input_is_one_line_and_exit_2(args, message):
+    result = run(*args)
+    assert result.exit_code == 2, result.output
+    lines = result.output.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("orbits: error:") and message in lines[0]
