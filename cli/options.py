@@ -85,8 +85,13 @@ def save_plot(draw: "Callable[[], tuple[Figure, Axes]]", path: str) -> None:
     matplotlib.use("Agg")
     from orbits.plot import save
 
+    import matplotlib.pyplot as plt
+
     fig, _ = draw()
-    save(fig, path)
+    try:
+        save(fig, path)
+    finally:
+        plt.close(fig)  # a command draws once; the figure is not kept
 
 
 class Units(StrEnum):

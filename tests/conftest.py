@@ -23,3 +23,14 @@ def _floating_point_errors_raise():
 def _heyoka_cache(tmp_path_factory):
     os.environ["HEYOKA_CACHE_DIR"] = str(tmp_path_factory.mktemp("heyoka-cache"))
     yield
+
+
+@pytest.fixture(autouse=True)
+def _close_figures():
+    """Close the figures a test leaves open (pyplot keeps every one), so that later tests, and the commands they
+    run in this process, never see matplotlib's too-many-figures warning (which the commands treat as an error)."""
+    yield
+    import sys
+
+    if "matplotlib.pyplot" in sys.modules:
+        sys.modules["matplotlib.pyplot"].close("all")

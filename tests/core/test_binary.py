@@ -212,8 +212,16 @@ def mp_companion(phi):
     """The positive root q of q**3 = phi (1 + q)**2 (q = m2 / m1, phi = f / m1), by mpmath at 60 digits."""
     with mpmath.workdps(60):
         phi = mpmath.mpf(phi)
-        roots = mpmath.polyroots([1, -phi, -2 * phi, -phi], maxsteps=500, extraprec=500)
-        return max(mpmath.re(r) for r in roots if abs(mpmath.im(r)) <= 1e-40 * abs(r))
+        # f(q) = q**3 - phi (1 + q)**2 is increasing and convex right of its one positive root (which exceeds
+        # phi / 3, where f'' = 6 q - 2 phi changes sign), so Newton from a point above the root, phi + 3 phi**(1/3)
+        # + 3, descends to it monotonically
+        q = phi + 3 * mpmath.cbrt(phi) + 3
+        for _ in range(400):
+            step = (q**3 - phi * (1 + q) ** 2) / (3 * q**2 - 2 * phi * (1 + q))
+            q -= step
+            if abs(step) <= mpmath.mpf(10) ** -55 * q:
+                return q
+        raise AssertionError(f"the mpmath reference did not converge for phi = {phi}")
 
 
 @pytest.mark.parametrize("phi", np.geomspace(1e-30, 1e30, 61))
