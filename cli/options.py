@@ -83,9 +83,9 @@ def save_plot(draw: "Callable[[], tuple[Figure, Axes]]", path: str) -> None:
     except ImportError:
         raise typer.BadParameter("--plot needs matplotlib: pip install 'orbits[plot]'") from None
     matplotlib.use("Agg")
-    from orbits.plot import save
-
     import matplotlib.pyplot as plt
+
+    from orbits.plot import save
 
     fig, _ = draw()
     try:
