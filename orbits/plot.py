@@ -23,11 +23,12 @@ if TYPE_CHECKING:
     from orbits.orbit import Orbit
 
 
-def _axes(ax):
+def _axes(ax, figsize=(6.4, 5.6)):
+    """(figure, axes): those of `ax`, or a new figure of `figsize` inches with one axes."""
     import matplotlib.pyplot as plt
 
     if ax is None:
-        fig, ax = plt.subplots(figsize=(6.4, 5.6), layout="constrained")
+        fig, ax = plt.subplots(figsize=figsize, layout="constrained")
         return fig, ax
     return ax.figure, ax
 

@@ -9,17 +9,14 @@ from typing import TYPE_CHECKING, Any
 import astropy.units as u
 import numpy as np
 
+from orbits import plot
+
 if TYPE_CHECKING:
     from orbits.mechanics import Collision, DampedOscillator, Pendulum, Projectile, Rolling, VerticalCircle
 
 
 def _axes(ax):
-    import matplotlib.pyplot as plt
-
-    if ax is None:
-        fig, ax = plt.subplots(figsize=(6.4, 4.8), layout="constrained")
-        return fig, ax
-    return ax.figure, ax
+    return plot._axes(ax, figsize=(6.4, 4.8))
 
 
 def _finish(ax, x_label, y_label):
