@@ -74,6 +74,16 @@ def parse_angle(text: str, name: str) -> u.Quantity:
     return parse_quantity(text, "angle", name, bare_unit=u.deg)
 
 
+def parse_direction(text: str, name: str) -> np.ndarray:
+    """A direction 'X,Y,Z' (plain numbers; a length unit is accepted and ignored) as a float64 (3,) array, finite
+    and not zero."""
+    numbers, _, unit = str(text).strip().partition(" ")
+    direction = parse_vector(f"{numbers} {unit or 'm'}", "length", name).value
+    if not np.any(direction):
+        raise OrbitDomainError(f"{name} = {text!r} is the zero vector; a direction needs a non-zero component")
+    return direction
+
+
 def parse_vector(text: str, kind: str, name: str) -> u.Quantity:
     """3-vector Quantity from "X,Y,Z UNIT" (e.g. "7000,0,0 km"), finite and of the given kind."""
     if not isinstance(text, str):

@@ -35,15 +35,8 @@ def command(
         revolutions=revolutions,
         branch=branch,
         prograde=not retrograde,
-        normal=None if normal is None else _direction(normal),
+        normal=None if normal is None else inputs.parse_direction(normal, "--normal"),
     )
     shown = f", {revolutions} revolutions ({branch} branch)" if revolutions else ""
     render.emit(f"Lambert transfer about {primary}{shown}", transfer.quantities(inputs.names(only)), fmt.value)
 
-
-def _direction(text):
-    """The --normal option as three numbers (a unit, if any, is only checked to be a length or dimensionless)."""
-    from orbits import inputs
-
-    numbers, _, unit = text.strip().partition(" ")
-    return inputs.parse_vector(f"{numbers} {unit or 'm'}", "length", "--normal").value

@@ -1,5 +1,5 @@
 """`orbits transfer`: impulsive manoeuvres between circular orbits (Hohmann, bi-elliptic, plane change, phasing)
-and a hyperbolic departure. A sub-application with one command per manoeuvre; main.py mounts it with
+a hyperbolic departure and a gravity assist. A sub-application with one command per manoeuvre; main.py mounts it with
 app.add_typer(transfer.app)."""
 
 from typing import Annotated
@@ -115,8 +115,31 @@ def departure(
     _emit(f"Departure from {primary}", result, only, fmt)
 
 
+def assist(
+    planet: Annotated[str, typer.Option("--planet", help=f"the planet flown past: {MASS_HELP}")],
+    v_in: Annotated[str, typer.Option("--v-in", help="the probe's heliocentric velocity before, 'X,Y,Z km/s'")],
+    v_planet: Annotated[str, typer.Option("--v-planet", help="the planet's heliocentric velocity, 'X,Y,Z km/s'")],
+    periapsis: Annotated[str, typer.Option(help="closest approach to the planet's centre, e.g. '200000 km'")],
+    normal: Annotated[str | None, typer.Option(
+        help="axis the excess velocity turns about (right hand), 'X,Y,Z' [default: +z]")] = None,
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """Gravity assist by patched conics (IX's elastic collision in the planet's frame): the excess velocity turns
+    by the flyby's deflection; the heliocentric velocity after, its change and the energy gained."""
+    from orbits import GravityAssist, inputs
+
+    result = GravityAssist.past(
+        mass_or_body(planet, "--planet"), inputs.parse_vector(v_in, "speed", "--v-in"),
+        inputs.parse_vector(v_planet, "speed", "--v-planet"), _length(periapsis, "--periapsis"),
+        normal=None if normal is None else inputs.parse_direction(normal, "--normal"),
+    )
+    _emit(f"Gravity assist past {planet}", result, only, fmt)
+
+
 app.command("hohmann")(reports_errors(displays(hohmann)))
 app.command("bi-elliptic")(reports_errors(displays(bi_elliptic)))
 app.command("plane-change")(reports_errors(displays(plane_change)))
 app.command("phasing")(reports_errors(displays(phasing)))
 app.command("departure")(reports_errors(displays(departure)))
+app.command("assist")(reports_errors(displays(assist)))

@@ -85,3 +85,25 @@ def test_bad_input_is_one_line_and_exit_2(args, message):
     assert result.exit_code == 2
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("orbits: error:") and message in lines[0], result.stderr
+
+
+def test_assist_gives_the_library_answer_in_json():
+    import astropy.units as u
+
+    from orbits import GravityAssist
+
+    args = ["transfer", "assist", "--planet", "Jupiter", "--v-in", "0,7.4,0 km/s", "--v-planet", "0,13.06,0 km/s",
+            "--periapsis", "200000 km", "--format", "json"]
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    expected = GravityAssist.past("Jupiter", [0, 7.4, 0] * u.km / u.s, [0, 13.06, 0] * u.km / u.s, 2e5 * u.km)
+    assert data["speed_gain"]["value"] == expected.speed_gain.to_value(u.m / u.s)
+    assert data["outgoing_velocity"]["value"] == expected.outgoing_velocity.to_value(u.m / u.s).tolist()
+
+
+def test_assist_refuses_a_zero_axis_in_one_line():
+    args = ["transfer", "assist", "--planet", "Jupiter", "--v-in", "0,7.4,0 km/s", "--v-planet", "0,13.06,0 km/s",
+            "--periapsis", "200000 km", "--normal", "0,0,0"]
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 2 and "zero vector" in result.output and len(result.output.strip().splitlines()) == 1
