@@ -31,6 +31,7 @@ from orbits.binary import Binary
 from orbits.constants import BODIES, EARTH_MEAN_RADIUS, STANDARD_GRAVITY, Body, body
 from orbits.core import escape as escape_core
 from orbits.core import twobody
+from orbits.core.checks import first_where
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
 
@@ -217,10 +218,10 @@ class SynchronousOrbit(display.Displayed):
         r, radius = np.broadcast_arrays(self.orbit_radius.to_value(units.M), self.body_radius)
         inside = r <= radius
         if np.any(inside):
-            index = tuple(np.argwhere(inside)[0])
+            bad, body_radius = first_where(inside, r, radius)
             raise OrbitDomainError(
-                f"synchronous orbit radius r = {float(r[index])!r} m lies inside the body (radius R = "
-                f"{float(radius[index])!r} m): the altitude r - R must be > 0 m, so there is no synchronous orbit"
+                f"synchronous orbit radius r = {bad!r} m lies inside the body (radius R = {body_radius!r} m): the "
+                f"altitude r - R must be > 0 m, so there is no synchronous orbit"
             )
         return r - radius << units.M
 
@@ -259,13 +260,12 @@ def max_elongation(inner: Body | str | u.Quantity, outer: Body | str | u.Quantit
     """
     r = _orbit_radius(inner, "inner orbit radius r")
     big_r = _orbit_radius(outer, "outer orbit radius R")
-    r, big_r = np.broadcast_arrays(r, big_r)
-    outside = r >= big_r
+    outside = np.asarray(r) >= np.asarray(big_r)
     if np.any(outside):
-        index = tuple(np.argwhere(outside)[0])
+        inner_r, outer_r = first_where(outside, r, big_r)
         raise OrbitDomainError(
-            f"inner orbit radius r = {float(r[index])!r} m is outside the allowed range (0, R) m with the outer "
-            f"radius R = {float(big_r[index])!r} m: the inner planet must orbit inside the observer's orbit"
+            f"inner orbit radius r = {inner_r!r} m is outside the allowed range (0, R) m with the outer "
+            f"radius R = {outer_r!r} m: the inner planet must orbit inside the observer's orbit"
         )
     return escape_core.max_elongation(r, big_r) << units.RAD
 

@@ -31,7 +31,7 @@ from orbits import display, inputs, units
 from orbits.constants import Body, body
 from orbits.core import assist as assist_core
 from orbits.core import manoeuvres as core
-from orbits.core.checks import check_finite
+from orbits.core.checks import check_finite, first_where
 from orbits.core.errors import OrbitDomainError
 from orbits.core.twobody import circular_speed
 from orbits.escape import CosmicVelocities
@@ -46,19 +46,12 @@ def _named(primary):
     return primary if isinstance(primary, Body) else None
 
 
-def _first(mask, *arrays):
-    """The values of `arrays` at the first True of `mask` (all broadcast together), as floats."""
-    mask, *arrays = np.broadcast_arrays(mask, *arrays)
-    k = tuple(np.argwhere(mask)[0])
-    return [float(a[k]) for a in arrays]
-
-
 def _orbit_radius(primary, value, name):
     """A circular orbit's radius (m): positive and, about a catalogued body, above its equatorial radius."""
     r = inputs.positive(value, units.M, name)
     named = _named(primary)
     if named is not None and np.any(r <= named.radius):
-        bad, = _first(r <= named.radius, r)
+        bad, = first_where(r <= named.radius, r)
         raise OrbitDomainError(
             f"{name} = {bad!r} m is inside {named.name} (allowed: above its radius {named.radius!r} m); an orbit "
             f"radius counts from the centre: add the radius to an altitude")
@@ -69,7 +62,7 @@ def _turn_angle(value, name):
     """An angle (rad) in [0, pi]."""
     angle = inputs.angle(value, name)
     if np.any((angle < 0) | (angle > np.pi)):
-        bad, = _first((angle < 0) | (angle > np.pi), angle)
+        bad, = first_where((angle < 0) | (angle > np.pi), angle)
         raise OrbitDomainError(f"{name} = {bad!r} rad is outside the allowed range [0, pi] rad (0 to 180 deg)")
     return angle
 
@@ -244,7 +237,7 @@ class BiElliptic(_Table):
         rb = inputs.positive(rb, units.M, "intermediate radius rb")
         low = rb <= np.maximum(r1, r2)
         if np.any(low):
-            bad, one, two = _first(low, rb, r1, r2)
+            bad, one, two = first_where(low, rb, r1, r2)
             raise OrbitDomainError(
                 f"intermediate radius rb = {bad!r} m is outside the allowed range (max(r1, r2), inf) m with "
                 f"r1 = {one!r} m and r2 = {two!r} m: the bi-elliptic apoapsis must lie above both orbits")
@@ -392,7 +385,7 @@ class Phasing(_Table):
         mu, r, angle, k = _fields(mu, r, angle, k)
         fraction = core.phasing_fraction(angle, k)
         if np.any(fraction >= MAX_PHASING_FRACTION):
-            bad, turns = _first(fraction >= MAX_PHASING_FRACTION, angle, k)
+            bad, turns = first_where(fraction >= MAX_PHASING_FRACTION, angle, k)
             raise OrbitDomainError(
                 f"phase = {bad!r} rad is outside the allowed range (-inf, {2 * np.pi * turns * MAX_PHASING_FRACTION!r})"
                 f" rad for {int(turns)} revolution(s): the phasing orbit would need a < r / 2; use more revolutions")
@@ -405,7 +398,7 @@ class Phasing(_Table):
             return
         low = self.phasing_periapsis.to_value(units.M)
         if np.any(low <= named.radius):
-            bad, = _first(low <= named.radius, low)
+            bad, = first_where(low <= named.radius, low)
             raise OrbitDomainError(
                 f"phasing periapsis = {bad!r} m is inside {named.name} (allowed: above its radius "
                 f"{named.radius!r} m): spread the phase over more revolutions")

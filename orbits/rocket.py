@@ -28,7 +28,7 @@ import numpy as np
 from orbits import display, inputs, units
 from orbits.constants import STANDARD_GRAVITY
 from orbits.core import rocket as rocket_core
-from orbits.core.checks import check_finite
+from orbits.core.checks import check_finite, first_where
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
 
@@ -180,11 +180,13 @@ class Rocket(display.Displayed):
         gravity = STANDARD_GRAVITY if g is None else inputs.positive(g, units.M / units.S**2, "gravity g")
         weight = self.ignition * np.asarray(gravity)[..., None]
         thrust = self._require_thrust("gravity loss")
-        if np.any(thrust <= weight):
-            k = tuple(np.argwhere(thrust <= weight)[0])
+        low = thrust <= weight
+        if np.any(low):
+            stage = np.argwhere(low)[0][-1] + 1
+            force, heavy = first_where(low, thrust, weight)
             raise OrbitDomainError(
-                f"stage {k[-1] + 1} thrust F = {float(thrust[k])!r} N is not above its weight at ignition m0 g = "
-                f"{float(weight[k])!r} N: a vertical ascent needs F > m0 g, so the rocket would not lift off")
+                f"stage {stage} thrust F = {force!r} N is not above its weight at ignition m0 g = {heavy!r} N: a "
+                f"vertical ascent needs F > m0 g, so the rocket would not lift off")
         return rocket_core.gravity_loss(gravity, self.burn_time.to_value(units.S)) << units.M_PER_S
 
     def vertical_ascent_speed(self, g: u.Quantity | None = None) -> u.Quantity:
@@ -217,13 +219,12 @@ def _thrust(thrust):
 
 def _require_burn(m0, mf):
     """Raise unless every initial mass exceeds its final mass (something is burnt)."""
-    m0, mf = np.broadcast_arrays(m0, mf)
-    bad = mf >= m0
+    bad = np.asarray(mf) >= np.asarray(m0)
     if np.any(bad):
-        k = tuple(np.argwhere(bad)[0])
+        final, initial = first_where(bad, mf, m0)
         raise OrbitDomainError(
-            f"final mass mf = {float(mf[k])!r} kg is outside the allowed range (0, m0) kg with the initial mass "
-            f"m0 = {float(m0[k])!r} kg: a rocket ends lighter than it starts")
+            f"final mass mf = {final!r} kg is outside the allowed range (0, m0) kg with the initial mass "
+            f"m0 = {initial!r} kg: a rocket ends lighter than it starts")
 
 
 ROCKET_NAMES = [

@@ -34,6 +34,14 @@ def check_eccentricity(
         )
 
 
+def first_where(mask: ArrayLike, *arrays: ArrayLike) -> list[float]:
+    """The values of `arrays` (floats) at the first True of `mask`, all broadcast together: what an error message
+    quotes for the first offending element of a batch."""
+    mask, *arrays = np.broadcast_arrays(mask, *arrays)
+    k = tuple(np.argwhere(mask)[0])
+    return [float(a[k]) for a in arrays]
+
+
 def require_positive(x: ArrayLike, name: str, unit: str) -> None:
     """Raise OrbitDomainError unless every x is finite and > 0; the message names x, its value, (0, inf) and unit."""
     x = np.asarray(x, dtype=float)
