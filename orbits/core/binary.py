@@ -72,7 +72,7 @@ def star_parameter(gm_other: ArrayLike, gm_total: ArrayLike) -> float | np.ndarr
 def semi_major_axis_from_period(period: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """a = (mu T**2 / (4 pi**2))**(1/3) = cbrt(mu (T / (2 pi))**2) (m) of a Kepler orbit of period T (s) with
     parameter mu (m**3/s**2): Kepler's third law solved for a (XXI.iii, XXII.iii)."""
-    return np.cbrt(mu * (period / (2.0 * np.pi)) ** 2)
+    return _dd.cbrt(mu * (period / (2.0 * np.pi)) ** 2)
 
 
 def kepler_constant(mu: ArrayLike) -> float | np.ndarray:

@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import ArrayLike
 
-from orbits.core._dd import two_product, two_sum
+from orbits.core._dd import cbrt, two_product, two_sum
 from orbits.core._roots import newton_in_bracket
 from orbits.core.checks import check_finite
 from orbits.core.errors import OrbitDomainError
@@ -627,7 +627,7 @@ def _power_scale_factor(tau, k):
     """a = (k tau)**(1/k): tau, sqrt(2 tau) or cbrt(1.5 tau)**2 (a rounded exponent 2/3 would cost |ln a| ulp)."""
     if k == 1:
         return tau
-    return np.sqrt(2.0 * tau) if k == 2 else np.cbrt(1.5 * tau) ** 2
+    return np.sqrt(2.0 * tau) if k == 2 else cbrt(1.5 * tau) ** 2
 
 
 def _power_comoving(z, k, hubble_distance):
@@ -696,7 +696,7 @@ def _flat_lookback(z, omega_m, omega_l, hubble_time):
 def _flat_scale_factor(tau, omega_m, omega_l):
     """a = (Omega_m / Omega_Lambda)**(1/3) sinh(w)**(2/3), w = 1.5 sqrt(Omega_Lambda) tau; exp form for w > 20."""
     w = 1.5 * math.sqrt(omega_l) * tau
-    ratio = np.cbrt(omega_m / omega_l)
+    ratio = cbrt(omega_m / omega_l)
     large = w > 20.0
-    small = ratio * np.cbrt(np.sinh(np.where(large, 0.0, w))) ** 2
+    small = ratio * cbrt(np.sinh(np.where(large, 0.0, w))) ** 2
     return np.where(large, ratio * np.exp((2.0 / 3.0) * (w - math.log(2.0))), small)

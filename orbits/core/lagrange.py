@@ -21,6 +21,7 @@ below mu ~ 1e-32 rho < 2**-52 and x_L1, x_L2 round onto the secondary: use the o
 import numpy as np
 from numpy.typing import ArrayLike
 
+from orbits.core._dd import cbrt
 from orbits.core._roots import halley_in_bracket
 from orbits.core.checks import check_finite
 from orbits.core.errors import OrbitDomainError
@@ -72,7 +73,7 @@ def _solve(coefficients, start, lo, hi, what, mu):
 
 def _hill_scale(mu):
     """(h, mu / h, mu / h**2, mu / h**3) with h = (mu/3)**(1/3), each quotient rounded once from mu."""
-    h = np.cbrt(mu) / np.cbrt(3.0)
+    h = cbrt(mu) / cbrt(3.0)
     q1 = mu / h
     q2 = q1 / h
     return h, q1, q2, q2 / h
