@@ -20,7 +20,7 @@ from orbits.core.errors import OrbitDomainError
 from orbits.core.friedmann import Friedmann
 
 EDS_ULPS = 4  # EDGE 58 / issue 9: EdS comoving distance, age and lookback time
-SPHERE_ULPS = 1  # cube roots correctly rounded (orbits.core._dd.cbrt), plus 1/3 of the argument's 2 roundings; measured 0.70
+SPHERE_ULPS = 1  # correctly rounded cube roots (_dd.cbrt) plus 1/3 of the argument's 2 roundings; measured 0.70
 QUADRATURE_RTOL = 2e-15  # measured worst 4e-16 over the models below
 T_H = 4.4e17  # a Hubble time (s) near H0 = 70 km/s/Mpc; tests also vary it
 D_H = 1.3e26  # a Hubble distance (m)
