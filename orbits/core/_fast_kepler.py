@@ -43,7 +43,10 @@ _SERIES_LIMIT = kepler._SERIES_LIMIT
 _LOG_FORM_LIMIT = kepler._LOG_FORM_LIMIT
 _PI_1 = 3.141592653589793  # pi = _PI_1 + _PI_2 to 2**-106
 _PI_2 = 1.2246467991473532e-16
-_ACCEPT = 2.0**-30  # relative Newton step below which pass 1 accepts an element
+_ACCEPT = kepler.FIXED_PASS_ACCEPT  # relative Newton step below which pass 1 accepts an element
+assert kepler.HYPERBOLIC_FIXED_STEPS == 4, "_hyperbolic_fixed writes its four steps out"
+_MARKLEY_SCALE = kepler._MARKLEY_SCALE
+_INVERSE_TWO_PI = kepler._INVERSE_TWO_PI
 _INVALID = 1 << 32
 
 
@@ -63,14 +66,14 @@ _COSH_MINUS_ONE = tuple(abs(c) for c in _ONE_MINUS_COS)  # (cosh x - 1) / x**2
 
 
 @jit(inline=True)
-def _reduce(M):
-    """(hi, lo) = M - 2 pi round(M / 2 pi) in [-pi, pi] as a double-double (kepler.reduce_mean_anomaly)."""
-    k = np.rint(M / _TWO_PI_1)
+def _reduce(M, M_lo):
+    """(hi, lo) = M + M_lo - 2 pi round(M / 2 pi) in [-pi, pi] as a double-double (kepler.reduce_two_pi)."""
+    k = np.rint(M * _INVERSE_TWO_PI)
     p1, e1 = _two_product(k, _TWO_PI_1)
     p2, e2 = _two_product(k, _TWO_PI_2)
     hi, lo = _two_sum(M - p1, -e1)
     hi, t = _two_sum(hi, -p2)
-    lo = lo + t - e2 - k * _TWO_PI_3
+    lo = lo + t - e2 - k * _TWO_PI_3 + M_lo
     hi, lo = _two_sum(hi, lo)
     shift = -1.0 if hi > np.pi else (1.0 if hi < -np.pi else 0.0)
     hi, t = _two_sum(hi + shift * _TWO_PI_1, shift * _TWO_PI_2)
@@ -99,14 +102,16 @@ def _elliptic_residual(x, m, m_lo, e, one_minus_e):
 
 @jit(inline=True)
 def _markley_starter(m, e):
-    """Markley (1995, Celest. Mech. 63, 101) starter for E in [0, pi] from m in [0, pi]: Pade sin, cubic."""
-    alpha = (3.0 * np.pi**2 + 1.6 * np.pi * (np.pi - m) / (1.0 + e)) / (np.pi**2 - 6.0)
+    """kepler.markley_starter: Markley's (1995, Celest. Mech. 63, 101) starter for E in [0, pi] from m in
+    [0, pi], written with two divisions."""
+    alpha = (3.0 * np.pi**2 + 1.6 * np.pi * (np.pi - m) / (1.0 + e)) * _MARKLEY_SCALE
     d = 3.0 * (1.0 - e) + alpha * e
     q = 2.0 * alpha * d * (1.0 - e) - m * m
     r = 3.0 * alpha * d * (d - 1.0 + e) * m + m * m * m
     w = _cbrt_approx(abs(r) + math.sqrt(q * q * q + r * r))
     w = w * w
-    return (2.0 * r * w / (w * w + w * q + q * q) + m) / d
+    denominator = w * w + w * q + q * q
+    return (2.0 * r * w + m * denominator) / (denominator * d)
 
 
 @jit(inline=True)
@@ -114,7 +119,7 @@ def _elliptic_fixed(M, e):
     """(E or NaN if not certified, 1 if (M, e) is outside the domain else 0): pass 1, branch free."""
     invalid = not (abs(M) <= _MAX_M and 0.0 <= e < 1.0)
     e = e + 0.0
-    hi, lo = _reduce(M)
+    hi, lo = _reduce(M, 0.0)
     sign = -1.0 if (hi < 0.0 or (hi == 0.0 and math.copysign(1.0, M) < 0.0)) else 1.0
     m, m_lo = abs(hi), sign * lo
     one_minus_e = 1.0 - e
@@ -209,7 +214,7 @@ def _halley(kind, x, lo, hi, a, b, c, d):
 def _elliptic_safeguarded(M, e):
     """Pass 2: E by safeguarded Halley from the cubic starter (kepler._solve_elliptic_positive)."""
     e = e + 0.0
-    hi, lo = _reduce(M)
+    hi, lo = _reduce(M, 0.0)
     sign = -1.0 if (hi < 0.0 or (hi == 0.0 and math.copysign(1.0, M) < 0.0)) else 1.0
     m, m_lo = abs(hi), sign * lo
     one_minus_e = 1.0 - e

@@ -1,23 +1,31 @@
-"""Compiled universal-variable propagator (numba): a port of orbits.core.propagate's algorithm.
+"""Compiled two-body propagator (numba): a port of orbits.core.propagate's algorithm.
 
 Imported only through orbits.core.propagate, when orbits.core._fast.use lets a batch run compiled. Every step
-is the NumPy version's, function for function (same names): period reduction of dt and alpha = 2 / r -
+is the NumPy version's, function for function (same names). The elliptic pass: A, 1 / a, n and n dt in
+double-double arithmetic (_elliptic_setup), Markley's and the local starter (_elliptic_starters), the better by
+Newton step length, one Halley and one Newton step on F(x) = m (_elliptic_residual), the certificate, the
+Lagrange f and g in x. The universal passes on the states it leaves: period reduction of dt and alpha = 2 / r -
 v**2 / mu in double-double arithmetic, scaling to |r0| = 1 and mu = 1, time reversal for dt < 0, the starter
 (_vallado_guess, _barker_guess, _starter), pass 1 (FIXED_STEPS bracketed Halley steps, _polish, the
 certificate), pass 2 on the uncertified states (_solve_universal: bracket grown by doubling, safeguarded
 Halley), the Stumpff formulas and the Lagrange f and g. A fix is made in propagate.py and ported here;
 tests/core/test_propagate.py and test_propagate_long_flights.py hold both paths to the same mpmath bounds.
-What is the kernel's own, all measured on the benchmark's mixed states:
-- Pass 1 runs branch-free on blocks of 256 states whose quantities sit in 1-D scratch rows, so LLVM
-  vectorises every loop (loops over (n, 3) arrays, or one loop storing six rows, it does not: 0.25 and
-  0.66 us per state instead of 0.11).
-- sin, cos, exp, the starter's logarithm (to 3e-6) and cube root (to 1e-11) come from
-  orbits.core._fast_math (vectorisable; sin, cos and exp within 1 ulp), so the two paths agree to rounding,
-  not bit for bit; its sin and cos are NaN beyond s = 64, which the iteration treats as an overshoot.
-- The starter takes 2.5-3 Halley steps on average and never more than 5 (62 % of hyperbolas took more
-  than 5 from Vallado's guess alone).
-One thread: 8.5 M states/s at 1e-15 worst position error (NumPy version: 0.7-0.9 M/s).
+What is the kernel's own:
+- Both passes run branch-free on blocks of 256 states whose quantities sit in 1-D scratch rows, so LLVM
+  vectorises every loop (loops over (n, 3) arrays, or one loop storing six rows, it does not). A selection
+  whose branch loads from memory (`row[j] if c else 0.0`) is not vectorised either: a product, or values
+  loaded before the selection, are (a third of the time, measured on the radial check).
+- sin, cos, exp, atan2 (to 2e-8, a starter), the starter's logarithm (to 3e-6) and cube root (to 5e-10,
+  division free) come from orbits.core._fast_math, so the two paths agree to rounding, not bit for bit;
+  its sin and cos are NaN beyond s = 64, which the iteration treats as an overshoot.
+- Divisions cost the vectorised loops as much as a dozen multiplications: the double-double quotients of
+  the elliptic setup share reciprocals (_dd_over), exact products are one FMA (_two_product), and the loops
+  free of error-free transformations let LLVM fuse a * b + c (jit(contract=True)).
+- The double-double setup takes about 40 % of the elliptic pass, its three trigonometric evaluations another
+  30 %; the universal passes cost several times more per state. Throughput against heyoka's lagrange_prop
+  is in the README's Benchmarks section (orbits bench propagate).
 """
+
 
 import math
 
@@ -25,11 +33,29 @@ import numpy as np
 
 from orbits.core import kepler
 from orbits.core._fast import jit
-from orbits.core._fast_kepler import _INVALID, _halley_step
-from orbits.core._fast_math import _cbrt_approx, _exp, _horner, _log_approx, _sin_cos, _two_product, _two_sum
+from orbits.core._fast_kepler import _INVALID, _halley_step, _markley_starter, _reduce, _trig
+from orbits.core._fast_math import (
+    _atan2_approx,
+    _cbrt_approx,
+    _exp,
+    _fast_two_sum,
+    _horner,
+    _log_approx,
+    _sin_cos,
+    _two_product,
+    _two_sum,
+)
 from orbits.core._roots import MAX_ITERATIONS
-from orbits.core.kepler import TWO_PI_1, TWO_PI_2
-from orbits.core.propagate import BRACKET_DOUBLINGS, FIXED_STEPS, SERIES_LIMIT
+from orbits.core.kepler import MAX_MEAN_ANOMALY, TWO_PI_1, TWO_PI_2
+from orbits.core.propagate import (
+    BRACKET_DOUBLINGS,
+    BRACKET_WIDTH,
+    ELLIPTIC_ERROR,
+    ELLIPTIC_STEP,
+    FIXED_STEPS,
+    SERIES_LIMIT,
+    SMALLEST_MEAN_MOTION_SQUARED,
+)
 from orbits.core.propagate import C2_SERIES as _C2_SERIES
 from orbits.core.propagate import C3_SERIES as _C3_SERIES
 
@@ -43,13 +69,13 @@ _SINH_MINUS_X = tuple(float(c) for c in kepler._SINH_MINUS_X)
 @jit(inline=True)
 def _dd_add(a_hi, a_lo, b_hi, b_lo):
     s, e = _two_sum(a_hi, b_hi)
-    return _two_sum(s, e + a_lo + b_lo)
+    return _fast_two_sum(s, e + a_lo + b_lo)
 
 
 @jit(inline=True)
 def _dd_mul(a_hi, a_lo, b_hi, b_lo):
     p, e = _two_product(a_hi, b_hi)
-    return _two_sum(p, e + a_hi * b_lo + a_lo * b_hi)
+    return _fast_two_sum(p, e + (a_hi * b_lo + a_lo * b_hi))
 
 
 @jit(inline=True)
@@ -65,6 +91,26 @@ def _dd_sqrt(a_hi, a_lo):
     s = math.sqrt(a_hi)
     p, e = _two_product(s, s)
     return _two_sum(s, ((a_hi - p) - e + a_lo) / (2.0 * s))
+
+
+@jit(inline=True)
+def _dd_over(a_hi, a_lo, b_hi, b_lo, inverse):
+    """_dd_div with the reciprocal inverse = 1 / b_hi given: quotient a_hi * inverse, corrected once from the exact
+    remainder (the same double-double quotient; a division costs the vectorised loops as much as a dozen
+    multiplications, and one reciprocal serves two quotients)."""
+    q = a_hi * inverse
+    p, e = _two_product(q, b_hi)
+    return _fast_two_sum(q, (((a_hi - p) - e + a_lo) - q * b_lo) * inverse)
+
+
+@jit(inline=True)
+def _dd_root(a_hi, a_lo):
+    """(_dd_sqrt(a_hi, a_lo), 1 / its high part), the correction multiplied by the reciprocal."""
+    s = math.sqrt(a_hi)
+    inverse = 1.0 / s
+    p, e = _two_product(s, s)
+    hi, lo = _fast_two_sum(s, ((a_hi - p) - e + a_lo) * (0.5 * inverse))
+    return hi, lo, inverse
 
 
 @jit(inline=True)
@@ -339,11 +385,70 @@ def _state_at(chi, scaled):
     )
 
 
-# Rows of the per-block scratch array of pass 1: the inputs and outputs de-interleaved, the scaled
-# problem and the iteration state. LLVM vectorises loops over 1-D rows, not over (n, 3) arrays.
+# --- the elliptic pass (propagate._elliptic_pass) ---------------------------------------------------
+
+
+@jit(inline=True)
+def _elliptic_setup(rx, ry, rz, vx, vy, vz, mu, dt):
+    """propagate._elliptic_setup for one state: (A, ec, es, m, n, back, eligible), in double-double
+    arithmetic as there (quotients by reciprocals: _dd_over)."""
+    inverse_mu = 1.0 / mu
+    r2_hi, r2_lo = _dd_dot(rx, ry, rz, rx, ry, rz)
+    r_hi, r_lo, inverse_r = _dd_root(r2_hi, r2_lo)
+    v2_hi, v2_lo = _dd_dot(vx, vy, vz, vx, vy, vz)
+    w_hi, w_lo = _dd_mul(r_hi, r_lo, v2_hi, v2_lo)
+    w_hi, w_lo = _dd_over(w_hi, w_lo, mu, 0.0, inverse_mu)
+    a_hi, a_lo = _dd_add(2.0, 0.0, -w_hi, -w_lo)
+    alpha_hi, alpha_lo = _dd_over(a_hi, a_lo, r_hi, r_lo, inverse_r)
+    square_hi, square_lo = _dd_mul(alpha_hi, alpha_lo, alpha_hi, alpha_lo)
+    cube_hi, cube_lo = _dd_mul(square_hi, square_lo, alpha_hi, alpha_lo)
+    n2_hi, n2_lo = _dd_mul(cube_hi, cube_lo, mu, 0.0)
+    n_hi, n_lo, _ = _dd_root(n2_hi, n2_lo)
+    m_hi, m_lo = _dd_mul(n_hi, n_lo, dt, 0.0)
+    eligible = alpha_hi > 0.0 and n2_hi >= SMALLEST_MEAN_MOTION_SQUARED and abs(m_hi) <= MAX_MEAN_ANOMALY
+    hi, lo = _reduce(m_hi if eligible else 0.0, m_lo if eligible else 0.0)
+    m = hi + lo
+    back = -1.0 if m < 0.0 else 1.0
+    es = back * (rx * vx + ry * vy + rz * vz) * math.sqrt(alpha_hi * inverse_mu)
+    return a_hi + a_lo, (1.0 - a_hi) - a_lo, es, abs(m), n_hi + n_lo, back, eligible
+
+
+@jit(inline=True)
+def _elliptic_residual(x, A, ec, es, m):
+    """propagate._elliptic_residual: (F - m, F', F'', sin x, 1 - cos x), x in [0, pi + 2] (_trig reflects
+    about pi beyond 2)."""
+    sin, x_minus_sin, one_minus_cos = _trig(x)
+    f = ((A * x - m) + ec * x_minus_sin) + es * one_minus_cos
+    df = (A + ec * one_minus_cos) + es * sin
+    d2f = ec * sin + es * (1.0 - one_minus_cos)
+    return f, df, d2f, sin, one_minus_cos
+
+
+@jit(inline=True)
+def _elliptic_starters(A, ec, es, m):
+    """propagate._elliptic_starters: (Markley's starter, the local starter, lo, hi); atan2 to 2e-8."""
+    e = math.sqrt(ec * ec + es * es)
+    E0 = _atan2_approx(es, ec)
+    M1 = (E0 - es) + m
+    turns = np.rint(M1 * (1.0 / TWO_PI_1))
+    M1 = M1 - turns * TWO_PI_1
+    markley = math.copysign(_markley_starter(abs(M1), min(e, 1.0)), M1) + turns * TWO_PI_1 - E0
+    discriminant = A * A + 2.0 * es * m
+    local = 2.0 * m / (A + math.sqrt(max(discriminant, 0.0)))
+    lo, hi = max(m - BRACKET_WIDTH * e, 0.0), m + BRACKET_WIDTH * e
+    return min(max(markley, lo), hi), min(max(local, lo), hi), lo, hi
+
+
+# Rows of the per-block scratch array. LLVM vectorises loops over 1-D rows, not over (n, 3) arrays.
 _RX, _RY, _RZ, _VX, _VY, _VZ, _MU, _DT = range(8)
-_TAU, _R0, _SIGMA0, _ALPHA, _GROW, _DECAY, _CHI, _LO, _HI, _LAST = range(8, 18)
+# the elliptic pass
+_A, _EC, _ES, _M, _N, _BACK, _LO, _HI, _X, _OK, _SIN, _OMC, _R_OVER_A = range(8, 21)
+_E_OUT = 21  # rows 21..26: r and v of the result
+_LOCAL = 27
+# the universal pass 1
+_TAU, _R0, _SIGMA0, _ALPHA, _GROW, _DECAY, _CHI, _LO_U, _HI_U, _LAST = range(8, 18)
 _OUT = 18  # rows 18..23: r and v of the result
+_ROWS = 28
 _BLOCK = 256  # states per block: the scratch rows stay in the L1 cache between the steps
 
 
@@ -359,12 +464,135 @@ def _load_block(first, n, r0, v0, mu, dt, scratch):
 
 
 @jit
+def _setup_elliptic_block(n, scratch):
+    """The elliptic problem of the block's states (vectorised; double-double, so without contraction).
+    Non-finite input and mu <= 0 are not eligible (they leave alpha <= 0, n**2 or n dt NaN or out of range), nor
+    are open orbits; radial states are set aside in _elliptic_positions. The universal passes then count the
+    invalid ones."""
+    rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
+    mu, dt = scratch[_MU], scratch[_DT]
+    a, ec, es, m, mean_motion, back = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M], scratch[_N], scratch[_BACK]
+    ok = scratch[_OK]
+    for j in range(n):
+        a[j], ec[j], es[j], m[j], mean_motion[j], back[j], eligible = _elliptic_setup(
+            rx[j], ry[j], rz[j], vx[j], vy[j], vz[j], mu[j], dt[j])
+        ok[j] = eligible
+
+
+@jit
+def _exclude_radial(n, scratch):
+    """Leave radial states (r x v = 0, which the NumPy version refuses) to the universal passes (vectorised; h
+    rounded as there, without contraction)."""
+    rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
+    ok = scratch[_OK]
+    for j in range(n):
+        hx, hy, hz = ry[j] * vz[j] - rz[j] * vy[j], rz[j] * vx[j] - rx[j] * vz[j], rx[j] * vy[j] - ry[j] * vx[j]
+        ok[j] = ok[j] * (hx * hx + hy * hy + hz * hz > 0.0)  # a product, not a conditional load: vectorised
+
+
+@jit(contract=True)
+def _start_elliptic_block(n, scratch):
+    """Both starters and the bracket (vectorised)."""
+    a, ec, es, m = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M]
+    lo, hi, x, local = scratch[_LO], scratch[_HI], scratch[_X], scratch[_LOCAL]
+    for j in range(n):
+        x[j], local[j], lo[j], hi[j] = _elliptic_starters(a[j], ec[j], es[j], m[j])
+
+
+@jit(contract=True)
+def _halley_elliptic_block(n, scratch):
+    """The better starter by Newton step length and one Halley step from it, kept in [lo, hi] (vectorised)."""
+    a, ec, es, m = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M]
+    lo, hi, x, local = scratch[_LO], scratch[_HI], scratch[_X], scratch[_LOCAL]
+    for j in range(n):
+        markley_j, local_j = x[j], local[j]  # loaded before the selection: a conditional load stops the vectoriser
+        f_m, df_m, d2f_m, _, _ = _elliptic_residual(markley_j, a[j], ec[j], es[j], m[j])
+        f_l, df_l, d2f_l, _, _ = _elliptic_residual(local_j, a[j], ec[j], es[j], m[j])
+        local_better = abs(f_l * df_m) < abs(f_m * df_l)  # |Newton step| from local < from Markley's
+        start = local_j if local_better else markley_j
+        f, df, d2f = (f_l, df_l, d2f_l) if local_better else (f_m, df_m, d2f_m)
+        x[j] = min(max(start - 2.0 * f * df / (2.0 * df * df - f * d2f), lo[j]), hi[j])
+
+
+@jit(contract=True)
+def _newton_elliptic_block(n, scratch):
+    """One Newton step, the certificate, sin x and 1 - cos x at the root and r / a (vectorised)."""
+    a, ec, es, m, x, ok = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M], scratch[_X], scratch[_OK]
+    sin_row, omc_row, r_over_a = scratch[_SIN], scratch[_OMC], scratch[_R_OVER_A]
+    for j in range(n):
+        f, df, d2f, sin, one_minus_cos = _elliptic_residual(x[j], a[j], ec[j], es[j], m[j])
+        step = f / df
+        root = x[j] - step
+        certified = abs(step) <= ELLIPTIC_STEP * root and abs(d2f) * step * step <= ELLIPTIC_ERROR * abs(df) * root
+        ok[j] = ok[j] > 0.0 and certified
+        sin, one_minus_cos = sin - step * (1.0 - one_minus_cos), one_minus_cos - step * sin
+        sin_row[j], omc_row[j] = sin, one_minus_cos
+        r_over_a[j] = (a[j] + ec[j] * one_minus_cos) + es[j] * sin
+
+
+@jit(contract=True)
+def _elliptic_positions(n, scratch):
+    """r = f r0 + g v0 into the output rows (propagate._elliptic_lagrange; vectorised)."""
+    rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
+    a, es, mean_motion, back = scratch[_A], scratch[_ES], scratch[_N], scratch[_BACK]
+    sin, one_minus_cos = scratch[_SIN], scratch[_OMC]
+    out_x, out_y, out_z = scratch[_E_OUT], scratch[_E_OUT + 1], scratch[_E_OUT + 2]
+    for j in range(n):
+        f = 1.0 - one_minus_cos[j] / a[j]
+        g = back[j] * (a[j] * sin[j] + es[j] * one_minus_cos[j]) / mean_motion[j]
+        out_x[j], out_y[j], out_z[j] = f * rx[j] + g * vx[j], f * ry[j] + g * vy[j], f * rz[j] + g * vz[j]
+
+
+@jit(contract=True)
+def _elliptic_velocities(n, scratch):
+    """v = f' r0 + g' v0 into the output rows (vectorised)."""
+    rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
+    a, mean_motion, back = scratch[_A], scratch[_N], scratch[_BACK]
+    sin, one_minus_cos, r_over_a = scratch[_SIN], scratch[_OMC], scratch[_R_OVER_A]
+    out_x, out_y, out_z = scratch[_E_OUT + 3], scratch[_E_OUT + 4], scratch[_E_OUT + 5]
+    for j in range(n):
+        f_dot = -back[j] * mean_motion[j] * sin[j] / (a[j] * r_over_a[j])
+        g_dot = 1.0 - one_minus_cos[j] / r_over_a[j]
+        out_x[j], out_y[j] = f_dot * rx[j] + g_dot * vx[j], f_dot * ry[j] + g_dot * vy[j]
+        out_z[j] = f_dot * rz[j] + g_dot * vz[j]
+
+
+@jit
+def _store_elliptic_block(first, n, scratch, r, v, pending, count):
+    """Copy the output rows into r, v; the states not certified go on the list `pending` for the universal
+    passes (from position count on). Returns the new count."""
+    for j in range(n):
+        i = first + j
+        for k in range(3):
+            r[i, k] = scratch[_E_OUT + k, j]
+            v[i, k] = scratch[_E_OUT + 3 + k, j]
+        if scratch[_OK, j] == 0.0:
+            pending[count] = i
+            count += 1
+    return count
+
+
+# --- the universal passes, on the states the elliptic pass leaves ---------------------------------
+
+
+@jit
+def _gather_block(index, first, n, r0, v0, mu, dt, scratch):
+    """Copy states index[first .. first + n - 1] into the input rows."""
+    for j in range(n):
+        i = index[first + j]
+        for k in range(3):
+            scratch[_RX + k, j] = r0[i, k]
+            scratch[_VX + k, j] = v0[i, k]
+        scratch[_MU, j], scratch[_DT, j] = mu[i], dt[i]
+
+
+@jit
 def _setup_block(n, scratch):
     """Scaled problem and starter of the block's states (vectorised); returns how many are invalid."""
     rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
     mu, dt = scratch[_MU], scratch[_DT]
     tau, r0, sigma0, alpha = scratch[_TAU], scratch[_R0], scratch[_SIGMA0], scratch[_ALPHA]
-    grow, decay, chi, lo, hi = scratch[_GROW], scratch[_DECAY], scratch[_CHI], scratch[_LO], scratch[_HI]
+    grow, decay, chi, lo, hi = scratch[_GROW], scratch[_DECAY], scratch[_CHI], scratch[_LO_U], scratch[_HI_U]
     invalid = 0
     for j in range(n):
         invalid += not _valid(rx[j], ry[j], rz[j], vx[j], vy[j], vz[j], mu[j], dt[j])
@@ -382,7 +610,7 @@ def _step_block(n, scratch):
     """One branch-free Halley step for each state of the block (vectorised)."""
     tau, r0, sigma0, alpha = scratch[_TAU], scratch[_R0], scratch[_SIGMA0], scratch[_ALPHA]
     grow, decay = scratch[_GROW], scratch[_DECAY]
-    chi, lo, hi, last = scratch[_CHI], scratch[_LO], scratch[_HI], scratch[_LAST]
+    chi, lo, hi, last = scratch[_CHI], scratch[_LO_U], scratch[_HI_U], scratch[_LAST]
     for j in range(n):
         chi[j], lo[j], hi[j], last[j] = _fixed_step(chi[j], lo[j], hi[j], tau[j], r0[j], sigma0[j], alpha[j],
                                                     grow[j], decay[j])
@@ -428,38 +656,34 @@ def _evaluate_velocities(n, scratch):
 
 
 @jit
-def _store_block(first, n, scratch, r, v):
-    """Copy the output rows into r[first:first + n], v[first:first + n]."""
+def _scatter_block(index, first, n, scratch, r, v):
+    """Copy the output rows into r[index[first:first + n]], v[...]."""
     for j in range(n):
-        i = first + j
+        i = index[first + j]
         for k in range(3):
             r[i, k] = scratch[_OUT + k, j]
             v[i, k] = scratch[_OUT + 3 + k, j]
 
 
 @jit
-def propagate(start, stop, r0, v0, mu, dt, r, v):
-    """r[i], v[i] at t0 + dt[i] from r0[i], v0[i] about mu[i]; returns invalid * 2**32 + unconverged.
-
-    Pass 1 runs FIXED_STEPS branch-free Halley steps on every state, block by block (vectorised);
-    states it leaves uncertified (NaN) run the safeguarded iteration in pass 2.
-    """
-    scratch = np.empty((_OUT + 6, _BLOCK))
+def _universal_passes(index, r0, v0, mu, dt, r, v, scratch):
+    """The universal passes on the states index[...]: pass 1 (FIXED_STEPS branch-free Halley steps, vectorised,
+    block by block), then pass 2 on those it leaves uncertified (NaN); returns invalid * 2**32 + unconverged."""
     invalid = 0
-    for first in range(start, stop, _BLOCK):
-        n = min(_BLOCK, stop - first)
-        _load_block(first, n, r0, v0, mu, dt, scratch)
+    for first in range(0, index.size, _BLOCK):
+        n = min(_BLOCK, index.size - first)
+        _gather_block(index, first, n, r0, v0, mu, dt, scratch)
         invalid += _setup_block(n, scratch)
         for _ in range(FIXED_STEPS):
             _step_block(n, scratch)
         _certify_block(n, scratch)
         _evaluate_positions(n, scratch)
         _evaluate_velocities(n, scratch)
-        _store_block(first, n, scratch, r, v)
+        _scatter_block(index, first, n, scratch, r, v)
     if invalid:
         return invalid * _INVALID
     unconverged = 0
-    for i in range(start, stop):
+    for i in index:
         if np.isnan(r[i, 0]):
             scaled = _scaled(r0[i, 0], r0[i, 1], r0[i, 2], v0[i, 0], v0[i, 1], v0[i, 2], mu[i], dt[i])
             grow, decay = _coefficients(scaled)
@@ -470,3 +694,35 @@ def propagate(start, stop, r0, v0, mu, dt, r, v):
                 v[i, k] = v0[i, k] if scaled[13] == 0.0 else state[3 + k]
             unconverged += np.isnan(chi)
     return unconverged
+
+
+@jit
+def propagate(start, stop, r0, v0, mu, dt, r, v):
+    """r[i], v[i] at t0 + dt[i] from r0[i], v0[i] about mu[i]; returns invalid * 2**32 + unconverged.
+
+    The elliptic pass on every state, block by block (vectorised); the universal passes on the states it does
+    not certify (open orbits, invalid input and any solve it cannot vouch for).
+    """
+    scratch = np.empty((_ROWS, _BLOCK))
+    pending = np.empty(stop - start, np.int64)
+    count = _elliptic_pass(start, stop, r0, v0, mu, dt, r, v, scratch, pending)
+    return _universal_passes(pending[:count], r0, v0, mu, dt, r, v, scratch)
+
+
+@jit
+def _elliptic_pass(start, stop, r0, v0, mu, dt, r, v, scratch, pending):
+    """The elliptic pass on states start .. stop - 1, block by block (vectorised): r, v of the certified ones;
+    the others listed in pending[:count]. Returns count."""
+    count = 0
+    for first in range(start, stop, _BLOCK):
+        n = min(_BLOCK, stop - first)
+        _load_block(first, n, r0, v0, mu, dt, scratch)
+        _setup_elliptic_block(n, scratch)
+        _exclude_radial(n, scratch)
+        _start_elliptic_block(n, scratch)
+        _halley_elliptic_block(n, scratch)
+        _newton_elliptic_block(n, scratch)
+        _elliptic_positions(n, scratch)
+        _elliptic_velocities(n, scratch)
+        count = _store_elliptic_block(first, n, scratch, r, v, pending, count)
+    return count

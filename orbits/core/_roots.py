@@ -31,19 +31,7 @@ def halley_in_bracket(
         idx = np.nonzero(active)
         if idx[0].size == 0:
             break
-        xa = x[idx]
-        f, df, d2f = residual(xa, idx)
-        lo[idx] = np.where(f < 0, xa, lo[idx])
-        hi[idx] = np.where(f > 0, xa, hi[idx])
-        with np.errstate(all="ignore"):
-            step = -f / (df - 0.5 * f * d2f / df)
-        new = xa + step
-        inside = np.isfinite(new) & (new >= lo[idx]) & (new <= hi[idx])
-        new = np.where(inside, new, 0.5 * (lo[idx] + hi[idx]))
-        moved = np.abs(new - xa)
-        x[idx] = new
-        done = (f == 0) | (inside & (moved <= 2.0**-26 * np.abs(new)))
-        done |= hi[idx] - lo[idx] <= 2.0**-52 * np.abs(new)
+        x[idx], lo[idx], hi[idx], done = halley_step(x[idx], lo[idx], hi[idx], *residual(x[idx], idx))
         active[idx] = ~done
     if np.any(active):
         i = tuple(np.argwhere(active)[0])
@@ -56,6 +44,22 @@ def halley_in_bracket(
     with np.errstate(all="ignore"):
         polished = x - f / df
     return np.where(np.isfinite(polished) & (f != 0), polished, x)
+
+
+def halley_step(
+    x: np.ndarray, lo: np.ndarray, hi: np.ndarray, f: np.ndarray, df: np.ndarray, d2f: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """One safeguarded Halley step of an increasing function: (x, lo, hi, converged). The bracket [lo, hi] first
+    moves to x by the sign of f = f(x); a step that leaves it is replaced by bisection. Converged when f == 0,
+    when the Halley step was below 2**-26 relative, or when the bracket is down to 2**-52 relative. The compiled
+    solvers' _halley_step (orbits/core/_fast_kepler.py) is its port."""
+    lo, hi = np.where(f < 0, x, lo), np.where(f > 0, x, hi)
+    with np.errstate(all="ignore"):
+        new = x - f / (df - 0.5 * f * d2f / df)
+    inside = np.isfinite(new) & (new >= lo) & (new <= hi)
+    new = np.where(inside, new, 0.5 * (lo + hi))
+    done = (f == 0) | (inside & (np.abs(new - x) <= 2.0**-26 * np.abs(new))) | (hi - lo <= 2.0**-52 * np.abs(new))
+    return new, lo, hi, done
 
 
 def newton_in_bracket(
