@@ -584,6 +584,7 @@ class GravityAssist(_Table):
         if np.any(off_plane) or axis.shape[-1:] != (3,):
             raise OrbitDomainError(f"normal = {axis.tolist()} must be a 3-vector not parallel to v_in - v_planet: "
                                    "it fixes the plane in which the excess velocity turns")
+        periapsis = _orbit_radius(planet, periapsis, "periapsis distance rp") << units.M  # not inside a named planet
         flyby = Flyby.past(planet, speed << units.M_PER_S, periapsis=periapsis)
         return cls(flyby, v_in, v_planet, axis)
 

@@ -100,8 +100,8 @@ class Rocket(display.Displayed):
                thrust: u.Quantity | None = None) -> "Rocket":
         """Stages from their propellant and structure (dry) masses (last axis: bottom stage first), the payload,
         and per-stage (or common) exhaust speed or Isp and thrust; each stage drops its structure at burnout."""
-        fuel = _mass(propellant, "stage propellant mass")
-        dry = _mass(structure, "stage structure mass")
+        fuel = np.atleast_1d(_mass(propellant, "stage propellant mass"))  # a scalar is one stage
+        dry = np.atleast_1d(_mass(structure, "stage structure mass"))
         ignition, burnout = rocket_core.stage_masses(dry, fuel, _mass(payload, "payload mass"))
         return cls._build(_exhaust(exhaust_speed, isp), ignition, burnout, _thrust(thrust))
 

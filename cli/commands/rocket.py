@@ -34,6 +34,11 @@ def command(
     single = m0 is not None or mf is not None
     if single == (propellant is not None or structure is not None or payload is not None):
         raise typer.BadParameter("give --m0 and --mf (one stage) or --propellant, --structure and --payload (stages)")
+    stage_count = 1 if single else len(propellant or ())
+    for option, values in (("--isp", isp), ("--exhaust-speed", exhaust_speed), ("--thrust", thrust)):
+        if values and len(values) not in (1, stage_count):
+            raise typer.BadParameter(f"{len(values)} {option} for {stage_count} stage{'s' * (stage_count > 1)}: "
+                                     f"give one for all stages or one per stage")
     speeds = {"exhaust_speed": _each(exhaust_speed, "speed", "--exhaust-speed")} if exhaust_speed else {}
     if isp:
         speeds["isp"] = _each(isp, "time", "--isp")

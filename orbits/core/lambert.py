@@ -481,8 +481,9 @@ def _velocities(geo, shape, x, y, lam, k, sigma, rho, gamma, s):
     """Izzo's eq. (14)-(15) with 1 -+ rho = sigma**2 / (1 +- rho) and y + lambda x = k / (y - lambda x) where they
     would cancel; the Solution in the broadcast shape."""
     r1, r2 = (np.broadcast_to(a, shape).reshape(-1) for a in geo[:2])
-    plus = np.where(rho >= 0, 1.0 + rho, sigma * sigma / (1.0 - rho))  # 1 + rho
-    minus = np.where(rho >= 0, sigma * sigma / (1.0 + rho), 1.0 - rho)  # 1 - rho
+    # each branch divides by the larger of 1 + rho and 1 - rho, so neither can be zero (np.where evaluates both)
+    plus = np.where(rho >= 0, 1.0 + rho, sigma * sigma / np.where(rho >= 0, 1.0, 1.0 - rho))  # 1 + rho
+    minus = np.where(rho >= 0, sigma * sigma / np.where(rho >= 0, 1.0 + rho, 1.0), 1.0 - rho)  # 1 - rho
     ly = lam * y
     lx = lam * x
     tangential = gamma * sigma * np.where(lx < 0, k / np.where(lx < 0, y - lx, 1.0), y + lx)

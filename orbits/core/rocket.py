@@ -14,7 +14,8 @@ v_e = |v_rel| this is Tsiolkovsky's dv = v_e ln(m0 / mf), and at constant thrust
 
 The logarithm of a ratio near 1 is formed as log1p((m2 - m1) / m1), exact to a few ulp for every ratio
 (tests/core/test_rocket.py: <= 2 ulp against mpmath); the burns at constant thrust are checked against a heyoka
-integration of m dv/dt = -R v_rel, dm/dt = -R (tests/validation/test_manoeuvres_integration.py, 1e-15).
+integration of m dv/dt = -R v_rel, dm/dt = -R, and mass gain likewise with the signs of R and v_rel
+(tests/validation/test_manoeuvres_integration.py, 1e-15).
 """
 
 import numpy as np

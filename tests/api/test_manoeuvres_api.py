@@ -243,3 +243,5 @@ def test_gravity_assist_errors():
         GravityAssist.past("Jupiter", [0, 0, 5] * KMS, [0, 0, 0] * KMS, 1e5 * u.km)
     with pytest.raises(TypeError, match="has no unit"):
         GravityAssist.past("Jupiter", [0, 5, 0], [0, 0, 0] * KMS, 1e5 * u.km)
+    with pytest.raises(OrbitDomainError, match="periapsis distance rp = 2000000.0 m is inside Jupiter"):
+        GravityAssist.past("Jupiter", [0, 7.4, 0] * KMS, [0, 13.06, 0] * KMS, 2000 * u.km)

@@ -53,6 +53,8 @@ def test_rocket_single_and_staged():
     expected = 3000 * (math.log(106 / 26) + math.log(18 / 3))
     assert staged["delta_v"]["value"] == pytest.approx(expected, rel=1e-15)
     assert staged["stage_delta_v"]["value"] == pytest.approx([3000 * math.log(106 / 26), 3000 * math.log(6)])
+    alone = run_json("rocket", "--propellant", "80 t", "--structure", "8 t", "--payload", "1 t", "--isp", "300 s")
+    assert alone["delta_v"]["value"] == pytest.approx(300 * 9.80665 * math.log(89 / 9), rel=1e-15)  # one stage
 
 
 def test_tables_fit_80_columns():
@@ -79,6 +81,12 @@ def test_tables_fit_80_columns():
     (["rocket", "--m0", "2 t", "--propellant", "1 t", "--isp", "300 s"], "give --m0 and --mf"),
     (["rocket", "--propellant", "1 t", "--structure", "1 t", "--structure", "1 t", "--payload", "1 t",
       "--isp", "300 s"], "1 --propellant but 2 --structure"),
+    (["rocket", "--m0", "2 t", "--mf", "1 t", "--isp", "300 s", "--isp", "200 s"], "2 --isp for 1 stage"),
+    (["rocket", "--propellant", "1 t", "--propellant", "1 t", "--structure", "1 t", "--structure", "1 t",
+      "--payload", "1 t", "--isp", "300 s", "--thrust", "1 MN", "--thrust", "1 MN", "--thrust", "1 MN"],
+     "3 --thrust for 2 stages"),
+    (["transfer", "assist", "--planet", "Jupiter", "--v-in", "0,7.4,0 km/s", "--v-planet", "0,13.06,0 km/s",
+      "--periapsis", "2000 km"], "periapsis distance rp = 2000000.0 m is inside Jupiter"),
 ])
 def test_bad_input_is_one_line_and_exit_2(args, message):
     result = runner.invoke(app, args)

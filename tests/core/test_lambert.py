@@ -116,8 +116,8 @@ CASES = hard_cases()
 
 @pytest.mark.parametrize("case", CASES, ids=[c.name for c in CASES])
 def test_hard_cases_reach_r2(case, path):
-    """Angles within 1e-8 of 0, pi and 2 pi, exactly pi, parabolic tof, N = 1 and 5 at T_min (both branches),
-    very short and very long flights, unit and SI scale: within 1e-13 |r2|."""
+    """Angles within 1e-8 of 0, pi and 2 pi and within 1e-12 and 1e-15 of 0 and 2 pi, exactly pi, parabolic tof,
+    N = 1 and 5 at T_min (both branches), very short and very long flights, unit and SI scale: within 1e-13 |r2|."""
     solution = lambert.solve(case.r1, case.r2, case.tof, case.mu, case.revolutions, case.branch, case.prograde,
                              case.normal)
     error = arrival_error(case.r1, solution.v1, case.r2, case.tof, case.mu)
@@ -130,7 +130,7 @@ def test_hard_cases_summary():
     for c in CASES:
         v1 = lambert.solve(c.r1, c.r2, c.tof, c.mu, c.revolutions, c.branch, c.prograde, c.normal).v1
         errors.append(arrival_error(c.r1, v1, c.r2, c.tof, c.mu))
-    assert np.median(errors) < 5e-15 and max(errors) < 2e-13  # measured 5.9e-16 and 2.1e-14
+    assert np.median(errors) < 5e-15 and max(errors) < 1e-13  # measured 5.9e-16 and 2.7e-14 over the 76 cases
 
 
 def random_problem(rng):

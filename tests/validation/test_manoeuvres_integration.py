@@ -13,36 +13,41 @@ import pytest
 from orbits import BiElliptic, Departure, Hohmann, Phasing, PlaneChange, Rocket
 from orbits.validate.impulses import check_assist, check_plan
 
+#: name -> (impulse plan, bound on the worst of position, velocity, a, e and i against the closed form). Bounds are
+#: 10x the worse backend measured: the bi-elliptic transfer's ellipses out to 30 r1 amplify the rounding of the
+#: burn times and kicks alike in both backends; a plane change keeps every element to its last bits.
 MANOEUVRES = {
-    "hohmann LEO-GEO": lambda: Hohmann.between("Earth", 6678 * u.km, 42164 * u.km).impulse_plan(1 * u.h),
-    "hohmann GEO-LEO, 40 deg plane change at GEO": lambda: Hohmann.between(
+    "hohmann LEO-GEO": (lambda: Hohmann.between("Earth", 6678 * u.km, 42164 * u.km).impulse_plan(1 * u.h),
+                        6e-14),  # measured 6.0e-15
+    "hohmann GEO-LEO, 40 deg plane change at GEO": (lambda: Hohmann.between(
         "Earth", 42164 * u.km, 6678 * u.km, inclination_change=40 * u.deg).impulse_plan(10 * u.min),
-    "hohmann LEO-GEO, 28.5 deg at GEO": lambda: Hohmann.between(
+        1.5e-13),  # measured 1.4e-14
+    "hohmann LEO-GEO, 28.5 deg at GEO": (lambda: Hohmann.between(
         "Earth", 6678 * u.km, 42164 * u.km, inclination_change=28.5 * u.deg).impulse_plan(10 * u.min),
-    "bi-elliptic 15x via 30x": lambda: BiElliptic.between(
-        "Earth", 7000 * u.km, 105000 * u.km, 210000 * u.km).impulse_plan(1 * u.h),
-    "plane change 30 deg": lambda: PlaneChange.at("Earth", 7000 * u.km, 30 * u.deg).impulse_plan(30 * u.min),
-    "phasing 20 deg ahead, 2 revolutions": lambda: Phasing.to(
-        "Earth", 7000 * u.km, 20 * u.deg, 2).impulse_plan(10 * u.min),
-    "phasing 60 deg behind": lambda: Phasing.to("Earth", 7000 * u.km, -60 * u.deg).impulse_plan(10 * u.min),
-    "departure v_inf 3 km/s": lambda: Departure.to_excess_speed(
-        "Earth", 6678 * u.km, 3 * u.km / u.s).impulse_plan(1 * u.d),
-    "heliocentric Hohmann Earth-Mars": lambda: Hohmann.between(
-        "Sun", 1 * u.AU, 1.523679 * u.AU).impulse_plan(30 * u.d),
+        5e-14),  # measured 5.2e-15
+    "bi-elliptic 15x via 30x": (lambda: BiElliptic.between(
+        "Earth", 7000 * u.km, 105000 * u.km, 210000 * u.km).impulse_plan(1 * u.h), 1.5e-12),  # measured 1.5e-13
+    "plane change 30 deg": (lambda: PlaneChange.at("Earth", 7000 * u.km, 30 * u.deg).impulse_plan(30 * u.min),
+                            2e-15),  # measured 2.2e-16
+    "phasing 20 deg ahead, 2 revolutions": (lambda: Phasing.to(
+        "Earth", 7000 * u.km, 20 * u.deg, 2).impulse_plan(10 * u.min), 9e-14),  # measured 8.9e-15
+    "phasing 60 deg behind": (lambda: Phasing.to("Earth", 7000 * u.km, -60 * u.deg).impulse_plan(10 * u.min),
+                              1.5e-14),  # measured 1.6e-15
+    "departure v_inf 3 km/s": (lambda: Departure.to_excess_speed(
+        "Earth", 6678 * u.km, 3 * u.km / u.s).impulse_plan(1 * u.d), 2e-14),  # measured 2.0e-15
+    "heliocentric Hohmann Earth-Mars": (lambda: Hohmann.between(
+        "Sun", 1 * u.AU, 1.523679 * u.AU).impulse_plan(30 * u.d), 1.5e-14),  # measured 1.6e-15
 }
 
 
 @pytest.mark.parametrize("name", list(MANOEUVRES))
 def test_every_manoeuvre_lands_on_the_predicted_orbit(name):
-    """Final position, velocity, a, e and i against the closed form, both backends: worst measured 1.5e-13
-    (the bi-elliptic transfer: its long ellipses out to 30 r1 amplify the rounding of the burn times and kicks
-    alike in both backends); the others <= 1.5e-14."""
-    checks = check_plan(MANOEUVRES[name]())
+    """Final position, velocity, a, e and i against the closed form, both backends, each within its bound above
+    (the issue asks for 1e-12)."""
+    plan, tolerance = MANOEUVRES[name]
+    checks = check_plan(plan())
     assert [c.backend for c in checks] == ["rebound", "heyoka"]
-    for check in checks:
-        assert check.worst < 1e-12, (check.backend, check)
-    tolerance = 1e-12 if name.startswith("bi-elliptic") else 1e-13  # measured 1.5e-13 and 1.5e-14
-    assert max(c.worst for c in checks) < tolerance
+    assert max(c.worst for c in checks) < tolerance, [(c.backend, c.worst) for c in checks]
 
 
 def test_a_wrong_burn_is_caught():
@@ -127,3 +132,20 @@ def test_gravity_assist_agrees_to_the_order_of_the_mass_ratio(mass_ratio, measur
         assert check.error > measured / 10  # the patched conic is an approximation: the difference is real
     rebound, heyoka = (c.delta_v for c in checks)
     assert np.linalg.norm(rebound - heyoka) < 1e-9 * np.linalg.norm(heyoka)
+
+
+@pytest.mark.parametrize("m1, m2, v_rel", [(1.0, 2.0, 1.0), (500.0, 501.0, -30.0), (3.0, 4e3, 7.5)])
+def test_mass_gain_against_heyoka(m1, m2, v_rel):
+    """X.i with ERRATA #16: a body taking in mass at rate R that arrives at v_rel relative to it obeys
+    m dv/dt = R v_rel, dm/dt = R (the integrator above with flow -R and exhaust -v_rel), so v2 - v1 =
+    v_rel ln(m2 / m1) (orbits.core.rocket.velocity_change): measured within 2.2e-16 relative."""
+    from orbits.core.rocket import velocity_change
+
+    ta = variable_mass_integrator()
+    rate = 0.37
+    ta.time = 0.0
+    ta.state[:] = [0.0, 0.0, m1]
+    ta.pars[:] = [-rate, -v_rel, 0.0]
+    ta.propagate_until((m2 - m1) / rate)
+    assert ta.state[2] == pytest.approx(m2, rel=1e-15)
+    assert ta.state[1] == pytest.approx(velocity_change(v_rel, m1, m2), rel=2e-15)
