@@ -52,10 +52,12 @@ class MeanElements:
 class Body:
     """A named body: GM (m3/s2), mass (kg), equatorial radius (m), sidereal rotation period (s), each sourced.
 
-    `parent` is the body it orbits (None for the Sun), `kind` one of KINDS, `j2` the unnormalised second zonal
-    harmonic at the reference radius `j2_radius` (m) where one is published, `orbit` J2000 mean elements where
-    the catalogue has them. A retrograde rotator (Venus, Uranus, Pluto, Triton's primary aside) has
-    `retrograde=True`; the period is always positive.
+    `gm` is the body alone (what an orbit about it feels); `system_gm` the body with its moons (what its
+    barycentre carries, and what DE421's Jupiter-Pluto points stand for), where it differs. `parent` is the
+    body it orbits (None for the Sun), `kind` one of KINDS, `j2` the unnormalised second zonal harmonic at the
+    reference radius `j2_radius` (m) where one is published, `orbit` J2000 mean elements where the catalogue has
+    them. A retrograde rotator (Venus, Uranus, Pluto, Triton's primary aside) has `retrograde=True`; the period
+    is always positive.
     """
 
     name: str
@@ -69,11 +71,17 @@ class Body:
     j2: float | None = None
     j2_radius: float | None = None
     retrograde: bool = False
+    system_gm: float | None = None
 
     @property
     def mass(self) -> float:
         """M = GM / G (kg)."""
         return self.gm / G
+
+    @property
+    def barycentre_gm(self) -> float:
+        """GM (m3/s2) of the body and its moons: system_gm where the catalogue has one, else gm."""
+        return self.gm if self.system_gm is None else self.system_gm
 
 
 #: the kinds of body in the catalogue
@@ -86,7 +94,9 @@ _KM3 = 1e9  # km3/s2 -> m3/s2
 _IAU2015 = "IAU 2015 Resolution B3 nominal value"
 _DE430 = "JPL DE430, Folkner et al. (2014), IPN Progress Report 42-196, Table 8"
 _WGCCRE = "IAU WGCCRE 2015, Archinal et al. (2018), Celest. Mech. Dyn. Astr. 130:22"
-_SSD_SAT = "JPL Solar System Dynamics, planetary satellite physical parameters (satellite ephemeris GMs)"
+_HORIZONS = ("JPL Horizons mass file gm_Horizons.pck, version 3.0 of 2017-05-09 (J. Giorgini): planets alone from "
+             "the satellite ephemerides MAR097, JUP340, SAT393, URA111, NEP081, PLU055")
+_HORIZONS_MOON = _HORIZONS.replace("planets alone", "moons")
 _STANDISH = "Standish (1992) J2000 mean elements, Table 1 (valid 1800-2050)"
 
 
@@ -104,15 +114,18 @@ def _standish(a_au, e, inc, mean_longitude, perihelion_longitude, node):
 
 
 def _planet(name, gm, gm_source, radius_km, rotation_days, rotation_source, orbit, *, j2=None, j2_radius_km=None,
-            j2_source="", retrograde=False, kind="planet"):
+            j2_source="", retrograde=False, kind="planet", system_gm_km3=None):
     source = f"GM: {gm_source}; radius: {_WGCCRE if name != 'Earth' else _IAU2015}; rotation: {rotation_source}"
     if j2 is not None:
         source += f"; J2: {j2_source}"
+    if system_gm_km3 is not None:
+        source += f"; system GM: {_DE430}"
     return Body(name, gm, radius_km * _KM, rotation_days * _DAY, source, orbit, "Sun", kind, j2,
-                None if j2_radius_km is None else j2_radius_km * _KM, retrograde)
+                None if j2_radius_km is None else j2_radius_km * _KM, retrograde,
+                None if system_gm_km3 is None else system_gm_km3 * _KM3)
 
 
-def _moon(name, parent, gm_km3, radius_km, rotation_days, gm_source=_SSD_SAT, kind="moon"):
+def _moon(name, parent, gm_km3, radius_km, rotation_days, gm_source=_HORIZONS_MOON, kind="moon"):
     """A synchronously rotating moon (rotation period = orbital period), GM in km3/s2, mean radius in km."""
     source = f"GM: {gm_source}; mean radius: {_WGCCRE}; rotation: synchronous, the sidereal orbital period"
     return Body(name, gm_km3 * _KM3, radius_km * _KM, rotation_days * _DAY, source, None, parent, kind)
@@ -126,34 +139,41 @@ _CATALOGUE = [
     _planet("Venus", 324_858.592 * _KM3, _DE430, 6051.8, 243.0185, "WGCCRE 2015 (-1.4813688 deg/d)",
             _standish(0.72333566, 0.00677672, 3.39467605, 181.97909950, 131.60246718, 76.67984255), retrograde=True),
     Body("Earth", 3.986004e14, 6.3781e6, SIDEREAL_DAY,
-         f"GM and equatorial radius: {_IAU2015}; rotation: IERS sidereal day; J2: IERS Conventions (2010), Table 1.1",
+         f"GM and equatorial radius: {_IAU2015}; rotation: IERS sidereal day; J2: IERS Conventions (2010), Table 1.1; "
+         f"system GM (Earth and Moon): {_DE430}",
          MeanElements("Sun", 1.00000261 * AU, 0.01671123, _deg(0.00001531), _deg(180.0),
                       _deg(102.93768193 - 180.0 + 360.0), _deg(100.46457166 - 102.93768193),
                       _STANDISH + ", Earth-Moon barycentre (I = -0.00001531 deg written as +I with the node at 180)"),
-         "Sun", "planet", 1.0826359e-3, 6_378_136.6),
-    _planet("Mars", 42_828.375214 * _KM3, _DE430 + " (Mars system)", 3396.19, 1.02595676,
+         "Sun", "planet", 1.0826359e-3, 6_378_136.6, system_gm=403_503.235502259810 * _KM3),
+    _planet("Mars", 42_828.37362069909 * _KM3, _HORIZONS, 3396.19, 1.02595676,
             "WGCCRE 2015 (350.891982 deg/d)",
             _standish(1.52371034, 0.09339410, 1.84969142, -4.55343205, -23.94362959, 49.55953891),
-            j2=1.95545e-3, j2_radius_km=3396.0, j2_source="Konopliv et al. (2016), MRO120D, Icarus 274"),
+            j2=1.95545e-3, j2_radius_km=3396.0, j2_source="Konopliv et al. (2016), MRO120D, Icarus 274",
+            system_gm_km3=42_828.375214),
     Body("Jupiter", 1.2668653e17, 7.1492e7, 9.925 * 3600.0,
-         f"GM and equatorial radius: {_IAU2015}; rotation: System III 9.925 h; J2: Iess et al. (2018), Nature 555",
+         f"GM and equatorial radius: {_IAU2015}; rotation: System III 9.925 h; J2: Iess et al. (2018), Nature 555; "
+         f"system GM: {_DE430}",
          _standish(5.20288700, 0.04838624, 1.30439695, 34.39644051, 14.72847983, 100.47390909),
-         "Sun", "planet", 14_696.572e-6, 71_492e3),
-    _planet("Saturn", 37_940_585.2 * _KM3, _DE430 + " (Saturn system)", 60268.0, 10.656222 / 24.0,
+         "Sun", "planet", 14_696.572e-6, 71_492e3, system_gm=126_712_764.8 * _KM3),
+    _planet("Saturn", 37_931_207.23493890 * _KM3, _HORIZONS, 60268.0, 10.656222 / 24.0,
             "WGCCRE 2015 System III (810.7939024 deg/d)",
             _standish(9.53667594, 0.05386179, 2.48599187, 49.95424423, 92.59887831, 113.66242448),
-            j2=16_290.573e-6, j2_radius_km=60330.0, j2_source="Iess et al. (2019), Science 364"),
-    _planet("Uranus", 5_794_548.6 * _KM3, _DE430 + " (Uranus system)", 25559.0, 17.24 / 24.0,
+            j2=16_290.573e-6, j2_radius_km=60330.0, j2_source="Iess et al. (2019), Science 364",
+            system_gm_km3=37_940_585.2),
+    _planet("Uranus", 5_793_951.322279009 * _KM3, _HORIZONS, 25559.0, 17.24 / 24.0,
             "WGCCRE 2015 (-501.1600928 deg/d)",
             _standish(19.18916464, 0.04725744, 0.77263783, 313.23810451, 170.95427630, 74.01692503),
-            retrograde=True),
-    _planet("Neptune", 6_836_527.10058 * _KM3, _DE430 + " (Neptune system)", 24764.0, 16.11 / 24.0,
+            retrograde=True,
+            system_gm_km3=5_794_548.6),
+    _planet("Neptune", 6_835_099.502439672 * _KM3, _HORIZONS, 24764.0, 16.11 / 24.0,
             "WGCCRE 2015 (536.3128492 deg/d)",
-            _standish(30.06992276, 0.00859048, 1.77004347, -55.12002969, 44.96476227, 131.78422574)),
-    _planet("Pluto", 977.0 * _KM3, _DE430 + " (Pluto-Charon system)", 1188.3, 6.3872273,
+            _standish(30.06992276, 0.00859048, 1.77004347, -55.12002969, 44.96476227, 131.78422574),
+            system_gm_km3=6_836_527.10058),
+    _planet("Pluto", 869.3390780381926 * _KM3, _HORIZONS, 1188.3, 6.3872273,
             "WGCCRE 2015 (-56.3625225 deg/d)",
             _standish(39.48211675, 0.24882730, 17.14001206, 238.92903833, 224.06891629, 110.30393684),
-            retrograde=True, kind="dwarf planet"),
+            retrograde=True, kind="dwarf planet",
+            system_gm_km3=977.0),
     Body("Ceres", 62.6284 * _KM3, 469.7e3, 9.074170 / 24.0 * _DAY,
          f"GM: Park et al. (2016), Nature 537 (Dawn); mean radius and rotation (952.1532635 deg/d): {_WGCCRE}",
          None, "Sun", "dwarf planet"),
@@ -163,20 +183,20 @@ _CATALOGUE = [
     Body("Eris", 1.67e22 * G, 1163e3, 15.786 * _DAY,
          "GM: G x mass 1.67e22 kg, Brown & Schaller (2007), Science 316; radius: Sicardy et al. (2011), Nature 478; "
          "rotation: Szakats et al. (2023), A&A 669 (synchronous with Dysnomia)", None, "Sun", "dwarf planet"),
-    Body("Moon", 4.9028000661e12, 1.7374e6, 27.321661 * _DAY,
+    Body("Moon", 4_902.8000661637961 * _KM3, 1.7374e6, 27.321661 * _DAY,
          f"GM: {_DE430}; radius: {_WGCCRE}; rotation: synchronous, the sidereal month 27.321661 d",
          MeanElements("Earth", 3.84399e8, 0.0549, _deg(5.145), 0.0, 0.0, 0.0,
                       "NASA Moon fact sheet mean orbit (node and periapsis precess; set to 0)"),
          "Earth", "moon"),
-    _moon("Phobos", "Mars", 7.087e-4, 11.08, 0.31891023),
-    _moon("Deimos", "Mars", 9.62e-5, 6.2, 1.26244),
-    _moon("Io", "Jupiter", 5959.916, 1821.49, 1.769137786),
-    _moon("Europa", "Jupiter", 3202.739, 1560.8, 3.551181041),
-    _moon("Ganymede", "Jupiter", 9887.834, 2631.2, 7.15455296),
-    _moon("Callisto", "Jupiter", 7179.289, 2410.3, 16.6890184),
-    _moon("Titan", "Saturn", 8978.1382, 2575.0, 15.945421),
-    _moon("Triton", "Neptune", 1427.598, 1352.6, 5.876854),
-    _moon("Charon", "Pluto", 105.88, 606.0, 6.3872273, gm_source="Brozovic et al. (2015), Icarus 246"),
+    _moon("Phobos", "Mars", 7.087546066894452e-4, 11.08, 0.31891023),
+    _moon("Deimos", "Mars", 9.615569648120313e-5, 6.2, 1.26244),
+    _moon("Io", "Jupiter", 5959.924010272514, 1821.49, 1.769137786),
+    _moon("Europa", "Jupiter", 3202.739815114734, 1560.8, 3.551181041),
+    _moon("Ganymede", "Jupiter", 9887.819980080976, 2631.2, 7.15455296),
+    _moon("Callisto", "Jupiter", 7179.304867611079, 2410.3, 16.6890184),
+    _moon("Titan", "Saturn", 8978.137030983542, 2575.0, 15.945421),
+    _moon("Triton", "Neptune", 1427.598140725034, 1352.6, 5.876854),
+    _moon("Charon", "Pluto", 106.2509269522026, 606.0, 6.3872273),
 ]
 
 #: the catalogue, by name: the Sun, the planets, dwarf planets and large asteroids, the Moon and major moons

@@ -87,11 +87,12 @@ BUILTIN_ACCURACY_KM = {"Sun": 12.0, "Mercury": 2.5e3, "Venus": 5.2e3, "Earth-Moo
                        "Neptune": 5.6e5}
 
 #: GM (m3/s2) of each DE421 point that carries mass, from JPL DE430 (Folkner et al. 2014, IPN Progress Report
-#: 42-196, Table 8): the masses an N-body model of these points uses. Jupiter-Pluto are whole systems, as their
-#: DE421 points are system barycentres; the Moon's is 4902.800066 km3/s2 (DE421's own: 4902.800076).
+#: 42-196, Table 8, to the digits of JPL Horizons' gm_Horizons.pck): the masses an N-body model of these points
+#: uses. Mars and Jupiter-Pluto are whole systems, as their DE421 points are system barycentres (Mars's moons add
+#: 4e-8); the Moon's is 4902.8000661637961 km3/s2 (DE421's own: 4902.800076).
 DE430_GM = {name: gm * 1e9 for name, gm in {
-    "Sun": 132_712_440_041.9394, "Mercury": 22_031.78, "Venus": 324_858.592, "Earth": 398_600.435436,
-    "Moon": 4_902.800066, "Mars": 42_828.375214, "Jupiter": 126_712_764.8, "Saturn": 37_940_585.2,
+    "Sun": 132_712_440_041.93938, "Mercury": 22_031.78, "Venus": 324_858.592, "Earth": 398_600.43543609598,
+    "Moon": 4_902.8000661637961, "Mars": 42_828.375214, "Jupiter": 126_712_764.8, "Saturn": 37_940_585.2,
     "Uranus": 5_794_548.6, "Neptune": 6_836_527.10058, "Pluto": 977.0}.items()}
 
 _SCALE_SUFFIX = re.compile(r"^(?P<date>.*?)\s+(?P<scale>tdb|tt|tai|utc|ut1)$", re.IGNORECASE)

@@ -20,7 +20,7 @@ import astropy.units as u
 import numpy as np
 
 from orbits import display, inputs, units
-from orbits.constants import Body, body
+from orbits.constants import G, Body, body
 from orbits.core import anomalies, elements, frames, propagate, twobody
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
@@ -137,7 +137,9 @@ class Orbit(display.Displayed):
         the planets), its mean anomaly turned into the true anomaly with Kepler's equation. With `epoch` (astropy
         Time or ISO string, see orbits.ephemeris): the osculating two-body orbit through the ephemeris state
         relative to the parent (the Sun for a planet, the Earth for the Moon), mu = G (M_parent + M_body).
-        DE421 gives Jupiter-Pluto as system barycentres, so theirs are the orbits of the barycentres.
+        DE421 gives Jupiter-Pluto as system barycentres, and Standish's mean elements are those of the
+        barycentres (the Earth-Moon one for the Earth): such an orbit carries the system's mass
+        (Body.barycentre_gm), the planet with its moons.
         """
         target = body(name)
         if epoch is not None:
@@ -154,7 +156,7 @@ class Orbit(display.Displayed):
             raan=el.raan << units.RAD,
             argp=el.argp << units.RAD,
             nu=anomalies.true_from_mean(el.mean_anomaly, el.e) << units.RAD,
-            mass=target.mass << units.KG,
+            mass=target.barycentre_gm / G << units.KG,
         )
 
     @classmethod
@@ -164,10 +166,11 @@ class Orbit(display.Displayed):
         if target.parent is None:
             raise OrbitDomainError(f"{target.name} orbits nothing in the catalogue")
         seen = ephemeris.state(target.name, epoch, center=target.parent, source=source, scale=scale)
-        mu = (body(target.parent).gm + target.gm) << units.M3_PER_S2
+        gm = target.barycentre_gm if target.name in ephemeris.SYSTEM_BARYCENTRES else target.gm
+        mu = (body(target.parent).gm + gm) << units.M3_PER_S2
         r = frames.equatorial_to_ecliptic(seen.r_si) << units.M
         v = frames.equatorial_to_ecliptic(seen.v_si) << units.M_PER_S
-        return cls.from_vectors(mu, r, v, mass=target.mass << units.KG)
+        return cls.from_vectors(mu, r, v, mass=gm / G << units.KG)
 
     # ---- shape ----------------------------------------------------------------------------------
     @property

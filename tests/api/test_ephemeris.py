@@ -58,6 +58,50 @@ def test_de430_gms_agree_with_the_published_ratios():
     assert BODIES["Mercury"].gm == pytest.approx(mercury, rel=1e-9)
 
 
+#: JPL Horizons' mass file gm_Horizons.pck, version 3.0 of 2017-05-09 (J. Giorgini), transcribed by hand (km3/s2):
+#: BODY1-10 are DE430/431's system barycentres and Sun, BODY199-999 the planets alone, the others moons.
+HORIZONS_GM_2017 = {
+    "1": 2.2031780000000021e4, "2": 3.2485859200000006e5, "3": 4.0350323550225981e5, "4": 4.2828375214000022e4,
+    "5": 1.2671276480000021e8, "6": 3.7940585200000003e7, "7": 5.7945486000000080e6, "8": 6.8365271005800236e6,
+    "9": 9.7700000000000068e2, "10": 1.3271244004193938e11,
+    "199": 2.2031780000000021e4, "299": 3.2485859200000006e5, "399": 3.9860043543609598e5,
+    "499": 4.282837362069909e4, "599": 1.266865349164126e8, "699": 3.793120723493890e7, "799": 5.793951322279009e6,
+    "899": 6.835099502439672e6, "999": 8.693390780381926e2, "301": 4.9028000661637961e3,
+    "401": 7.087546066894452e-4, "402": 9.615569648120313e-5, "501": 5.959924010272514e3,
+    "502": 3.202739815114734e3, "503": 9.887819980080976e3, "504": 7.179304867611079e3, "606": 8.978137030983542e3,
+    "801": 1.427598140725034e3, "901": 1.062509269522026e2,
+}
+CATALOGUE_IDS = {"Mercury": "199", "Venus": "299", "Mars": "499", "Saturn": "699", "Uranus": "799", "Neptune": "899",
+                 "Pluto": "999", "Moon": "301", "Phobos": "401", "Deimos": "402", "Io": "501", "Europa": "502",
+                 "Ganymede": "503", "Callisto": "504", "Titan": "606", "Triton": "801", "Charon": "901"}
+SYSTEM_IDS = {"Mars": "4", "Jupiter": "5", "Saturn": "6", "Uranus": "7", "Neptune": "8", "Pluto": "9", "Earth": "3"}
+DE430_IDS = {"Sun": "10", "Mercury": "1", "Venus": "2", "Earth": "399", "Moon": "301", "Mars": "4", "Jupiter": "5",
+             "Saturn": "6", "Uranus": "7", "Neptune": "8", "Pluto": "9"}
+
+
+def test_every_gm_is_its_sources_value():
+    """Against Horizons' mass file, transcribed separately from the catalogue: the planets alone, their systems,
+    the Moon and the moons, and the N-body scene's DE430 masses, each within 4e-14 (measured 3.6e-15 at most: the
+    catalogue rounds a few of the file's last digits, e.g. 126712764.8 for 1.2671276480000021e8). The IAU 2015 nominal values of the Sun, Earth and Jupiter are astropy's (above), rounded
+    from the ephemeris values: 3.2e-10, 8.9e-8 and 3.9e-8 from Horizons'. Ceres and Vesta carry Dawn's
+    values (Park et al. 2016, Konopliv et al. 2014), 0.3 % and 1.4e-5 from the DE431 perturber masses."""
+    for name, naif in CATALOGUE_IDS.items():
+        assert BODIES[name].gm == pytest.approx(HORIZONS_GM_2017[naif] * 1e9, rel=4e-14), name
+    for name, naif in SYSTEM_IDS.items():
+        assert BODIES[name].system_gm == pytest.approx(HORIZONS_GM_2017[naif] * 1e9, rel=4e-14), name
+    for name, naif in DE430_IDS.items():
+        assert ephemeris.DE430_GM[name] == pytest.approx(HORIZONS_GM_2017[naif] * 1e9, rel=4e-14), name
+    for name, naif, bound in (("Sun", "10", 1e-9), ("Earth", "399", 1e-7), ("Jupiter", "599", 1e-7)):
+        assert BODIES[name].gm == pytest.approx(HORIZONS_GM_2017[naif] * 1e9, rel=bound), name
+    assert BODIES["Ceres"].gm == pytest.approx(62.809393e9, rel=4e-3)  # DE431 perturber mass, BIG16
+    assert BODIES["Vesta"].gm == pytest.approx(17.288009e9, rel=3e-5)
+    # a system is its planet and moons: Jupiter alone and the four Galileans make its system to 7.5e-10 (the
+    # small moons); Pluto and Charon (PLU055) fall 0.14 % short of DE430's Pluto system (an older fit)
+    galileans = sum(BODIES[m].gm for m in ("Io", "Europa", "Ganymede", "Callisto"))
+    assert HORIZONS_GM_2017["599"] * 1e9 + galileans == pytest.approx(BODIES["Jupiter"].system_gm, rel=7.5e-9)
+    assert BODIES["Pluto"].gm + BODIES["Charon"].gm == pytest.approx(BODIES["Pluto"].system_gm, rel=2e-3)
+
+
 def test_j2_of_the_earth_is_the_iers_value():
     earth = BODIES["Earth"]
     assert earth.j2 == 1.0826359e-3 and earth.j2_radius == 6_378_136.6
@@ -163,7 +207,9 @@ def test_the_osculating_orbit_follows_the_ephemeris_for_a_day(name):
     later = ephemeris.state(name, t0 + 1 * u.day, center=BODIES[name].parent)
     exact = frames.equatorial_to_ecliptic(later.r_si)
     assert np.linalg.norm(exact - r.to_value(u.m)) / np.linalg.norm(exact) < ONE_DAY[name]
-    assert orbit.mass == pytest.approx(BODIES[name].mass)  # kg, the field is SI
+    system = name in ephemeris.SYSTEM_BARYCENTRES  # DE421's point, and so the orbit's mass, is the system's
+    gm = BODIES[name].barycentre_gm if system else BODIES[name].gm
+    assert orbit.mass == pytest.approx(gm / const.G.si.value, rel=1e-15)  # kg, the field is SI
 
 
 def test_an_orbit_needs_a_parent_and_an_ephemeris_point():
