@@ -73,7 +73,7 @@ class Ephemeris(StrEnum):
 
 
 EphemerisOption = Annotated[Ephemeris, typer.Option(
-    "--ephemeris", help="auto: JPL DE421 when orbits[ephemeris] is installed, else astropy's built-in")]
+    "--ephemeris", help="auto: JPL DE421 when orbits\\[ephemeris] is installed, else astropy's built-in")]
 
 
 def save_plot(draw: "Callable[[], tuple[Figure, Axes]]", path: str) -> None:

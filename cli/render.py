@@ -81,10 +81,11 @@ def dumps(data: Any) -> str:
     return json.dumps(clean(data), indent=2, allow_nan=False)
 
 
-def to_json(quantities: "Mapping[str, Quantity]") -> str:
+def to_json(quantities: "Mapping[str, Quantity]", about: "Mapping[str, str] | None" = None) -> str:
     """JSON text {name: {"value": float or nested list, "unit": str}}: the library's float64 values bit for bit,
-    in the units the library returns them (SI, angles in rad); "" for a pure number."""
-    out = {}
+    in the units the library returns them (SI, angles in rad); "" for a pure number. `about` (what answered, its
+    accuracy, the epoch) goes first, under the key "about", as strings."""
+    out = {} if about is None else {"about": dict(about)}
     for name, q in quantities.items():
         out[name] = {"value": np.asarray(q.value).tolist(), "unit": q.unit.to_string()}
     return dumps(out)
@@ -207,14 +208,14 @@ def print_tables(tables: Sequence[Table], title: str = "") -> None:
 
 
 def emit(title: str, quantities: "Mapping[str, Quantity]", fmt: str, *, index: str | None = None,
-         groups: Sequence[tuple[str, str]] = ()) -> None:
-    """Print quantities as JSON, or as tables: one row per element of `index` when given, grouped by name
-    prefix when `groups` are given, else one row per quantity."""
+         groups: Sequence[tuple[str, str]] = (), about: "Mapping[str, str] | None" = None) -> None:
+    """Print quantities as JSON (with `about`, see to_json), or as tables under the title: one row per element of
+    `index` when given, grouped by name prefix when `groups` are given, else one row per quantity."""
     unknown = sorted(set(DISPLAY.overrides) - set(quantities))
     if unknown:
         raise ValueError(f"--unit {', '.join(unknown)}: no such quantity here; choose from {', '.join(quantities)}")
     if fmt == "json":
-        print(to_json(quantities))
+        print(to_json(quantities, about))
     elif index is not None and index in quantities and np.ndim(quantities[index]) == 1:
         print_tables(element_tables(index, quantities), title)
     elif groups:

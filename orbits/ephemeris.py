@@ -16,11 +16,14 @@ Sources, tried in this order by `source="auto"`:
   jplephem returns: astropy reading the same file agrees to 1 mm and 1e-9 m/s (tests/api/test_ephemeris.py).
 - **astropy's built-in ephemeris** (ERFA's epv00 for the Earth and the Sun, plan94 for the planets, moon98
   for the Moon) when the extra is not installed, or with `source="builtin"`. Against DE421, 1900-2050, measured
-  at 200 random epochs: Earth 4.2 km median (11 km worst), Mars 5,300 km (18,000 km), Jupiter 58,000 km
-  (240,000 km); no Pluto. BUILTIN_ACCURACY_KM states the bound each body is tested against.
+  every 1.37 d: Earth 4.2 km median (12.9 km worst), Mars 5,500 km (27,000 km), Jupiter 55,000 km
+  (244,000 km); no Pluto. BUILTIN_ACCURACY_KM states the bound each body is tested against; outside 1900-2050
+  a state says its accuracy was not measured.
 
 Epochs: an astropy `Time` in any scale (converted to TDB), or ISO strings ("2026-11-25", "2026-11-25T06:00")
-read as UTC unless they end in a scale ("2026-11-25 12:00 TDB"; TDB, TT, TAI, UTC, UT1), or "J2000". A date is
+read as UTC unless they end in a scale ("2026-11-25 12:00 TDB"; TDB, TT, TAI, TCB, TCG, UTC, UT1), or "J2000".
+UT1 needs UT1 - UTC from the IERS table installed with astropy (nothing is downloaded): a UT1 date outside it
+is refused. A date is
 carried as a two-part Julian date (jd1 + jd2), which keeps it to 20 microseconds over 1900-2050. Vectors are
 ICRF (equatorial J2000) in metres and m/s; `orbits.core.frames` turns them to the ecliptic of J2000.
 """
@@ -78,13 +81,16 @@ _BUILTIN_NAMES = {"Sun": "sun", "Mercury": "mercury", "Venus": "venus",
                   "Earth-Moon barycentre": "earth-moon-barycenter",
                   "Earth": "earth", "Moon": "moon", "Mars": "mars", "Jupiter": "jupiter", "Saturn": "saturn",
                   "Uranus": "uranus", "Neptune": "neptune"}
-#: the built-in ephemeris against DE421 (km), barycentric: twice the worst of 200 random TDB epochs 1900-2050
-#: (measured median / worst: Sun 2.2 / 5.6, Mercury 258 / 1,234, Venus 838 / 2,583, Earth-Moon barycentre
-#: 1,434 / 5,454, Earth 4.2 / 11.2, Moon 6.8 / 19.1, Mars 5,305 / 17,887, Jupiter 57,936 / 241,848,
-#: Saturn 143,184 / 584,057, Uranus 460,566 / 1,173,075, Neptune 195,915 / 276,563); tests/api/test_ephemeris.py
-BUILTIN_ACCURACY_KM = {"Sun": 12.0, "Mercury": 2.5e3, "Venus": 5.2e3, "Earth-Moon barycentre": 1.1e4, "Earth": 23.0,
-                       "Moon": 40.0, "Mars": 3.6e4, "Jupiter": 4.9e5, "Saturn": 1.2e6, "Uranus": 2.4e6,
-                       "Neptune": 5.6e5}
+#: years over which the built-in ephemeris was measured against DE421
+BUILTIN_SPAN = (1900, 2050)
+#: the built-in ephemeris against DE421 (km), barycentric: 1.5 times the worst on a grid of 40,001 TDB epochs
+#: every 1.37 d over 1900-2050 (measured median / worst: Sun 2.3 / 5.7, Mercury 243 / 1,474, Venus 822 / 3,577,
+#: Earth-Moon barycentre 1,596 / 5,727, Earth 4.2 / 12.9, Moon 6.5 / 35.7, Mars 5,453 / 26,857, Jupiter
+#: 55,467 / 243,795, Saturn 151,591 / 584,273, Uranus 405,306 / 1,173,224, Neptune 193,265 / 276,883);
+#: tests/api/test_ephemeris.py holds each body to it on a coarser grid
+BUILTIN_ACCURACY_KM = {"Sun": 9.0, "Mercury": 2.3e3, "Venus": 5.4e3, "Earth-Moon barycentre": 8.6e3, "Earth": 20.0,
+                       "Moon": 54.0, "Mars": 4.1e4, "Jupiter": 3.7e5, "Saturn": 8.8e5, "Uranus": 1.8e6,
+                       "Neptune": 4.2e5}
 
 #: GM (m3/s2) of each DE421 point that carries mass, from JPL DE430 (Folkner et al. 2014, IPN Progress Report
 #: 42-196, Table 8, to the digits of JPL Horizons' gm_Horizons.pck): the masses an N-body model of these points
@@ -95,7 +101,7 @@ DE430_GM = {name: gm * 1e9 for name, gm in {
     "Moon": 4_902.8000661637961, "Mars": 42_828.375214, "Jupiter": 126_712_764.8, "Saturn": 37_940_585.2,
     "Uranus": 5_794_548.6, "Neptune": 6_836_527.10058, "Pluto": 977.0}.items()}
 
-_SCALE_SUFFIX = re.compile(r"^(?P<date>.*?)\s+(?P<scale>tdb|tt|tai|utc|ut1)$", re.IGNORECASE)
+_SCALE_SUFFIX = re.compile(r"^(?P<date>.*?)\s+(?P<scale>tdb|tt|tai|utc|ut1|tcb|tcg)$", re.IGNORECASE)
 _KM_PER_DAY = 1e3 / 86400.0
 
 
@@ -150,7 +156,8 @@ def _one_epoch(text: str, scale: str) -> Time:
             return Time(text, scale=scale)
     except ValueError:
         raise OrbitDomainError(f"epoch: {text!r} is not a date; give an ISO date such as '2026-11-25' or "
-                               f"'2026-11-25T06:00', optionally followed by a scale (UTC, TT, TDB)") from None
+                               f"'2026-11-25T06:00', optionally followed by a scale (UTC, TT, TDB, TAI, TCB, TCG, "
+                               f"UT1)") from None
 
 
 def tdb_julian_dates(when: Time) -> tuple[np.ndarray, np.ndarray]:
@@ -158,9 +165,45 @@ def tdb_julian_dates(when: Time) -> tuple[np.ndarray, np.ndarray]:
     dates outside its leap-second table are silenced: DE421's span check says what is wrong)."""
     if when.scale == "tdb":
         return np.asarray(when.jd1, dtype=float), np.asarray(when.jd2, dtype=float)
-    with _quiet_erfa():
+    with _quiet_erfa(), _offline_iers():
+        if when.scale == "ut1":
+            _require_earth_orientation(when)
         tdb = when.tdb
     return np.asarray(tdb.jd1, dtype=float), np.asarray(tdb.jd2, dtype=float)
+
+
+def tdb_iso(when: Time) -> str:
+    """The epoch in TDB to the second ("2026-11-25 00:01:09"), or "N epochs from ... to ..." for an array."""
+    with _quiet_erfa(), _offline_iers():
+        if when.isscalar:
+            return when.tdb.iso[:19]
+        return f"{when.size} epochs from {when.tdb.min().iso[:19]} to {when.tdb.max().iso[:19]}"
+
+
+@contextlib.contextmanager
+def _offline_iers():
+    """astropy's Earth-orientation tables as installed (astropy-iers-data), never a download: nothing here reads the
+    network. Only UT1 needs them; predictions in the installed table are taken as they are."""
+    from astropy.utils import iers
+
+    with iers.conf.set_temp("auto_download", False), iers.conf.set_temp("auto_max_age", None):
+        yield
+
+
+def _require_earth_orientation(when: Time) -> None:
+    """A UT1 epoch needs UT1 - UTC from the installed IERS table; outside it astropy would hold the table's edge
+    value, off by up to 0.9 s (20 km along Mars's orbit), so such an epoch is refused."""
+    from astropy.utils import iers
+
+    _, status = when.get_delta_ut1_utc(return_status=True)
+    outside = np.asarray(status) < 0
+    if outside.any():
+        table = iers.earth_orientation_table.get()
+        first, last = (Time(table["MJD"][i], format="mjd").strftime("%Y-%m-%d") for i in (0, -1))
+        bad = np.atleast_1d(when.iso)[np.atleast_1d(outside)][0]
+        raise OrbitDomainError(f"epoch {bad} UT1 is outside the installed Earth-orientation table ({first} to "
+                               f"{last}, astropy-iers-data): UT1 - UTC is unknown there and orbits downloads "
+                               f"nothing; give the date in UTC, TT or TDB")
 
 
 def available_source() -> str:
@@ -218,7 +261,11 @@ def _builtin_from_ssb(point: str, when: Time) -> tuple[np.ndarray, np.ndarray]:
     if point not in _BUILTIN_NAMES:
         raise OrbitDomainError(f"astropy's built-in ephemeris has no {point}; install the extra orbits[ephemeris] "
                                f"for JPL DE421")
-    position, velocity = get_body_barycentric_posvel(_BUILTIN_NAMES[point], when, ephemeris="builtin")
+    if when.scale == "ut1":
+        with _offline_iers():
+            _require_earth_orientation(when)
+    with _quiet_erfa(), _offline_iers():
+        position, velocity = get_body_barycentric_posvel(_BUILTIN_NAMES[point], when, ephemeris="builtin")
     return (np.moveaxis(position.xyz.to_value(u.m), 0, -1), np.moveaxis(velocity.xyz.to_value(u.m / u.s), 0, -1))
 
 
@@ -281,17 +328,30 @@ class BodyState(display.Displayed):
     @property
     def point(self) -> str:
         """What the body's position refers to: the body's centre or its system's barycentre (DE421)."""
-        if self.source == DE421 and self.body in SYSTEM_BARYCENTRES:
-            return f"{self.body} system barycentre (planet and moons)"
-        return self.body
+        return self._named(self.body)
+
+    @property
+    def center_point(self) -> str:
+        """What the centre's position refers to, named as `point` is."""
+        return self._named(self.center)
+
+    def _named(self, name):
+        if self.source == DE421 and name in SYSTEM_BARYCENTRES:
+            return f"{name} system barycentre (planet and moons)"
+        return name
 
     @property
     def accuracy(self) -> str:
-        """The source's accuracy against DE421 for this body (exact for DE421 itself)."""
+        """The source's accuracy against DE421 for this body and centre (exact for DE421 itself)."""
         if self.source == DE421:
             return "DE421 as read by jplephem (astropy reading the same kernel agrees to 1 mm)"
+        jd1, jd2 = tdb_julian_dates(self.epoch)
+        year = 2000.0 + (np.asarray(jd1 - 2451545.0) + jd2) / 365.25
+        if np.any((year < BUILTIN_SPAN[0]) | (year > BUILTIN_SPAN[1])):
+            return (f"approximate; not measured against DE421 outside {BUILTIN_SPAN[0]}-{BUILTIN_SPAN[1]}, where "
+                    f"this epoch lies")
         worst = BUILTIN_ACCURACY_KM.get(self.body, 0.0) + BUILTIN_ACCURACY_KM.get(self.center, 0.0)
-        return f"approximate: within {worst:,.0f} km of DE421 over 1900-2050"
+        return f"approximate: within {worst:,.0f} km of DE421 over {BUILTIN_SPAN[0]}-{BUILTIN_SPAN[1]}"
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{name: Quantity}: distance, speed, light time and the ICRF components (or `only` those)."""
@@ -442,6 +502,10 @@ def where(body: str, when: Any, observer: str = "Earth", *, source: str = "auto"
     target, seer = point_name(body), point_name(observer)
     if target in ("Sun", seer):
         raise OrbitDomainError(f"where: the body ({target}) must differ from the Sun and from the observer ({seer})")
+    if seer == "Sun":
+        raise OrbitDomainError("where: the observer must not be the Sun (elongation and phase angle are measured "
+                               "from the Sun's direction); for heliocentric states use ephemeris.state(body, when, "
+                               "center='Sun')")
     when = epoch(when, scale)
     return Sighting(state(target, when, "Sun", source=source), state(target, when, seer, source=source),
                     state("Sun", when, seer, source=source))

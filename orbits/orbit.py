@@ -20,7 +20,7 @@ import astropy.units as u
 import numpy as np
 
 from orbits import display, inputs, units
-from orbits.constants import G, Body, body
+from orbits.constants import Body, G, body
 from orbits.core import anomalies, elements, frames, propagate, twobody
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table

@@ -34,7 +34,8 @@ def info() -> dict[str, Any]:
                    "compiled kernels in use (ORBITS_JIT)": _kernels_in_use()},
         "ephemeris": _ephemeris(),
         "constants": {"G": "CODATA 2018 (astropy.constants)", **{b.name: b.source for b in BODIES.values()}},
-        "bodies": [{"name": b.name, "kind": b.kind, "parent": b.parent, "gm_m3_s2": b.gm, "radius_m": b.radius,
+        "bodies": [{"name": b.name, "kind": b.kind, "parent": b.parent, "gm_m3_s2": b.gm,
+                    "system_gm_m3_s2": b.system_gm, "radius_m": b.radius,
                     "rotation_period_s": b.rotation_period, "retrograde": b.retrograde, "j2": b.j2,
                     "j2_radius_m": b.j2_radius} for b in BODIES.values()],
     }

@@ -11,6 +11,7 @@ def command(fmt: FormatOption = Format.table) -> None:
 def show(fmt: str) -> None:
     """Print the facts as a table or JSON."""
     from rich import box
+    from rich.markup import escape
     from rich.table import Table
 
     from orbits.system import info
@@ -23,16 +24,16 @@ def show(fmt: str) -> None:
     grid = Table(show_header=False, box=box.SIMPLE, pad_edge=False)
     grid.add_column("item", overflow="fold")
     grid.add_column("value", overflow="fold")
-    grid.add_row("python", f"{facts['python']} on {facts['platform']}")
+    grid.add_row("python", escape(f"{facts['python']} on {facts['platform']}"))
     for section in ("versions", "caches"):
         for key, value in facts[section].items():
-            grid.add_row(key, value)
-    grid.add_row("ephemeris", facts["ephemeris"])
+            grid.add_row(key, escape(value))
+    grid.add_row("ephemeris", escape(facts["ephemeris"]))  # "orbits[ephemeris]" is not markup
     sources = Table(show_header=False, box=box.SIMPLE, pad_edge=False)
     sources.add_column("item", overflow="fold")
     sources.add_column("value", overflow="fold")
     for key, value in facts["constants"].items():
-        sources.add_row(key, value)
+        sources.add_row(key, escape(value))
     render.print_tables([grid, _bodies(facts["bodies"]), sources], "orbits info")
 
 

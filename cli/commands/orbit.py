@@ -52,8 +52,10 @@ def command(
 
     if body_name is None and epoch is not None:
         raise typer.BadParameter("--epoch needs a BODY: the osculating orbit of a planet, Pluto or the Moon")
+    about = None
     if body_name is not None and epoch is not None:
-        result, title = at_epoch(body_name, epoch, ephemeris.value, [mass, primary, a, p, q, e, inc, raan, argp, nu, r])
+        result, title, about = at_epoch(body_name, epoch, ephemeris.value,
+                                        [mass, primary, a, p, q, e, inc, raan, argp, nu, r])
     else:
         result, title = build(body_name, primary, a, p, q, e, inc, raan, argp, nu, r, v, mass)
     quantities = result.quantities(inputs.names(only))
@@ -61,11 +63,12 @@ def command(
         from orbits.plot import orbit_plane
 
         save_plot(lambda: orbit_plane(result), plot)
-    render.emit(title, quantities, fmt.value)
+    render.emit(title, quantities, fmt.value, about=about)
 
 
-def at_epoch(body_name: str, epoch: str, source: str, others: list) -> "tuple[Orbit, str]":
-    """(the body's osculating orbit at `epoch`, title naming the ephemeris that answered)."""
+def at_epoch(body_name: str, epoch: str, source: str, others: list) -> "tuple[Orbit, str, dict[str, str]]":
+    """(the body's osculating orbit at `epoch`, title naming the ephemeris that answered and its accuracy, the same
+    for the JSON's "about")."""
     from orbits import Orbit, body, ephemeris
 
     if any(x is not None for x in others):
@@ -74,9 +77,11 @@ def at_epoch(body_name: str, epoch: str, source: str, others: list) -> "tuple[Or
     when = ephemeris.epoch(epoch)
     orbit = Orbit.from_body(named.name, when, source=source)
     seen = ephemeris.state(named.name, when, named.parent, source=source)
-    title = (f"Osculating orbit of {seen.point} about the {named.parent}, {when.tdb.iso[:19]} TDB, ecliptic "
-             f"J2000; source: {seen.source}")
-    return orbit, title
+    title = (f"Osculating orbit of {seen.point} about the {seen.center_point}, {ephemeris.tdb_iso(when)} TDB, "
+             f"ecliptic J2000; source: {seen.source}; {seen.accuracy}")
+    about = {"body": seen.point, "center": seen.center_point, "epoch_tdb": ephemeris.tdb_iso(when),
+             "source": seen.source, "accuracy": seen.accuracy, "frame": "ecliptic J2000"}
+    return orbit, title, about
 
 
 def build(

@@ -17,7 +17,7 @@ def command(
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
     sweep: Annotated[
-        bool, typer.Option(help="run the scenes as dask tasks (pip install 'orbits[dask]'), one per scene")
+        bool, typer.Option(help="run the scenes as dask tasks (pip install 'orbits\\[dask]'), one per scene")
     ] = False,
     scheduler: Annotated[
         str | None, typer.Option(help="with --sweep: dask scheduler address, e.g. tcp://host:8786 (default: local)")
@@ -27,10 +27,15 @@ def command(
     import sys
 
     from orbits.io import write_atomic
-    from orbits.validate import available, builtin_names, load, validate
+    from orbits.validate import available, builtin_names, load, unavailable_builtins, validate
     from orbits_cli import render
 
-    names = scenes or builtin_names()
+    names = scenes
+    if not names:  # the built-in scenes this install can run; the others are named, with what they need
+        skipped = unavailable_builtins()
+        names = [name for name in builtin_names() if name not in skipped]
+        for name, reason in skipped.items():
+            print(f"orbits: skipped the built-in scene {name}: it {reason}", file=sys.stderr)
     loaded = [load(name) for name in names]  # every scene is checked before anything runs
     chosen = [b.strip() for b in backend.split(",") if b.strip()]
     if not chosen:

@@ -38,12 +38,14 @@ def command(
     when = Time.now() if epoch is None else eph.epoch(epoch)
     sighting = eph.where(body_name, when, observer, source=ephemeris.value)
     seen = sighting.from_observer
-    title = (f"{seen.point} seen from {seen.center}, {when.tdb.iso[:19]} TDB (geometric, no light-time "
-             f"correction); source: {seen.source}")
+    title = (f"{seen.point} seen from {seen.center_point}, {eph.tdb_iso(when)} TDB (geometric, no light-time "
+             f"correction); source: {seen.source}; {seen.accuracy}")
+    about = {"body": seen.point, "observer": seen.center_point, "epoch_tdb": eph.tdb_iso(when), "source": seen.source,
+             "accuracy": seen.accuracy}
     quantities = sighting.quantities(inputs.names(only))
     if plot:
         from orbits.plot import solar_system, solar_system_part
 
         save_plot(lambda: solar_system(when, which=solar_system_part(body_name), highlight=body_name,
                                        observer=observer, source=ephemeris.value), plot)
-    render.emit(title, quantities, fmt.value)
+    render.emit(title, quantities, fmt.value, about=about)

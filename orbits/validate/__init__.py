@@ -13,7 +13,7 @@ are the only modules that import rebound and heyoka, inside their integrate func
 from orbits.validate.backends import BACKENDS, available
 from orbits.validate.plan import Measurement
 from orbits.validate.run import Check, SceneReport, ValidationReport, validate, validate_scene
-from orbits.validate.scenes import builtin_names, load
+from orbits.validate.scenes import builtin_names, load, unavailable_builtins
 
 __all__ = ["BACKENDS", "Check", "Measurement", "SceneReport", "ValidationReport", "available", "builtin_names",
-           "load", "validate", "validate_scene"]
+           "load", "unavailable_builtins", "validate", "validate_scene"]

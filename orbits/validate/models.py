@@ -9,6 +9,7 @@ PARAMETER_RULES (type and range, with upper bounds that keep a run bounded) befo
 """
 
 import difflib
+import importlib.util
 import inspect
 import math
 import time
@@ -293,6 +294,19 @@ MODELS = {
 def builtin_names() -> list[str]:
     """Names of the registered model scenes."""
     return sorted(MODELS)
+
+
+def missing_extra(name: str) -> str | None:
+    """Why the built-in model scene `name` cannot run on this install, or None: solar_system needs JPL DE421
+    (skyfield-data and jplephem) and, for rebound's 1PN term, REBOUNDx, all in the extra orbits[ephemeris]."""
+    if name != "solar_system":
+        return None
+    from orbits import ephemeris
+
+    needs = [] if ephemeris.available_source() == "de421" else ["JPL DE421 (skyfield-data, jplephem)"]
+    if importlib.util.find_spec("reboundx") is None:
+        needs.append("REBOUNDx")
+    return f"needs {' and '.join(needs)}: pip install 'orbits[ephemeris]'" if needs else None
 
 
 # ---- parameters of a model scene ------------------------------------------------------------------------------

@@ -29,6 +29,11 @@ def builtin_names() -> list[str]:
     return data_scenes.builtin_names() + models.builtin_names()
 
 
+def unavailable_builtins() -> dict[str, str]:
+    """{name: reason} of the built-in scenes this install cannot run (an optional extra missing)."""
+    return {name: reason for name in models.builtin_names() if (reason := models.missing_extra(name))}
+
+
 def load(name_or_path: str | os.PathLike[str]) -> "Scene | models.ModelScene":
     """A data Scene or a ModelScene from a built-in name or a .toml/.json file, read and parsed once."""
     if str(name_or_path) in models.MODELS:

@@ -82,9 +82,10 @@ DE430_IDS = {"Sun": "10", "Mercury": "1", "Venus": "2", "Earth": "399", "Moon": 
 def test_every_gm_is_its_sources_value():
     """Against Horizons' mass file, transcribed separately from the catalogue: the planets alone, their systems,
     the Moon and the moons, and the N-body scene's DE430 masses, each within 4e-14 (measured 3.6e-15 at most: the
-    catalogue rounds a few of the file's last digits, e.g. 126712764.8 for 1.2671276480000021e8). The IAU 2015 nominal values of the Sun, Earth and Jupiter are astropy's (above), rounded
-    from the ephemeris values: 3.2e-10, 8.9e-8 and 3.9e-8 from Horizons'. Ceres and Vesta carry Dawn's
-    values (Park et al. 2016, Konopliv et al. 2014), 0.3 % and 1.4e-5 from the DE431 perturber masses."""
+    catalogue rounds a few of the file's last digits, e.g. 126712764.8 for 1.2671276480000021e8). The IAU 2015
+    nominal values of the Sun, Earth and Jupiter are astropy's (above), rounded from the ephemeris values:
+    3.2e-10, 8.9e-8 and 3.9e-8 from Horizons'. Ceres and Vesta carry Dawn's values (Park et al. 2016,
+    Konopliv et al. 2014), 0.3 % and 1.4e-5 from the DE431 perturber masses."""
     for name, naif in CATALOGUE_IDS.items():
         assert BODIES[name].gm == pytest.approx(HORIZONS_GM_2017[naif] * 1e9, rel=4e-14), name
     for name, naif in SYSTEM_IDS.items():
@@ -138,6 +139,36 @@ def test_de421_states_equal_astropy_reading_the_same_kernel(scale):
         np.testing.assert_allclose(ours.v_si, v.xyz.to_value(u.m / u.s).T, rtol=0, atol=1e-9)
 
 
+MIXED_POINTS = ["Sun", "Mercury", "Venus", "Earth", "Moon", "Mars", "Jupiter", "Saturn", "Uranus", "Neptune", "Pluto"]
+
+
+def test_de421_states_at_epochs_in_mixed_scales_and_forms_against_astropy():
+    """300 epochs, each in a scale of its own (UTC, TT, TDB, TAI, TCB, TCG, UT1 within the installed IERS table)
+    and given either as an astropy Time or as an ISO string ending in its scale, each body relative to a random
+    centre; astropy reads the same kernel with the date built by astropy itself. Issue bound 1 m and 1e-6 m/s;
+    measured 1.1 mm and 1.5e-11 m/s (the subtraction of two barycentric states of size 1e12 m), 0 relative to
+    the barycentre."""
+    rng = np.random.default_rng(77)
+    scales = ["utc", "tt", "tdb", "tai", "tcb", "tcg", "ut1"]
+    worst_r = worst_v = 0.0
+    for k in range(300):
+        scale = scales[k % len(scales)]
+        low, high = (1973.5, 2027.0) if scale == "ut1" else (1900.0, 2050.0)
+        year = rng.uniform(low, high)
+        body, center = rng.choice(MIXED_POINTS, 2, replace=False)
+        with ephemeris._quiet_erfa(), ephemeris._offline_iers():  # UTC before 1960 or past the leap-second table
+            reference = Time(year, format="decimalyear", scale=scale)
+            text = reference.strftime("%Y-%m-%dT%H:%M:%S") + f" {scale.upper()}"
+            reference = Time(text.rsplit(" ", 1)[0], scale=scale)  # the string's own (whole-second) instant
+        ours = ephemeris.state(str(body), text if k % 2 else reference, center=str(center), source="de421")
+        with ephemeris._quiet_erfa(), ephemeris._offline_iers():
+            r_b, v_b = get_body_barycentric_posvel(str(body).lower(), reference, ephemeris=ephemeris.kernel_path())
+            r_c, v_c = get_body_barycentric_posvel(str(center).lower(), reference, ephemeris=ephemeris.kernel_path())
+        worst_r = max(worst_r, np.linalg.norm(ours.r_si - (r_b - r_c).xyz.to_value(u.m)))
+        worst_v = max(worst_v, np.linalg.norm(ours.v_si - (v_b - v_c).xyz.to_value(u.m / u.s)))
+    assert worst_r < 0.01 and worst_v < 1.5e-10, (worst_r, worst_v)
+
+
 def test_a_state_relative_to_a_centre_is_the_difference_of_barycentric_states():
     when = Time(RNG_EPOCHS[:20], format="jd", scale="tdb")
     geo = ephemeris.state("Moon", when, center="Earth")
@@ -172,12 +203,17 @@ def test_light_time_is_distance_over_c():
 
 @pytest.mark.parametrize("name", sorted(ephemeris.BUILTIN_ACCURACY_KM))
 def test_the_builtin_ephemeris_is_within_its_stated_accuracy(name):
-    when = Time(RNG_EPOCHS, format="jd", scale="tdb")
+    """Every 6.8 d over 1900-2050 the miss stays below the stated bound (1.5 times the worst of a grid five times
+    finer) and reaches at least half of it (the Moon, sampled sparsely, 0.53), so the bound says how good the
+    source is, not just that it is."""
+    when = Time(np.linspace(2415020.5, 2469807.5, 8001), format="jd", scale="tdb")
     exact = ephemeris.state(name, when, center="SSB", source="de421")
     rough = ephemeris.state(name, when, center="SSB", source="builtin")
     miss = np.linalg.norm(exact.r_si - rough.r_si, axis=-1) / 1e3
-    assert miss.max() < ephemeris.BUILTIN_ACCURACY_KM[name]
-    assert rough.source == ephemeris.BUILTIN and "approximate" in rough.accuracy
+    bound = ephemeris.BUILTIN_ACCURACY_KM[name]
+    assert bound / 2 < miss.max() < bound
+    assert rough.source == ephemeris.BUILTIN and "approximate: within" in rough.accuracy
+    assert "not measured" in ephemeris.state(name, "2100-01-01", center="SSB", source="builtin").accuracy
 
 
 def test_without_the_extra_auto_falls_back_and_says_so(monkeypatch):

@@ -125,6 +125,28 @@ def test_validate_default_runs_every_builtin_scene_and_writes_json(tmp_path):
     assert {"rebound", "heyoka"} <= set(first["versions"]) and "analytic" in first["wall_time_s"]
 
 
+def test_validate_without_the_ephemeris_extra_skips_solar_system_and_says_so(monkeypatch):
+    """A base install (no skyfield-data, jplephem, REBOUNDx) runs the other built-in scenes and names the one it
+    leaves out, with what it needs; the scene list is cut to two so the run stays short."""
+    import importlib.util
+
+    from orbits import ephemeris, validate
+    from orbits.validate import scenes
+
+    monkeypatch.setattr(ephemeris, "available_source", lambda: "builtin")
+    real_find_spec = importlib.util.find_spec
+    monkeypatch.setattr(importlib.util, "find_spec", lambda name, *a: None if name == "reboundx" else
+                        real_find_spec(name, *a))
+    monkeypatch.setattr(validate, "builtin_names", lambda: ["circular", "solar_system"])
+    assert scenes.unavailable_builtins() == {
+        "solar_system": "needs JPL DE421 (skyfield-data, jplephem) and REBOUNDx: pip install 'orbits[ephemeris]'"}
+    result = run("validate")
+    assert result.exit_code == 0, result.output
+    assert result.stderr.strip() == ("orbits: skipped the built-in scene solar_system: it needs JPL DE421 "
+                                     "(skyfield-data, jplephem) and REBOUNDx: pip install 'orbits[ephemeris]'")
+    assert "circular" in result.stdout and "solar_system" not in result.stdout
+
+
 def test_validate_exits_1_when_a_check_fails(tmp_path):
     scene_file = tmp_path / "strict.toml"
     scene_file.write_text(
