@@ -6,7 +6,8 @@ A quantity is shown in the natural unit for its kind and size, the largest finit
     length    m below 1 km, km below 1e7 km (and for 0), AU below 1e5 AU, pc below 1e5 pc, Mpc beyond
     time      s below 2 min, min below 2 h, h below 2 d, d below 1000 d, yr below 1e7 yr, Gyr beyond
     angle     deg; an angular rate in deg per the natural time unit of 1 rad / rate (deg / d for a planet)
-    speed     km/s (m/s below 1 m/s); GM in km3 / s2; specific energy in km2 / s2; h and dA/dt in km2 / s
+    speed     km/s from 1 km/s, m/s below (a projectile, a radial-velocity curve); GM in km3 / s2; specific
+              energy in km2 / s2; h and dA/dt in km2 / s
     rate      km / s / Mpc for a Hubble parameter; otherwise 1 / (the natural time unit of 1 / rate)
 
 with DIGITS significant digits. `system="si"` shows SI units instead, and `overrides` fixes the unit of a named
@@ -69,7 +70,7 @@ def natural_unit(q: u.Quantity, name: str = "") -> u.UnitBase:
         rate = _size(q, 1 / u.s)
         return _rung(1.0 / rate if rate > 0 else 0.0, _TIMES) ** -1
     if unit.is_equivalent(u.m / u.s):
-        return u.km / u.s if _size(q, u.m / u.s) >= 1.0 else u.m / u.s
+        return u.km / u.s if _size(q, u.m / u.s) >= 1e3 else u.m / u.s
     for si, natural in _FIXED:
         if unit.is_equivalent(si):
             return natural

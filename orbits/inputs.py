@@ -29,6 +29,8 @@ KINDS = {
     "speed": (units.M_PER_S, "km/s"),
     "acceleration": (units.M / units.S**2, "m/s2"),
     "force": (u.N, "kN"),
+    "density": (units.KG / units.M**3, "kg/m3"),
+    "area": (units.M**2, "m2"),
     "gravitational parameter": (units.M3_PER_S2, "m3 / s2"),
     "rate": (units.S**-1, "km / s / Mpc"),
     "dimensionless": (u.one, ""),

@@ -30,6 +30,7 @@ import numpy as np
 from orbits import display, inputs, units
 from orbits.constants import Body, body
 from orbits.core import assist as assist_core
+from orbits.core import collisions as collisions_core
 from orbits.core import manoeuvres as core
 from orbits.core.checks import check_finite, first_where
 from orbits.core.errors import OrbitDomainError
@@ -546,7 +547,7 @@ def elastic_collision(m1: Body | str | u.Quantity, m2: Body | str | u.Quantity |
     speeds = [units.to_si(v, units.M_PER_S, name) for v, name in ((v1, "velocity v1"), (v2, "velocity v2"))]
     for value, name in zip(speeds, ("velocity v1", "velocity v2"), strict=True):
         check_finite(value, name, "m / s")
-    after_1, after_2 = assist_core.elastic_collision(gm1, gm2, *speeds)
+    after_1, after_2 = collisions_core.velocities_after(gm1, speeds[0], gm2, speeds[1], 1.0)
     return after_1 << units.M_PER_S, after_2 << units.M_PER_S
 
 

@@ -24,6 +24,14 @@ def command(
     rate: Annotated[str | None, typer.Option("--rate", help="linear drag rate b, e.g. '0.1 1/s'")] = None,
     terminal_speed: Annotated[str | None, typer.Option(
         "--terminal-speed", help="quadratic drag: v_t = sqrt(2 m g / (C rho A)), e.g. '30 m/s'")] = None,
+    mass: Annotated[str | None, typer.Option("--mass", help="quadratic drag, instead of v_t: mass m, e.g. '0.145 kg'")]
+    = None,
+    drag_coefficient: Annotated[float | None, typer.Option(
+        "--drag-coefficient", help="quadratic drag: C, e.g. 0.47 (a sphere)")] = None,
+    density: Annotated[str | None, typer.Option("--density", help="quadratic drag: air density rho, e.g. '1.2 kg/m3'")]
+    = None,
+    area: Annotated[str | None, typer.Option("--area", help="quadratic drag: cross-section A, e.g. '4.2e-3 m2'")]
+    = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
@@ -37,16 +45,21 @@ def command(
         inputs.parse_quantity(speed, "speed", "--speed"), inputs.parse_angle(angle, "--angle"),
         inputs.parse_quantity(height, "length", "--height"),
         None if g is None else inputs.parse_quantity(g, "acceleration", "--g"))
+    body = {"--mass": mass, "--drag-coefficient": drag_coefficient, "--density": density, "--area": area}
+    given = [name for name, value in body.items() if value is not None]
     if drag == Drag.linear:
-        if rate is None or terminal_speed is not None:
-            raise typer.BadParameter("--drag linear takes --rate (b, e.g. '0.1 1/s') and no --terminal-speed")
+        if rate is None or terminal_speed is not None or given:
+            raise typer.BadParameter("--drag linear takes --rate (b, e.g. '0.1 1/s') and no --terminal-speed, "
+                                     "--mass, --drag-coefficient, --density or --area")
         shot = shot.with_linear_drag(_rate(rate))
     elif drag == Drag.quadratic:
-        if terminal_speed is None or rate is not None:
-            raise typer.BadParameter("--drag quadratic takes --terminal-speed (e.g. '30 m/s') and no --rate")
-        shot = shot.with_quadratic_drag(inputs.parse_quantity(terminal_speed, "speed", "--terminal-speed"))
-    elif rate is not None or terminal_speed is not None:
-        raise typer.BadParameter("--rate and --terminal-speed need --drag linear or --drag quadratic")
+        if rate is not None or (terminal_speed is None) == (len(given) < 4) or (terminal_speed and given):
+            raise typer.BadParameter("--drag quadratic takes --terminal-speed (e.g. '30 m/s'), or all of --mass, "
+                                     "--drag-coefficient, --density and --area; no --rate")
+        shot = shot.with_quadratic_drag(**_quadratic(terminal_speed, mass, drag_coefficient, density, area))
+    elif rate is not None or terminal_speed is not None or given:
+        raise typer.BadParameter(f"{', '.join(given) or '--rate and --terminal-speed'}: need --drag linear (--rate) "
+                                 f"or --drag quadratic")
     if plot:
         from orbits.mechanics.plots import projectile_paths
 
@@ -55,6 +68,17 @@ def command(
 
 
 TITLES = {Drag.none: "no drag", Drag.linear: "linear drag", Drag.quadratic: "quadratic drag"}
+
+
+def _quadratic(terminal_speed, mass, drag_coefficient, density, area):
+    """Keyword arguments of Projectile.with_quadratic_drag from the options."""
+    from orbits import inputs
+
+    if terminal_speed is not None:
+        return {"terminal_speed": inputs.parse_quantity(terminal_speed, "speed", "--terminal-speed")}
+    return {"mass": inputs.parse_quantity(mass, "mass", "--mass"), "drag_coefficient": drag_coefficient,
+            "density": inputs.parse_quantity(density, "density", "--density"),
+            "area": inputs.parse_quantity(area, "area", "--area")}
 
 
 def _rate(text):

@@ -3,7 +3,8 @@
 Float64 arrays in SI units (speeds in m/s, periapsis in m, mu in m**3/s**2, angles in rad); vectors are (..., 3)
 and everything broadcasts.
 
-In the planet's frame a flyby is an elastic collision (IX.vii, restitution e = 1): the probe leaves with the
+In the planet's frame a flyby is an elastic collision (IX.vii, restitution e = 1; the collision itself, with any
+e, is orbits.core.collisions.velocities_after): the probe leaves with the
 speed it came with, v_inf, turned by the deflection delta = 2 asin(1 / e_h) of orbits.core.flyby, e_h =
 1 + r_p v_inf**2 / mu the hyperbola's eccentricity. Back in the Sun's frame the probe's velocity has changed by
 the vector v_inf_out - v_inf_in, of length 2 v_inf sin(delta / 2) = 2 v_inf / e_h, and its energy per unit mass by
@@ -14,16 +15,6 @@ v2' = 2 v1 - v2. A Sun-planet-probe integration agrees to the order of the plane
 
 import numpy as np
 from numpy.typing import ArrayLike
-
-
-def elastic_collision(m1: ArrayLike, m2: ArrayLike, v1: ArrayLike,
-                      v2: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
-    """(v1', v2') (m/s) after a 1-D elastic collision (IX.vii): v1' = v1 + 2 m2 (v2 - v1) / (m1 + m2) and
-    v2' = v2 + 2 m1 (v1 - v2) / (m1 + m2), i.e. the notes' ((m1 - m2) v1 + 2 m2 v2) / (m1 + m2) without its
-    difference of masses; m2 = 0 gives the slingshot v2' = 2 v1 - v2 exactly. Masses in kg (or GM, any
-    common unit, one of them may be 0)."""
-    total = m1 + m2
-    return v1 + 2.0 * (m2 / total) * (v2 - v1), v2 + 2.0 * (m1 / total) * (v1 - v2)
 
 
 def focusing(v_inf: ArrayLike, periapsis: ArrayLike, mu: ArrayLike) -> float | np.ndarray:

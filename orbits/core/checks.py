@@ -14,7 +14,7 @@ def check_finite(x: ArrayLike, name: str, unit: str) -> None:
     """Raise OrbitDomainError naming the first non-finite value of x."""
     if not np.all(np.isfinite(x)):
         bad = np.asarray(x)[~np.isfinite(x)].flat[0]
-        raise OrbitDomainError(f"{name} = {float(bad)!r} {unit} is not finite; it must be a finite number")
+        raise OrbitDomainError(f"{name} = {float(bad)!r}{_spaced(unit)} is not finite; it must be a finite number")
 
 
 def check_eccentricity(
@@ -49,9 +49,11 @@ def require_positive(x: ArrayLike, name: str, unit: str) -> None:
     if np.any(bad):
         value = float(x[bad].flat[0])
         if not np.isfinite(value):
-            raise OrbitDomainError(f"{name} = {value!r} {unit} is not finite: it must be positive, in (0, inf) {unit}")
+            raise OrbitDomainError(f"{name} = {value!r}{_spaced(unit)} is not finite: it must be positive, in (0, inf)"
+                                   f"{_spaced(unit)}")
         raise OrbitDomainError(
-            f"{name} = {value!r} {unit} is outside the allowed range (0, inf) {unit}: it must be positive"
+            f"{name} = {value!r}{_spaced(unit)} is outside the allowed range (0, inf){_spaced(unit)}: it must be "
+            f"positive"
         )
 
 
@@ -68,6 +70,12 @@ def require_magnitude(x: ArrayLike, name: str, unit: str) -> None:
     if np.any(bad):
         value = float(x[bad].flat[0])
         raise OrbitDomainError(
-            f"{name} = {value!r} {unit} is outside the range orbits computes in, [{low:g}, {high:g}] {unit}: "
+            f"{name} = {value!r}{_spaced(unit)} is outside the range orbits computes in, [{low:g}, {high:g}]"
+            f"{_spaced(unit)}: "
             f"quantities derived from it would overflow or underflow float64"
         )
+
+
+def _spaced(unit: str) -> str:
+    """" m / s" for a unit, "" for none (a dimensionless quantity reads "e = 1.5 is outside ...")."""
+    return f" {unit}" if unit else ""

@@ -30,6 +30,7 @@ __all__ = [
     "velocities_after",
     "line_of_impact",
     "oblique_velocities_after",
+    "energy_lost",
     "perpendicular_foot",
     "energy_transfer_ratio",
     "energy_kept_ratio",
@@ -124,6 +125,21 @@ def oblique_velocities_after(
     x1, x2 = mass_fractions(m1, m2)
     kick = ((1.0 + np.asarray(e, dtype=float)) * approach)[..., None] * n
     return v1 - np.asarray(x2)[..., None] * kick, v2 + np.asarray(x1)[..., None] * kick
+
+
+def energy_lost(m1: ArrayLike, v1: ArrayLike, m2: ArrayLike, v2: ArrayLike, e: ArrayLike = 1.0,
+                normal: ArrayLike | None = None, vectors: bool = False) -> np.ndarray:
+    """K - K' = (1 - e**2) mu v_n**2 / 2 (J) (IX.xi): only the approach speed v_n along the line of impact
+    (v1 - v2 on a line; along `normal`, or the relative velocity, for vectors) gives up energy. Formed so rather
+    than as the difference of the kinetic energies, so that an elastic collision loses exactly 0."""
+    e = np.asarray(e, dtype=float)
+    if vectors:
+        dv = np.asarray(v1, dtype=float) - np.asarray(v2, dtype=float)
+        n = line_of_impact(v1, v2) if normal is None else _unit(normal)
+        approach = _dot(dv, n)
+    else:
+        approach = np.asarray(v1, dtype=float) - np.asarray(v2, dtype=float)
+    return 0.5 * (1.0 - e) * (1.0 + e) * reduced_mass(m1, m2) * approach * approach
 
 
 def _unit(n):

@@ -258,9 +258,10 @@ def driven_amplitude(omega0: ArrayLike, b: ArrayLike, force_per_mass: ArrayLike,
 
 
 def driven_phase_lag(omega0: ArrayLike, b: ArrayLike, drive: ArrayLike) -> np.ndarray:
-    """delta = atan2(b w, omega0**2 - w**2) (rad) in [0, pi]: pi/2 at resonance w = omega0 (XXV.vii)."""
+    """delta = atan2(b w, omega0**2 - w**2) (rad) in [0, pi]: pi/2 at resonance w = omega0 (XXV.vii), also
+    without damping, as its limit b -> 0 (atan2(0, 0) would say 0)."""
     w0, b, w = (np.asarray(x, dtype=float) for x in (omega0, b, drive))
-    return np.arctan2(b * w, (w0 - w) * (w0 + w))
+    return np.where((w == w0) & (w0 != 0), 0.5 * np.pi, np.arctan2(b * w, (w0 - w) * (w0 + w)))[()]
 
 
 def driven_velocity_amplitude(omega0, b, force_per_mass, drive) -> np.ndarray:

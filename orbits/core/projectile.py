@@ -367,7 +367,8 @@ def _vertical_flight(speed, height):
         start_time = math.atanh(v0)
         total = before + height
         end_time = math.acosh(math.exp(total)) if total < 700 else total + math.log(2.0)
-        return end_time - start_time, height, 0.0, math.sqrt(-math.expm1(-2.0 * total))
+        # max: from height 0 the two times agree but for rounding (-8.5e-16 measured), a flight of 0
+        return max(end_time - start_time, 0.0), height, 0.0, math.sqrt(-math.expm1(-2.0 * total))
     if v0 == 1:
         return height, height, 0.0, 1.0
     # faster than terminal: v = coth(t + c) with coth(c) = v0; y falls by ln(sinh(t + c) / sinh(c))

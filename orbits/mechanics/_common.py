@@ -50,9 +50,12 @@ def planar_vector(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
 
 
 def angle_in(value: u.Quantity, name: str, low: float, high: float, text: str) -> np.ndarray:
-    """float64 array of an angle Quantity in rad (orbits.inputs.angle), checked to lie in [low, high]."""
+    """float64 array of an angle Quantity in rad (orbits.inputs.angle), checked to lie in the range `text` says:
+    "[low, high]", with "(" or ")" for an open end (so "[0, pi/2)" refuses pi/2 itself)."""
     si = inputs.angle(value, name)
-    bad = (si < low) | (si > high)
+    below = (si <= low) if text.startswith("(") else (si < low)
+    above = (si >= high) if text.endswith(")") else (si > high)
+    bad = below | above
     if np.any(bad):
         value = float(np.asarray(si)[bad].flat[0])
         raise OrbitDomainError(f"{name} = {value!r} rad is outside the allowed range {text} rad")

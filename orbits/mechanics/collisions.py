@@ -139,8 +139,9 @@ class Collision(display.Displayed):
 
     @cached_property
     def energy_lost(self) -> u.Quantity:
-        """K - K' = (1 - e**2) mu v_n**2 / 2 (J), v_n the approach speed along the line of impact."""
-        return self.kinetic_energy_before - self.kinetic_energy_after
+        """K - K' = (1 - e**2) mu v_n**2 / 2 (J), v_n the approach speed along the line of impact (0 exactly when
+        elastic)."""
+        return core.energy_lost(self.m1, self.v1, self.m2, self.v2, self.e, self.normal, self.vectors) << units.J
 
     def __repr__(self) -> str:
         """E.g. "Collision(m1 = 2 kg, m2 = 1 kg, e = 1, v1' = 1 m / s, v2' = 4 m / s)"."""

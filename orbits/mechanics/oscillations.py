@@ -92,8 +92,13 @@ class Pendulum(display.Displayed):
 
 
 def _amplitude(value):
+    """|theta0| (rad) of an amplitude given on either side; refused, as given, unless |theta0| < pi."""
     theta = inputs.angle(value, "amplitude theta0")
-    core.check_amplitude(np.abs(theta))
+    bad = ~(np.abs(theta) < np.pi)
+    if np.any(bad):
+        given = float(np.asarray(theta)[bad].flat[0])
+        raise OrbitDomainError(f"amplitude theta0 = {given!r} rad ({np.degrees(given):.6g} deg) is outside the "
+                               f"allowed range (-pi, pi) rad: at pi the pendulum balances upside down and never swings")
     return np.abs(theta)
 
 

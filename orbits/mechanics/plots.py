@@ -20,43 +20,55 @@ def _axes(ax):
 
 
 def _finish(ax, x_label, y_label):
+    """Axis labels with units, a light grid and the legend below the axes, off the data."""
     ax.set_xlabel(x_label)
     ax.set_ylabel(y_label)
     ax.grid(alpha=0.3)
-    ax.legend(loc="best", fontsize="small")
+    plot._legend_outside(ax)
 
 
 def collision_velocities(collision: "Collision", ax: Any = None) -> tuple[Any, Any]:
-    """The velocities before (solid) and after (dashed) a collision as arrows in velocity space, with the
-    centre-of-mass velocity (IX); a head-on collision's velocities lie along the horizontal axis."""
+    """The velocities before (solid, round tip) and after (dashed, square tip) a collision as arrows in velocity
+    space, with the centre-of-mass velocity (IX). A head-on collision's arrows lie along the line, one row each;
+    an oblique one's are drawn from the origin, tips marked so that collinear arrows and zero vectors show."""
     fig, ax = _axes(ax)
+
     def planar(q):
         v = np.asarray(q.to_value(u.m / u.s), dtype=float)
         return np.array([float(v), 0.0]) if v.ndim == 0 else v[:2]
 
-    arrows = [("body 1 before", collision.v1 << u.m / u.s, "C0", "-"), ("body 2 before", collision.v2 << u.m / u.s,
-              "C1", "-"), ("body 1 after", collision.velocity1_after, "C0", "--"),
-              ("body 2 after", collision.velocity2_after, "C1", "--")]
+    arrows = [("body 1 before", collision.v1 << u.m / u.s, "C0", "-", "o"),
+              ("body 2 before", collision.v2 << u.m / u.s, "C1", "-", "o"),
+              ("body 1 after", collision.velocity1_after, "C0", "--", "s"),
+              ("body 2 after", collision.velocity2_after, "C1", "--", "s")]
     head_on = not collision.vectors
     rows = (0.3, 0.1, -0.1, -0.3)  # a head-on collision's arrows, one row each, all along v_x
     tips = []
-    for k, (label, velocity, color, style) in enumerate(arrows):
+    for k, (label, velocity, color, style, marker) in enumerate(arrows):
         x, y = planar(velocity)
         base = rows[k] if head_on else 0.0
-        ax.plot([0.0, x], [base, y + base], color=color, ls=style, lw=1.8, label=label)
-        ax.annotate("", xy=(x, y + base), xytext=(0.0, base), arrowprops=dict(arrowstyle="-|>", color=color, lw=0))
+        width = 2.6 if style == "-" else 1.4  # a dashed "after" arrow over a solid one stays visible
+        ax.plot([0.0, x], [base, y + base], color=color, ls=style, lw=width, marker=marker, markevery=[1],
+                ms=7 if marker == "o" else 5, label=label + (" (at rest)" if x == 0 and y == 0 else ""))
+        if x or y:
+            ax.annotate("", xy=(x, y + base), xytext=(0.0, base), arrowprops=dict(arrowstyle="-|>", color=color,
+                                                                                   lw=0))
         tips.append((x, y + base))
     center = planar(collision.center_of_mass_velocity)
+    tips = np.array(tips + [tuple(center), (0.0, 0.0)])
     if head_on:
         ax.axvline(center[0], color="k", ls=":", lw=1.2, label="centre-of-mass velocity")
         ax.set_ylim(-0.5, 0.5)
         ax.set_yticks(rows, ["body 1 before", "body 2 before", "body 1 after", "body 2 after"])
+        span = max(np.ptp(tips[:, 0]), 1e-300)
+        ax.set_xlim(tips[:, 0].min() - 0.15 * span, tips[:, 0].max() + 0.15 * span)
     else:
         ax.plot(*center, marker="+", ms=12, color="k", ls="none", label="centre-of-mass velocity")
-        ax.set_aspect("equal", adjustable="datalim")
-    tips = np.array(tips + [tuple(center), (0.0, 0.0)])
-    span = max(np.ptp(tips[:, 0]), np.ptp(tips[:, 1]), 1e-300)
-    ax.set_xlim(tips[:, 0].min() - 0.15 * span, tips[:, 0].max() + 0.15 * span)
+        middle, half = 0.5 * (tips.min(axis=0) + tips.max(axis=0)), 0.6 * max(np.ptp(tips[:, 0]), np.ptp(tips[:, 1]),
+                                                                            1e-300)
+        ax.set_xlim(middle[0] - half, middle[0] + half)
+        ax.set_ylim(middle[1] - half, middle[1] + half)
+        ax.set_aspect("equal", adjustable="box")  # square limits: nothing for matplotlib to override
     ax.set_title(f"restitution e = {float(np.ravel(collision.e)[0]):.3g}", fontsize="medium")
     _finish(ax, "v_x [m / s]" if not head_on else "velocity along the line [m / s]", "v_y [m / s]" if not head_on
             else "")
@@ -110,17 +122,34 @@ def damped_motion(oscillators: "dict[str, DampedOscillator]", duration: u.Quanti
 
 
 def vertical_circle_forces(circles: "dict[str, VerticalCircle]", ax: Any = None,
-                           samples: int = 361) -> tuple[Any, Any]:
-    """N / (m g) against the angle from the lowest point for {label: VerticalCircle} (XXV.vi, ERRATA #101), over
-    the arc each body reaches; N < 0 means a rod pushes outward (a string would have slackened)."""
+                           samples: int = 721) -> tuple[Any, Any]:
+    """N / (m g) against the angle from the lowest point (-180 to 180 deg) for {label: VerticalCircle} (XXV.vi,
+    ERRATA #101), over the arc each body follows on the circle: all of it when looping, up to the turning angle
+    when swinging (marked), and up to where a string slackens (N = 0, marked): beyond it the body is in free
+    flight, off the circle. A rod's N < 0 pushes outward."""
     fig, ax = _axes(ax)
-    theta = np.linspace(0.0, 2 * np.pi, samples)
+    theta = np.linspace(-np.pi, np.pi, samples)
     for k, (label, circle) in enumerate(circles.items()):
-        reach = np.isfinite(circle.speed_at(theta << u.rad).value)
-        force = circle.normal_force_at(theta << u.rad).to_value(u.N) / (circle.mass * circle.g)
-        shown = np.where(reach, force, np.nan)  # a gap where the body never gets
-        ax.plot(np.degrees(theta), shown, color=f"C{k}", label=f"{label}: {circle.regime}")
+        color = f"C{k}"
+        regime = circle.regime
+        if regime == "leaves the circle":
+            end = circle.leaving_angle.to_value(u.rad)
+        elif regime in ("swings", "reaches the top", "at rest"):
+            end = circle.turning_angle.to_value(u.rad)
+        else:
+            end = np.pi
+        arc = theta[np.abs(theta) <= end]
+        arc = np.unique(np.concatenate([arc, [-end, end]]))
+        force = circle.normal_force_at(arc << u.rad).to_value(u.N) / (circle.mass * circle.g)
+        ax.plot(np.degrees(arc), force, color=color, label=f"{label}: {regime}")
+        if end < np.pi:
+            ends = circle.normal_force_at(np.array([-end, end]) << u.rad).to_value(u.N) / (circle.mass * circle.g)
+            mark = "leaves the circle (N = 0)" if regime == "leaves the circle" else "turns back (v = 0)"
+            ax.plot(np.degrees([-end, end]), ends, ls="none", marker="v" if regime == "leaves the circle" else "o",
+                    color=color, label=f"{label}: {mark} at {np.degrees(end):.1f} deg")
     ax.axhline(0.0, color="gray", lw=0.8)
+    ax.set_xlim(-180.0, 180.0)
+    ax.set_xticks(np.arange(-180, 181, 60))
     _finish(ax, "angle from the lowest point [deg]", "normal force N / (m g) [dimensionless]")
     return fig, ax
 

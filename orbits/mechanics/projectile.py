@@ -289,7 +289,7 @@ class ConicalPendulum(display.Displayed):
     def at_angle(cls, length: u.Quantity, angle: u.Quantity, g: u.Quantity | None = None,
                  mass: u.Quantity | None = None) -> "ConicalPendulum":
         """String length, cone angle in (0, 90) deg."""
-        theta = angle_in(angle, "cone angle theta", 0.0, np.pi / 2 - 1e-15, "[0, pi/2)")
+        theta = angle_in(angle, "cone angle theta", 0.0, np.pi / 2, "[0, pi/2)")
         m = None if mass is None else inputs.positive(mass, units.KG, "mass m")
         return cls(inputs.positive(length, units.M, "string length L"), theta, gravity(g), m)
 
