@@ -133,6 +133,21 @@ def displays(command: Callable[_P, _R]) -> Callable[..., _R]:
     return wrapper
 
 
+def _print_warnings(caught, ours):
+    """orbits' own warnings as one line each on stderr ("orbits: warning: ..."), each message once; the others
+    are given back to Python's warning machinery as they were."""
+    import warnings
+
+    seen = set()
+    for item in caught:
+        if issubclass(item.category, ours):
+            if str(item.message) not in seen:
+                seen.add(str(item.message))
+                print(f"orbits: warning: {item.message}", file=sys.stderr)
+        else:
+            warnings.warn_explicit(item.message, item.category, item.filename, item.lineno)
+
+
 def reports_errors(command: Callable[_P, _R]) -> Callable[_P, _R]:
     """Turn the library's input errors into one line on stderr and exit status 2."""
 
@@ -143,11 +158,16 @@ def reports_errors(command: Callable[_P, _R]) -> Callable[_P, _R]:
         import astropy.units as u
 
         from orbits import OrbitsError
+        from orbits.core.errors import OrbitsWarning
 
         try:
-            with warnings.catch_warnings():
+            with warnings.catch_warnings(record=True) as said:
                 warnings.simplefilter("error", RuntimeWarning)  # a float64 overflow is an error, never a warning
-                return command(*args, **kwargs)
+                warnings.simplefilter("always", OrbitsWarning)
+                try:
+                    return command(*args, **kwargs)
+                finally:
+                    _print_warnings(said, OrbitsWarning)
         except RuntimeWarning as err:
             print(f"orbits: error: the computation left float64 ({err}); the inputs are outside what orbits can "
                   f"compute", file=sys.stderr)

@@ -9,6 +9,7 @@ Approximate Positions of the Major Planets", Table 1 (ecliptic and equinox of J2
 import difflib
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import astropy.constants as const
 
@@ -212,6 +213,22 @@ def body(name: str) -> Body:
     close = difflib.get_close_matches(key, [k.lower() for k in BODIES], n=3, cutoff=0.6)
     hint = f"; did you mean {' or '.join(_by_lower(c) for c in close)}?" if close else ""
     raise UnknownNameError(f"unknown body {name!r}{hint} (known bodies: {', '.join(BODIES)})")
+
+
+def body_with_gm(gm: Any, tolerance: float = 0.0) -> Body | None:
+    """The catalogue body whose GM is `gm` (m3/s2, every element the same) within the relative `tolerance`, the
+    closest if several, else None. tolerance 0 names a body only for its own GM (a repr's "about Earth"); 0.02
+    also finds the primary of a two-body mu such as G (M_Sun + M_Jupiter) (no two catalogue GMs lie within 10 %
+    of each other)."""
+    import numpy as np
+
+    values = np.unique(np.asarray(gm, dtype=float))
+    if values.size != 1 or not np.isfinite(values[0]) or values[0] <= 0:
+        return None
+    value = float(values[0])
+    misses = {name: abs(value / known.gm - 1.0) for name, known in BODIES.items()}
+    name = min(misses, key=misses.get)
+    return BODIES[name] if misses[name] <= tolerance else None
 
 
 def _by_lower(lower: str) -> str:

@@ -123,8 +123,12 @@ def values_text(values: np.ndarray, digits: int = DIGITS) -> str:
 
 
 def unit_text(unit: u.UnitBase) -> str:
-    """The unit as people write it ("km / s", "deg", "" for a pure number)."""
-    return "" if unit == u.one else unit.to_string()
+    """The unit as people write it ("km / s", "deg", "10^6 km" for a scaled axis unit, "" for a pure number)."""
+    if unit == u.one:
+        return ""
+    if isinstance(unit, u.CompositeUnit) and unit.scale != 1 and len(unit.bases) == 1 and unit.powers == [1]:
+        return f"10^{round(math.log10(unit.scale))} {unit.bases[0].to_string()}"
+    return unit.to_string()
 
 
 def shown(q: u.Quantity, name: str = "", system: str = "natural", overrides: Mapping[str, Any] | None = None,
@@ -141,8 +145,15 @@ def quantity_text(q: u.Quantity, name: str = "", digits: int = DIGITS) -> str:
 
 
 def axis_unit(q: u.Quantity) -> u.UnitBase:
-    """The unit of a plot axis spanning q: the natural unit of its largest magnitude."""
-    return natural_unit(q)
+    """The unit of a plot axis spanning q: the natural unit of its largest magnitude, counted in 10^3 or 10^6 of it
+    where the ticks would otherwise carry six digits or more (a 5e6 km picture reads "x [10^6 km]", not an offset
+    "1e6" in the corner)."""
+    unit = natural_unit(q)
+    size = _size(q, unit) if unit != u.one else 0.0
+    if unit.is_equivalent(u.m) and size >= 1e5:
+        power = 3 * min(int(math.log10(size)) // 3, 2)
+        return u.CompositeUnit(10.0**power, [unit], [1])
+    return unit
 
 
 def quantities_html(title: str, quantities: Mapping[str, u.Quantity], digits: int = DIGITS) -> str:
@@ -198,15 +209,13 @@ def summary(q: u.Quantity, name: str = "", digits: int = 7, unit: u.UnitBase | N
 
 
 def body_name(gm: Any) -> str:
-    """The catalogue body whose GM this is (every element the same), else "GM = ... km3 / s2"."""
-    from orbits.constants import BODIES
+    """The catalogue body whose GM this is exactly (every element the same), else "GM = ... km3 / s2"."""
+    from orbits.constants import body_with_gm
 
-    values = np.unique(np.asarray(gm, dtype=float))
-    if values.size == 1:
-        for name, known in BODIES.items():
-            if known.gm == values[0]:
-                return name
-    return "GM = " + summary(u.Quantity(values, u.m**3 / u.s**2))
+    known = body_with_gm(gm)
+    if known is not None:
+        return known.name
+    return "GM = " + summary(u.Quantity(np.unique(np.asarray(gm, dtype=float)), u.m**3 / u.s**2))
 
 
 class Displayed:

@@ -13,6 +13,7 @@ import astropy.units as u
 import numpy as np
 
 from orbits import display, inputs, units
+from orbits.core.errors import OrbitsWarning
 from orbits.io import write_atomic
 
 if TYPE_CHECKING:
@@ -36,8 +37,8 @@ def _axes(ax, figsize=(6.4, 5.6)):
 def _finish_plane(ax, unit, x_label):
     """Equal aspect, labelled axes with the length unit, grid and legend: the end of every in-plane picture."""
     ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel(f"{x_label} [{unit.to_string()}]")
-    ax.set_ylabel(f"y [{unit.to_string()}]")
+    ax.set_xlabel(f"{x_label} [{display.unit_text(unit)}]")
+    ax.set_ylabel(f"y [{display.unit_text(unit)}]")
     ax.grid(alpha=0.3)
     ax.legend(loc="best", fontsize="small")
 
@@ -66,48 +67,38 @@ def orbit_plane(
     ax: Any = None,
     unit: u.UnitBase | None = None,
     label: str | None = None,
+    primary: Any = None,
 ) -> tuple[Any, Any]:
-    """Draw a single Orbit in its own plane (perifocal frame: periapsis along +x, star at the origin).
+    """Draw a single Orbit face on, in its own plane (perifocal frame: periapsis along +x, primary at the origin).
 
-    Marks the star (focus), periapsis, apoapsis, the centre and empty focus of an ellipse, the body's
-    current position, and its positions at `times` (time Quantity array) later, when given.
+    The picture of `orbits` (the primary to scale and named, apsides where e > 1e-3, open and very long orbits
+    within a window, a warning for a closest approach inside the primary, the legend outside) for the same conic
+    turned into the xy plane, with the centre and empty focus of an ellipse drawn whole and the body's positions
+    at `times` (a time Quantity array) later, when given.
     """
+    import dataclasses
+
     if orbit.shape != ():
         raise ValueError(f"orbit_plane draws one orbit; this Orbit holds {orbit.shape} orbits: index it first")
-    fig, ax = _axes(ax)
-    p, e = float(orbit.p), float(orbit.e)
-    q = p / (1 + e)
-    nus = _true_anomalies(orbit, times)
-    radii = p / (1 + e * np.cos(nus))
-    r_max = max(10 * q, 1.3 * radii.max())
-    unit = unit or _length_unit(p / (1 - e) if e < 1 else r_max)
+    flat = dataclasses.replace(orbit, inc=np.zeros(()), raan=np.zeros(()), argp=np.zeros(()))
+    later = [] if times is None else [flat.at(t).r.to_value(u.m) for t in np.atleast_1d(times)]
+    size = _extent([("", flat)], max((float(np.linalg.norm(r)) for r in later), default=0.0))
+    unit = unit or _length_unit(size)
+    fig, ax = orbits(flat, ax=ax, labels=None if label is None else [label], unit=unit, primary=primary)
     scale = u.m.to(unit)
-    x, y = _conic_points(p, e, r_max)
-    ax.plot(x * scale, y * scale, color="C0", lw=1.5, label=label or f"orbit, e = {e:.6g}")
-    ax.plot(0, 0, marker="*", ms=14, color="orange", ls="none", label="star (focus)")
-    ax.plot(q * scale, 0, marker="o", color="C3", ls="none", label="periapsis")
-    if e < 1:
+    p, e = float(orbit.p), float(orbit.e)
+    whole = e < 1 and p / (1 - e) <= _LONG * p / (1 + e)
+    if _CIRCULAR < e < 1 and whole:
         c = e * p / (1 - e * e)
-        ax.plot(-p / (1 - e) * scale, 0, marker="o", color="C2", ls="none", label="apoapsis")
         ax.plot(-c * scale, 0, marker="+", ms=10, color="gray", ls="none", label="centre")
         ax.plot(-2 * c * scale, 0, marker="x", color="gray", ls="none", label="empty focus")
-    _mark_positions(ax, nus, radii, scale)
-    _finish_plane(ax, unit, "x toward periapsis")
+    if later:
+        points = np.array(later) * scale
+        ax.plot(points[:, 0], points[:, 1], marker=".", color="k", ls="none", alpha=0.6, label="body at given times")
+    ax.set_xlabel(f"x toward periapsis [{display.unit_text(unit)}]")
+    ax.set_ylabel(f"y, along the motion at periapsis [{display.unit_text(unit)}]")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small", frameon=False)
     return fig, ax
-
-
-def _true_anomalies(orbit, times):
-    """The body's true anomaly now, then at each of `times` later (rad)."""
-    later = [] if times is None else [float(orbit.at(t).nu) for t in np.atleast_1d(times)]
-    return np.array([float(orbit.nu), *later])
-
-
-def _mark_positions(ax, nus, radii, scale):
-    """The body now, and at the later times, as dots on the conic."""
-    x, y = radii * np.cos(nus) * scale, radii * np.sin(nus) * scale
-    ax.plot(x[0], y[0], marker="o", color="k", ls="none", label="body now")
-    if len(nus) > 1:
-        ax.plot(x[1:], y[1:], marker=".", color="k", ls="none", alpha=0.6, label="body at given times")
 
 
 # ---- several orbits and trajectories in one frame ----------------------------------------------------------
@@ -118,18 +109,16 @@ _LONG = 100.0  # an ellipse with Q > _LONG q is drawn, like an open orbit, only 
 _AXES = "xyz"
 
 
-class InsideBodyWarning(UserWarning):
+class InsideBodyWarning(OrbitsWarning):
     """A drawn closest approach lies inside the primary (or inside both bodies' radii): a collision."""
 
 
 def catalogue_body(gm: Any) -> Any:
-    """The catalogue Body whose GM is exactly `gm` (m3/s2, every element the same), else None."""
-    from orbits.constants import BODIES
+    """The catalogue Body drawn as the primary of orbits with this mu (m3/s2): its own GM within 2 %, so that the
+    Sun is found under a Sun-Jupiter mu G (M_Sun + M_Jupiter) too (orbits.constants.body_with_gm); else None."""
+    from orbits.constants import body_with_gm
 
-    values = np.unique(np.asarray(gm, dtype=float))
-    if values.size != 1:
-        return None
-    return next((known for known in BODIES.values() if known.gm == values[0]), None)
+    return body_with_gm(gm, tolerance=0.02)
 
 
 def _primary_body(primary, gm):
@@ -184,7 +173,7 @@ def _items(items, labels):
         if isinstance(item, Orbit):
             flat = [item] if item.shape == () else [_one_orbit(item, idx) for idx in np.ndindex(item.shape)]
             for j, one in enumerate(flat):
-                name = given if len(flat) == 1 else f"{given or 'orbit'} [{j}]"
+                name = given if len(flat) == 1 else f"{given or 'orbit'} [{j}]: {_size_text(one)}"
                 out.append((name or f"orbit, e = {_eccentricity_text(float(one.e))}", one))
         else:
             track = np.asarray(units.to_si(item, units.M, "trajectory positions"), dtype=float)
@@ -201,6 +190,13 @@ def _one_orbit(orbit, idx):
     values = {f.name: getattr(orbit, f.name) for f in dataclasses.fields(orbit)}
     return type(orbit)(**{name: None if v is None else np.broadcast_to(v, orbit.shape)[idx]
                           for name, v in values.items()})
+
+
+def _size_text(orbit):
+    """"a = 7000 km, e = 0.1" (q for an open orbit): what tells one orbit of an array from the others."""
+    e = float(orbit.e)
+    size = orbit.semi_major_axis if e < 1 else orbit.periapsis_distance
+    return f"{'a' if e < 1 else 'q'} = {display.quantity_text(size, digits=4)}, e = {_eccentricity_text(e)}"
 
 
 def _eccentricity_text(e):
@@ -302,14 +298,15 @@ def _axes_for(ax, projection):
 
 
 def _colors(n):
-    """n distinct colours: matplotlib's ten, then tab20's twenty, then evenly spaced hues."""
+    """n distinct colours: matplotlib's ten, then tab20's twenty; beyond, a sequence along viridis (first and last
+    as far apart as it goes, none repeated), which reads as the order of the orbits."""
     import matplotlib
 
     if n <= 10:
         return [f"C{k}" for k in range(n)]
     if n <= 20:
         return list(matplotlib.colormaps["tab20"].colors[:n])
-    return [matplotlib.colormaps["hsv"](k / n) for k in range(n)]
+    return [matplotlib.colormaps["viridis"](k / (n - 1)) for k in range(n)]
 
 
 def _mark_orbit(ax, orbit, color, axes_index, scale, marked, whole):
@@ -339,27 +336,34 @@ def _marker_legend(ax, marked, dimensions):
                     mfc="none" if name != "body now" else "0.3", label=name)
 
 
+def _primary_color(body):
+    """gold for a star, silver for a planet or moon (or an unnamed primary): colours outside matplotlib's cycle,
+    so the primary never looks like one of the orbits (the cycle's C1 is orange)."""
+    return "gold" if body is not None and body.kind == "star" else "silver"
+
+
 def _draw_primary(ax, body, axes_index, scale, size, unit):
     """The primary at the origin: a disc (a sphere's outline in 3D) of its radius, and a star if that is tiny."""
     name = body.name if body is not None else "primary"
     radius = body.radius * scale if body is not None else 0.0
     tiny = radius < 0.01 * size * scale
+    color = _primary_color(body)
     if len(axes_index) == 3:
         if not tiny:
             angle = np.linspace(0, 2 * np.pi, 97)
             for i, j in ((0, 1), (0, 2), (1, 2)):
                 circle = np.zeros((3, angle.size))
                 circle[i], circle[j] = radius * np.cos(angle), radius * np.sin(angle)
-                ax.plot(*circle, color="orange", lw=1)
-        ax.plot([0], [0], [0], marker="*", ms=12, color="orange", ls="none", label=f"{name}")
+                ax.plot(*circle, color=color, lw=1)
+        ax.plot([0], [0], [0], marker="*", ms=12, color=color, mec="0.3", ls="none", label=f"{name}")
         return
     import matplotlib.patches as mpatches
 
     if radius > 0:
-        ax.add_patch(mpatches.Circle((0, 0), radius, color="orange", alpha=0.6, zorder=0.5,
+        ax.add_patch(mpatches.Circle((0, 0), radius, facecolor=color, edgecolor="0.4", alpha=0.8, zorder=0.5,
                                      label=f"{name} (to scale)" if not tiny else None))
     if tiny:
-        ax.plot(0, 0, marker="*", ms=12, color="orange", ls="none", zorder=4,
+        ax.plot(0, 0, marker="*", ms=12, color=color, mec="0.3", ls="none", zorder=4,
                 label=f"{name} (star not to scale; radius {display.quantity_text(body.radius << u.m, digits=3)})"
                 if radius > 0 else name)
 
@@ -367,7 +371,7 @@ def _draw_primary(ax, body, axes_index, scale, size, unit):
 def _finish_frame(ax, projection, unit, body):
     """Axis labels with the unit, equal scales, grid, and the legend outside the axes on the right."""
     names = [_AXES[i] for i in PROJECTIONS[projection]]
-    text = unit.to_string()
+    text = display.unit_text(unit)
     ax.set_xlabel(f"{names[0]} [{text}]")
     ax.set_ylabel(f"{names[1]} [{text}]")
     if projection == "3d":
@@ -560,6 +564,13 @@ def flyby_plane(flyby: "Flyby", ax: Any = None, unit: u.UnitBase | None = None) 
     if flyby.gm2 is not None:
         bodies.append(catalogue_body(flyby.gm2))
     _draw_primary(ax, bodies[0], (0, 1), scale, r_max, unit)
+    semi_axis = p / (e * e - 1)
+    if semi_axis > r_max:  # the arc drawn here is still far from its asymptotes
+        ax.plot([], [], ls="none", label=f"(the track meets its asymptotes only beyond |a| = "
+                                          f"{display.quantity_text(semi_axis << u.m, digits=3)})")
+    radius = sum(body.radius for body in bodies if body is not None)
+    if 5 * max(q, radius) < 0.05 * r_max:
+        _periapsis_inset(ax, p, e, q, bodies[0], radius)
     title = f"deflection {np.degrees(float(flyby.deflection_angle.to_value(u.rad))):.2f} deg"
     note = _collision_note(q, bodies)
     if note:
@@ -571,6 +582,31 @@ def flyby_plane(flyby: "Flyby", ax: Any = None, unit: u.UnitBase | None = None) 
     _finish_plane(ax, unit, "x toward closest approach")
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small", frameon=False)
     return fig, ax
+
+
+def _periapsis_inset(ax, p, e, q, body, radius):
+    """An inset (top right, above the outgoing asymptote) around the closest approach, where the main picture is
+    too coarse to show it: the track within 5 max(q, R) of the focus, the primary to scale and the closest
+    approach, in the natural unit of that size."""
+    half = 5 * max(q, radius)
+    unit = _length_unit(half)
+    scale, unit_text = u.m.to(unit), display.unit_text(unit)
+    if body is not None:  # in radii of the primary: small numbers, and its size read off at once
+        scale, unit_text = 1.0 / body.radius, f"{body.name} radii"
+    inset = ax.inset_axes([0.66, 0.66, 0.31, 0.31])
+    x, y = _conic_points(p, e, 1.5 * half)
+    inset.plot(x * scale, y * scale, color="C0", lw=1.2)
+    if body is not None:
+        import matplotlib.patches as mpatches
+
+        inset.add_patch(mpatches.Circle((0, 0), body.radius * scale, facecolor=_primary_color(body),
+                                        edgecolor="0.4", alpha=0.8))
+    inset.plot(q * scale, 0, marker="o", ms=4, color="C3", ls="none")
+    inset.set_xlim(-half * scale, half * scale)
+    inset.set_ylim(-half * scale, half * scale)
+    inset.set_aspect("equal")
+    inset.tick_params(labelsize="x-small")
+    inset.set_title(f"near closest approach [{unit_text}]", fontsize="x-small")
 
 
 def collision_note(flyby: "Flyby") -> str | None:
@@ -665,7 +701,7 @@ def binary_sky(binary: "Binary", ax: Any = None, distance: u.Quantity | None = N
     track, _ = sky(np.linspace(-np.pi, np.pi, samples))
     east, north = track[..., 1] * scale, track[..., 0] * scale
     ax.plot(east, north, color="C0", lw=1.5, label="apparent orbit of star 2")
-    ax.plot(0, 0, marker="*", ms=14, color="orange", ls="none", label="star 1")
+    ax.plot(0, 0, marker="*", ms=14, color="gold", mec="0.3", ls="none", label="star 1")
     reach = 1.15 * np.max(np.hypot(east, north))
     node = np.array([np.sin(raan), np.cos(raan)]) * reach  # (east, north) along position angle Omega
     ax.plot([-node[0], node[0]], [-node[1], node[1]], color="gray", ls="--", lw=1, gid="line of nodes",
@@ -687,7 +723,7 @@ def binary_sky(binary: "Binary", ax: Any = None, distance: u.Quantity | None = N
                 xytext=(now_r[1] * scale, now_r[0] * scale), arrowprops=dict(arrowstyle="->", color="k"))
     ax.set_aspect("equal", adjustable="datalim")
     ax.invert_xaxis()  # east to the left, as the sky is seen
-    text = unit.to_string()
+    text = display.unit_text(unit)
     ax.set_xlabel(f"east offset [{text}] (east to the left)")
     ax.set_ylabel(f"north offset [{text}]")
     ax.set_title(f"i = {np.degrees(inc):.4g} deg, Omega = {np.degrees(raan):.4g} deg, "
@@ -808,7 +844,7 @@ def distance_curves(cosmology: "Cosmology", z_max: float = 10.0, ax: Any = None,
     for k, (label, distance) in enumerate(curves.items()):
         ax.loglog(z, distance.to_value(unit), color=f"C{k}", label=label)
     ax.set_xlabel("redshift z")
-    ax.set_ylabel(f"distance [{unit.to_string()}]")
+    ax.set_ylabel(f"distance [{display.unit_text(unit)}]")
     ax.grid(alpha=0.3, which="both")
     _legend_outside(ax)
     return fig, ax
@@ -993,7 +1029,7 @@ def ring_snapshots(times: np.ndarray, positions: np.ndarray, growth_rate: float,
         x, y = c * ring[k, :, 0] + s * ring[k, :, 1], -s * ring[k, :, 0] + c * ring[k, :, 1]
         ax.plot(x, y, marker="o", ms=5, ls="none", color="C0", gid="bodies")
         if first_body:
-            ax.plot(positions[k, 0, 0], positions[k, 0, 1], marker="*", ms=10, color="orange", ls="none")
+            ax.plot(positions[k, 0, 0], positions[k, 0, 1], marker="*", ms=10, color="gold", mec="0.3", ls="none")
         top.plot(times[k], max(deviations[k], 1e-17), marker="v", color="k", ls="none", gid="snapshot")
         ax.set_title(f"t = {times[k]:.3g}\ndeviation {deviations[k]:.1e}", fontsize="small")
         ax.set_aspect("equal")

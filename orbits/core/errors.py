@@ -33,3 +33,8 @@ class UnknownNameError(OrbitDomainError, KeyError):
 
     def __str__(self) -> str:
         return str(self.args[0]) if self.args else ""
+
+
+class OrbitsWarning(UserWarning):
+    """Base class of the warnings orbits gives on purpose: the answer stands, but something about it needs saying
+    (a picture whose closest approach lies inside a body). The command line prints each as one line."""

@@ -29,13 +29,13 @@ def labels(ax):
 def test_ellipse_in_its_plane_marks_foci_apsides_and_positions():
     orbit = Orbit.from_elements("Sun", a=1 * u.AU, e=0.6, nu=40 * u.deg)
     fig, ax = orbit_plane(orbit, times=[30, 60] * u.day)
-    assert {"star (focus)", "periapsis", "apoapsis", "centre", "empty focus", "body now",
-            "body at given times"} <= labels(ax)
+    assert {"periapsis", "apoapsis", "centre", "empty focus", "body now", "body at given times"} <= labels(ax)
+    assert any(label.startswith("Sun (star not to scale") for label in labels(ax))  # named, not "star (focus)"
     assert "[AU]" in ax.get_xlabel() and "[AU]" in ax.get_ylabel()
     curve = ax.get_lines()[0].get_xydata()
     assert curve[:, 0].max() == pytest.approx(0.4, rel=1e-9)  # periapsis q = a (1 - e) on +x
     assert curve[:, 0].min() == pytest.approx(-1.6, rel=1e-9)  # apoapsis at -a (1 + e)
-    apo = [line for line in ax.get_lines() if line.get_label() == "apoapsis"][0].get_xydata()[0]
+    apo = [line for line in ax.get_lines() if line.get_gid() == "apoapsis"][0].get_xydata()[0]
     assert tuple(apo) == pytest.approx((-1.6, 0.0))
     later = [line for line in ax.get_lines() if line.get_label() == "body at given times"][0].get_xydata()
     radii = np.hypot(later[:, 0], later[:, 1])
@@ -49,6 +49,22 @@ def test_hyperbola_is_drawn_around_the_encounter_in_km():
     assert "[km]" in ax.get_xlabel() and "apoapsis" not in labels(ax)
     curve = ax.get_lines()[0].get_xydata()
     assert np.max(np.hypot(curve[:, 0], curve[:, 1])) == pytest.approx(70000, rel=1e-6)  # 10 q
+
+
+def test_orbit_plane_of_a_circle_a_comet_and_an_orbit_inside_its_primary():
+    """No apsides, centre or empty focus on a circle; a near-parabolic comet is drawn out to 10 q, not as a line a
+    million AU long; a periapsis inside the Earth warns and says so in the title; the Earth drawn to scale."""
+    from orbits.plot import InsideBodyWarning
+
+    _, ax = orbit_plane(Orbit.from_elements("Earth", a=42164 * u.km, e=0.0))
+    assert not {"periapsis", "apoapsis", "centre", "empty focus"} & labels(ax)
+    assert any(p.get_label() == "Earth (to scale)" for p in ax.patches)
+    _, ax = orbit_plane(Orbit.from_elements("Sun", q=0.5 * u.AU, e=0.999999))
+    track = ax.get_lines()[0].get_xydata()
+    assert np.max(np.hypot(track[:, 0], track[:, 1])) == pytest.approx(5.0, rel=1e-6)  # 10 q, in AU
+    with pytest.warns(InsideBodyWarning, match="closest approach 6000 km is inside Earth"):
+        _, ax = orbit_plane(Orbit.from_elements("Earth", q=6000 * u.km, e=0.5))
+    assert "inside Earth" in ax.get_title()
 
 
 def test_orbit_plane_refuses_arrays_of_orbits():
@@ -95,17 +111,18 @@ def test_flyby_plane_draws_asymptotes_and_the_impact_parameter():
     _, ax = flyby_plane(flyby)
     lines = {line.get_label(): line.get_xydata() for line in ax.get_lines()}
     assert {"incoming asymptote", "outgoing asymptote"} <= set(lines)
+    assert ax.get_xlabel() == "x toward closest approach [10^6 km]"  # not km with an offset "1e6" on the axis
     jupiter = [patch for patch in ax.patches if patch.get_label() == "Jupiter (to scale)"][0]
-    assert jupiter.get_radius() == pytest.approx(71492, rel=1e-12)  # km: the primary drawn to scale
+    assert jupiter.get_radius() == pytest.approx(71492e-6, rel=1e-12)  # the primary drawn to scale
     segment = [xy for name, xy in lines.items() if name.startswith("impact parameter")][0]
-    assert np.hypot(*segment[1]) == pytest.approx(flyby.impact_parameter.to_value(u.km), rel=1e-12)
+    assert np.hypot(*segment[1]) == pytest.approx(flyby.impact_parameter.to_value(u.km) * 1e-6, rel=1e-12)
     incoming = lines["incoming asymptote"]
     direction = incoming[1] - incoming[0]
     foot = segment[1]
     assert abs(np.dot(direction, foot)) < 1e-9 * np.linalg.norm(direction) * np.linalg.norm(foot)  # b is perpendicular
     assert "144.66 deg" in ax.get_title()
     closest = [xy for name, xy in lines.items() if name.startswith("closest approach")][0]
-    assert closest[0, 0] == pytest.approx(200_000, rel=1e-12)
+    assert closest[0, 0] == pytest.approx(200_000e-6, rel=1e-12)
 
 
 def test_binary_plane_keeps_the_centre_of_mass_on_the_joining_line():
