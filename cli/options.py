@@ -24,7 +24,8 @@ class Format(StrEnum):
 
 FormatOption = Annotated[Format, typer.Option("--format", help="table or json ({name: {value, unit}})")]
 OnlyOption = Annotated[
-    str | None, typer.Option("--only", help="comma-separated quantity names, e.g. period,semi_major_axis")
+    str | None, typer.Option("--only", help="comma-separated names of the quantities to show, as the table or JSON "
+                             "names them (an unknown name lists the known ones)")
 ]
 
 

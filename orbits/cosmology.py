@@ -180,7 +180,7 @@ class Cosmology(display.Displayed):
     def big_crunch_time(self) -> u.Quantity:
         """t (s) of the big crunch (a = 0 again), twice the turnaround time; inf if the universe never recollapses.
 
-        Matter and curvature only (Omega_m > 1): pi Omega_m / (H0 (Omega_m - 1)**1.5), to 4e-16
+        Matter and curvature only (Omega_m > 1): pi Omega_m / (H0 (Omega_m - 1)**1.5) in closed form, to 1.7e-16
         (tests/core/test_cosmology.py)."""
         return self.model.crunch_age * self._t_h << units.S
 
@@ -253,7 +253,20 @@ class Cosmology(display.Displayed):
     # ---- quantities at a time -----------------------------------------------------------------
     def scale_factor(self, t: u.Quantity) -> u.Quantity:
         """a(t) (dimensionless) at time t (time) after the big bang; (1.5 H0 t)**(2/3) for Einstein-de Sitter."""
-        return self.model.scale_factor(_cosmic_time(t), self._t_h) << u.one
+        return self.model.scale_factor(self._time(t), self._t_h) << u.one
+
+    def _time(self, t):
+        """t (s) after the big bang (_cosmic_time), refused, quoted in the unit it was given, after a big crunch."""
+        seconds = _cosmic_time(t)
+        crunch = self.big_crunch_time
+        late = seconds > crunch.to_value(units.S) * (1 + 4 * np.finfo(float).eps)  # the crunch itself is a = 0
+        if np.any(late):
+            value = np.ravel(t)[np.ravel(late)][0]
+            at = f"{crunch.to(value.unit):.7g}"
+            raise OrbitDomainError(
+                f"time since the big bang t = {value} is outside [0, {at}]: this universe stops expanding at a = "
+                f"{self.model.max_scale_factor:.7g} and recollapses to a big crunch at t = {at}")
+        return seconds
 
     def redshift(self, t: u.Quantity) -> u.Quantity:
         """z = 1 / a(t) - 1 (dimensionless) of light emitted at time t (time) after the big bang."""
@@ -261,7 +274,7 @@ class Cosmology(display.Displayed):
 
     def expansion_rate(self, t: u.Quantity) -> u.Quantity:
         """H(t) = (da/dt) / a (1/s) at time t (time) after the big bang: negative while a universe recollapses."""
-        seconds = _cosmic_time(t)
+        seconds = self._time(t)
         h = self.hubble_parameter(self.redshift(t)).to_value(PER_S)
         return np.where(seconds > self.turnaround_time.to_value(units.S), -h, h) << PER_S
 
@@ -288,8 +301,12 @@ class Cosmology(display.Displayed):
         or `only` those names (QUANTITY_NAMES)."""
         if z is not None and t is not None:
             raise TypeError("give the epoch as a redshift z or a time t, not both")
-        contracting = t is not None and np.any(_cosmic_time(t) > self.turnaround_time.to_value(units.S))
-        names = (CONTRACTING_NAMES if contracting else QUANTITY_NAMES) if only is None else list(only)
+        contracting = t is not None and np.any(self._time(t) > self.turnaround_time.to_value(units.S))
+        if only is None:
+            names = [name for name in (CONTRACTING_NAMES if contracting else QUANTITY_NAMES)
+                     if name not in FATE_NAMES or np.isfinite(getattr(self, name).value)]  # only a closed one's
+        else:
+            names = list(only)
         check_names(names, QUANTITY_NAMES)
         if contracting and set(names) - set(CONTRACTING_NAMES):
             raise OrbitDomainError(
@@ -311,7 +328,7 @@ class Cosmology(display.Displayed):
 
     def _at(self, name, z):
         """One QUANTITY_NAMES entry at redshift z."""
-        if name in ("hubble_time", "hubble_distance"):
+        if name in ("hubble_time", "hubble_distance", *FATE_NAMES):
             return getattr(self, name)
         return getattr(self, name)(z)
 
@@ -331,10 +348,14 @@ QUANTITY_NAMES = [
     "density_parameter",
     "hubble_time",
     "hubble_distance",
+    "turnaround_time",
+    "big_crunch_time",
 ]
+#: the times of a recollapsing universe's turnaround and big crunch: listed by default only when finite
+FATE_NAMES = ("turnaround_time", "big_crunch_time")
 #: what quantities(t=...) gives after the turnaround of a recollapsing universe (functions of a and t alone)
 CONTRACTING_NAMES = ["scale_factor", "redshift", "age", "lookback_time", "hubble_parameter", "critical_density",
-                     "density_parameter", "hubble_time", "hubble_distance"]
+                     "density_parameter", "hubble_time", "hubble_distance", *FATE_NAMES]
 
 #: Planck 2018 (A&A 641, A6, table 2, TT,TE,EE+lowE+lensing+BAO), as in astropy.cosmology.Planck18
 PLANCK18_H0 = 67.66  # km/s/Mpc

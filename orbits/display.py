@@ -9,6 +9,8 @@ A quantity is shown in the natural unit for its kind and size, the largest finit
     speed     km/s from 1 km/s, m/s below (a projectile, a radial-velocity curve); GM in km3 / s2; specific
               energy in km2 / s2; h and dA/dt in km2 / s
     rate      km / s / Mpc for a Hubble parameter; otherwise 1 / (the natural time unit of 1 / rate)
+    mass      kg below 1e20 kg, Earth masses below 0.1 M_jup, Jupiter masses below 0.05 M_sun, solar masses beyond
+    volume    m3 below 1e9 m3, km3 below (1e5 pc)**3, Mpc3 below (1 Gpc)**3, Gpc3 beyond
 
 with DIGITS significant digits. `system="si"` shows SI units instead, and `overrides` fixes the unit of a named
 quantity. JSON is not display: it carries the exact float64 value in SI (orbits_cli.render). Numbers never show
@@ -31,6 +33,11 @@ _LENGTHS = [(1e3, u.m), (1e10, u.km), (1e5 * u.AU.to(u.m), u.AU), (1e5 * u.pc.to
 _TIMES = [(120.0, u.s), (7200.0, u.min), (172800.0, u.h), (1000 * 86400.0, u.day), (1e7 * u.yr.to(u.s), u.yr),
           (math.inf, u.Gyr)]
 _HUBBLE = u.km / u.s / u.Mpc
+#: units shown by their astronomers' names rather than astropy's (solMass)
+_NAMED = {u.M_sun: "M_sun", u.M_jup: "M_jup", u.M_earth: "M_earth"}
+_MASSES = [(1e20, u.kg), (0.1 * u.M_jup.to(u.kg), u.M_earth), (0.05 * u.M_sun.to(u.kg), u.M_jup), (math.inf, u.M_sun)]
+_VOLUMES = [(1e9, u.m**3), ((1e5 * u.pc.to(u.m)) ** 3, u.km**3), ((1e3 * u.Mpc.to(u.m)) ** 3, u.Mpc**3),
+            (math.inf, u.Gpc**3)]
 _FIXED = [  # (SI unit, natural unit), tried in order after lengths, times, angles, rates and speeds
     (u.m**3 / u.s**2, u.km**3 / u.s**2),
     (u.m**2 / u.s**2, u.km**2 / u.s**2),
@@ -71,6 +78,10 @@ def natural_unit(q: u.Quantity, name: str = "") -> u.UnitBase:
         return _rung(1.0 / rate if rate > 0 else 0.0, _TIMES) ** -1
     if unit.is_equivalent(u.m / u.s):
         return u.km / u.s if _size(q, u.m / u.s) >= 1e3 else u.m / u.s
+    if unit.is_equivalent(u.kg):
+        return _rung(_size(q, u.kg), _MASSES)
+    if unit.is_equivalent(u.m**3):
+        return _rung(_size(q, u.m**3), _VOLUMES)
     for si, natural in _FIXED:
         if unit.is_equivalent(si):
             return natural
@@ -126,6 +137,8 @@ def unit_text(unit: u.UnitBase) -> str:
     """The unit as people write it ("km / s", "deg", "10^6 km" for a scaled axis unit, "" for a pure number)."""
     if unit == u.one:
         return ""
+    if unit in _NAMED:
+        return _NAMED[unit]
     if isinstance(unit, u.CompositeUnit) and unit.scale != 1 and len(unit.bases) == 1 and unit.powers == [1]:
         return f"10^{round(math.log10(unit.scale))} {unit.bases[0].to_string()}"
     return unit.to_string()

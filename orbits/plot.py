@@ -5,6 +5,7 @@ restyled; axis labels carry units. `save(fig, path)` writes PNG, SVG or PDF atom
 """
 
 import io
+import math
 from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -813,14 +814,18 @@ def _redshift_grid(z_max, samples):
 
 
 def hubble_diagram(
-    models: dict[str, "Cosmology"], z_max: float = 10.0, ax: Any = None, samples: int = 300
+    models: dict[str, "Cosmology"], z_max: float = 10.0, ax: Any = None, samples: int = 300,
+    emphasis: str | None = None,
 ) -> tuple[Any, Any]:
     """The Hubble diagram: distance modulus mu = 5 log10(D_L / 10 pc) against redshift (log axis) for
-    {label: Cosmology}, from z = 1e-3 to z_max."""
+    {label: Cosmology}, from z = 1e-3 to z_max; the model labelled `emphasis` is drawn last, thick and black, so
+    that no reference curve hides it."""
     fig, ax = _axes(ax)
     z = _redshift_grid(z_max, samples)
-    for k, (label, model) in enumerate(models.items()):
-        ax.plot(z, model.distance_modulus(z).to_value(u.one), color=f"C{k}", label=label)
+    order = [label for label in models if label != emphasis] + ([emphasis] if emphasis in models else [])
+    for k, label in enumerate(order):
+        style = dict(color="k", lw=2.6, zorder=3) if label == emphasis else dict(color=f"C{k}", lw=1.4)
+        ax.plot(z, models[label].distance_modulus(z).to_value(u.one), label=label, **style)
     ax.set_xscale("log")
     ax.set_xlabel("redshift z")
     ax.set_ylabel("distance modulus m - M [mag]")
@@ -837,7 +842,7 @@ def distance_curves(cosmology: "Cosmology", z_max: float = 10.0, ax: Any = None,
     z = _redshift_grid(z_max, samples)
     curves = {
         "luminosity distance D_L": cosmology.luminosity_distance(z),
-        "comoving distance D_M": cosmology.transverse_comoving_distance(z),
+        "transverse comoving distance D_M": cosmology.transverse_comoving_distance(z),
         "angular-diameter distance D_A": cosmology.angular_diameter_distance(z),
     }
     unit = u.Mpc
@@ -860,16 +865,44 @@ def cosmology_overview(cosmology: "Cosmology", label: str, z_max: float = 10.0) 
 
     fig, axes = plt.subplots(1, 3, figsize=(15, 5.2), layout="constrained")
     crunch = cosmology.big_crunch_time
-    t_max = crunch if np.isfinite(crunch) else 2 * cosmology.age()
-    scale_factor_curves({"a(t)": cosmology}, t_max.to(display.axis_unit(t_max)), ax=axes[0])
+    if np.isfinite(cosmology.age()):
+        t_max = crunch if np.isfinite(crunch) else 2 * cosmology.age()
+        scale_factor_curves({"a(t)": cosmology}, t_max.to(display.axis_unit(t_max)), ax=axes[0])
+    else:  # no big bang (de Sitter): a against the time from today, from z_max to a = 10
+        _scale_factor_from_today(cosmology, z_max, axes[0])
     distance_curves(cosmology, z_max, ax=axes[1])
     references = {
         "Planck 2018 (flat, no radiation)": Cosmology.planck18(),
         "Einstein-de Sitter, same H0": Cosmology.einstein_de_sitter(cosmology.hubble_constant),
     }
-    hubble_diagram({"this universe": cosmology, **references}, z_max, ax=axes[2])
+    same = [name for name, other in references.items() if _same_universe(other, cosmology)]
+    models = {"this universe" + (f" (= {same[0]})" if same else ""): cosmology,
+              **{name: other for name, other in references.items() if name not in same}}
+    hubble_diagram(models, z_max, ax=axes[2], emphasis=next(iter(models)))
     fig.suptitle(label)
     return fig, axes
+
+
+def _same_universe(one: "Cosmology", other: "Cosmology") -> bool:
+    """Whether two Cosmology objects have the same H0 and density parameters (to 1e-12)."""
+    fields = ("h0", "omega_m", "omega_r", "omega_k", "omega_l")
+    return all(math.isclose(getattr(one, f), getattr(other, f), rel_tol=1e-12, abs_tol=1e-15) for f in fields)
+
+
+def _scale_factor_from_today(cosmology: "Cosmology", z_max: float, ax: Any) -> None:
+    """a = 1 / (1 + z) against t - t0 = -lookback time(z), from z_max to a = 10 (z = -0.9): the a(t) panel of a
+    universe with no big bang, whose age is infinite."""
+    z = np.concatenate([np.geomspace(z_max, 1e-3, 200), [0.0], -np.geomspace(1e-3, 0.9, 200)])
+    time = -cosmology.lookback_time(z)
+    unit = display.axis_unit(np.max(np.abs(time)))
+    ax.plot(time.to_value(unit), 1.0 / (1.0 + z), color="C0", label="a(t): no big bang, infinite age")
+    ax.axhline(1.0, color="gray", lw=0.8, ls=":", label="today, a = 1")
+    ax.axvline(0.0, color="gray", lw=0.8, ls=":")
+    ax.set_yscale("log")
+    ax.set_xlabel(f"time from today [{display.unit_text(unit)}]")
+    ax.set_ylabel("scale factor a [dimensionless]")
+    ax.grid(alpha=0.3, which="both")
+    _legend_outside(ax)
 
 
 def lagrange_plane(

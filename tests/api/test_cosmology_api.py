@@ -21,7 +21,10 @@ import orbits.cosmology
 from orbits import Cosmology, ExpandingSphere, OrbitDomainError
 
 KM_S_MPC = u.km / u.s / u.Mpc
-ASTROPY_RTOL = 1e-10  # the bar; measured worst 1e-13 (EdS, flat) and 4e-15 (quadrature models)
+#: astropy's own numerical error sets how close it comes (ours is within 4e-16 of mpmath: tests/core/test_cosmology.py):
+#: bounds 10x the worst measured over Z, per model - EdS 6.3e-14 (its lookback time), flat matter + Lambda 6.3e-13
+#: (its comoving distance), Planck 2018 with massless neutrinos 1.4e-13 (its age), curved 3.4e-12 (its age quadrature)
+ASTROPY_RTOL = {"eds": 7e-13, "flat": 7e-12, "planck": 1.5e-12, "curved": 4e-11}
 Z = np.array([1e-3, 0.01, 0.1, 0.5, 1.0, 2.0, 5.0, 10.0, 100.0, 1e3, 1e4])
 
 
@@ -92,14 +95,14 @@ def relative_errors(ours, reference, z):
 def test_eds_matches_astropy_flat_lambda_cdm_with_om0_1():
     H0 = 67.66 * KM_S_MPC
     errors = relative_errors(Cosmology.einstein_de_sitter(H0), FlatLambdaCDM(H0, Om0=1.0, Tcmb0=0), Z)
-    assert max(errors.values()) <= ASTROPY_RTOL, errors
+    assert max(errors.values()) <= ASTROPY_RTOL["eds"], errors
 
 
 def test_flat_matter_lambda_matches_astropy():
     H0, om = 67.66 * KM_S_MPC, 0.30966
     ours = Cosmology.from_densities(H0, Om0=om)
     errors = relative_errors(ours, FlatLambdaCDM(H0, Om0=om, Tcmb0=0), Z)
-    assert ours.method == "flat_matter_lambda" and max(errors.values()) <= ASTROPY_RTOL, errors
+    assert ours.method == "flat_matter_lambda" and max(errors.values()) <= ASTROPY_RTOL["flat"], errors
 
 
 def test_planck18_with_massless_neutrinos_matches_astropy():
@@ -110,9 +113,9 @@ def test_planck18_with_massless_neutrinos_matches_astropy():
         planck.H0, Om0=planck.Om0, Ol0=planck.Ode0, Or0=planck.Ogamma0 + planck.Onu0, Ok0=planck.Ok0
     )
     errors = relative_errors(ours, planck, Z[Z <= 10])
-    assert ours.method == "quadrature" and max(errors.values()) <= ASTROPY_RTOL, errors
+    assert ours.method == "quadrature" and max(errors.values()) <= ASTROPY_RTOL["planck"], errors
     distances = relative_errors(ours, planck, Z)
-    assert max(distances["comoving_distance"], distances["lookback_time"]) <= ASTROPY_RTOL, distances
+    assert max(distances["comoving_distance"], distances["lookback_time"]) <= ASTROPY_RTOL["planck"], distances
     assert round(ours.age().to_value(u.Gyr), 3) == round(planck.age(0).to_value(u.Gyr), 3) == 13.804
 
 
@@ -121,7 +124,7 @@ def test_curved_lambda_cdm_matches_astropy(ode0):
     H0 = 70 * KM_S_MPC
     ours = Cosmology.from_densities(H0, Om0=0.3, Ol0=ode0)
     errors = relative_errors(ours, LambdaCDM(H0, Om0=0.3, Ode0=ode0, Tcmb0=0), Z[Z <= 10])
-    assert max(errors.values()) <= ASTROPY_RTOL, errors
+    assert max(errors.values()) <= ASTROPY_RTOL["curved"], errors
 
 
 def distance_errors(ours, reference, z):
