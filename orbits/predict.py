@@ -99,12 +99,18 @@ def period_of(scene: "Scene", i: int) -> float:
     return float(twobody.period(orbit.p, orbit.e, _pair(scene, i)[1]))
 
 
+def periapsis_time(scene: "Scene", i: int) -> float:
+    """t_p (s): when body i passes the periapsis of its relative orbit nearest to t = 0 (within half a period on an
+    ellipse; an open orbit has one), minus the time since periapsis at t = 0: negative when the body starts past
+    periapsis (nu > 0), positive when before it."""
+    orbit = scene.bodies[i].orbit
+    return -float(anomalies.time_since_periapsis(orbit.nu, orbit.p, orbit.e, _pair(scene, i)[1]))
+
+
 def closest_approach_of(scene: "Scene", i: int) -> tuple[float, float]:
     """(q, t_p): periapsis distance (m) and the time (s) of the next periapsis passage of body i."""
     orbit = scene.bodies[i].orbit
-    mu = _pair(scene, i)[1]
-    since = float(anomalies.time_since_periapsis(orbit.nu, orbit.p, orbit.e, mu))
-    t_p = -since
+    t_p = periapsis_time(scene, i)
     if t_p < 0 and orbit.e < 1:
         t_p += period_of(scene, i)
     if t_p <= 0 or t_p > scene.times[-1]:

@@ -50,9 +50,9 @@ def command(
     if output:
         write_atomic(output, render.dumps(data) + "\n")
     if plot:
-        from orbits.plot import validation_residuals
+        from orbits.plot import validation_overview
 
-        save_plot(lambda: validation_residuals(report), plot)
+        save_plot(lambda: validation_overview(report), plot)
     if fmt == Format.json:
         print(render.dumps(data))
     else:

@@ -39,7 +39,8 @@ class ModelScene:
     """A validation problem in code units with the model's predictions.
 
     `expected` holds (K, N, 3) positions at problem.times (or None); position errors are quoted relative to
-    `length`. `checks(times, positions, velocities)` returns the model's Measurements on one backend's trajectory.
+    `length`; `period` is the period of the scene's motion in code time units (None when nothing orbits).
+    `checks(times, positions, velocities)` returns the model's Measurements on one backend's trajectory.
     """
 
     name: str
@@ -51,16 +52,13 @@ class ModelScene:
     predict_seconds: float = 0.0
     checks: Callable[[np.ndarray, np.ndarray, np.ndarray], list[Measurement]] | None = None
     code_units: CodeUnits = CODE
+    #: the orbital period of the scene's motion in code time units (None when nothing orbits)
+    period: float | None = None
 
 
 @plan.register
 def _plan_model_scene(model: ModelScene) -> Plan:
     """The Plan of a model scene: its problem as built, residuals against `expected`, its own measurements."""
-    residuals = None
-    if model.expected is not None:
-        def residuals(trajectory: Trajectory) -> np.ndarray:
-            return np.max(np.linalg.norm(trajectory.positions - model.expected, axis=-1), axis=-1) / model.length
-
     def measure(trajectory: Trajectory) -> list[Measurement]:
         if model.checks is None:
             return []
@@ -68,8 +66,9 @@ def _plan_model_scene(model: ModelScene) -> Plan:
 
     return Plan(
         name=model.name, description=model.description, problem=model.problem, code_units=model.code_units,
-        predict_seconds=model.predict_seconds, residual_times=model.problem.times, residuals=residuals,
-        measure=measure, positions_tolerance=model.tolerance.get("positions", 0.0),
+        predict_seconds=model.predict_seconds, residual_times=model.problem.times, expected=model.expected,
+        measure=measure, positions_tolerance=model.tolerance.get("positions", 0.0), length_scale=model.length,
+        period=model.period, in_code_units=model.code_units == CODE,
         agreement_tolerance=model.tolerance.get("agreement"),
     )
 
@@ -138,7 +137,8 @@ def _lagrange_stable(periods=100, outputs=400):
         return rows
 
     return ModelScene("lagrange_L4_L5", f"Test particles at the Earth-Moon L4 and L5 points (mu = {mu:.6g}) for "
-                      f"{periods} periods: they stay put", problem, None, 1.0, {}, seconds, checks)
+                      f"{periods} periods: they stay put", problem, None, 1.0, {}, seconds, checks,
+                      period=2 * np.pi)
 
 
 def _lagrange_unstable(mass_ratio=None, points=("L1", "L2", "L3"), offset=1e-10, outputs=600):
@@ -178,7 +178,8 @@ def _lagrange_unstable(mass_ratio=None, points=("L1", "L2", "L3"), offset=1e-10,
     label = "Earth-Moon" if mass_ratio is None else f"mu = {mu:g}"
     return ModelScene("lagrange_unstable" if mass_ratio is None else "lagrange_beyond_routh",
                       f"Test particles {offset:g} off the {label} {', '.join(points)} points along the growing mode: "
-                      f"they depart at the rate of the linearised motion", problem, None, 1.0, {}, seconds, checks)
+                      f"they depart at the rate of the linearised motion", problem, None, 1.0, {}, seconds, checks,
+                      period=2 * np.pi)
 
 
 def _jacobi_drift(expectation, positions, velocities):
@@ -207,7 +208,7 @@ def _ring(n=5, outputs=400):
 
     return ModelScene(f"ring_{n}", f"A ring of {n} equal masses (XXIII): round-off (1e-16) grows at the predicted "
                       f"rate {expected.growth_rate:.4g} / time unit to a 1e-3 break-up at t = "
-                      f"{expected.breakup_time:.4g}", problem, None, 1.0, {}, seconds, checks)
+                      f"{expected.breakup_time:.4g}", problem, None, 1.0, {}, seconds, checks, period=2 * np.pi)
 
 
 def _ring_builder(n):

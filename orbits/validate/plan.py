@@ -85,10 +85,12 @@ class Measurement:
 class Plan:
     """Everything the run needs to validate one scene.
 
-    `problem` is posed in code units; `residuals(trajectory)` gives the (K,) position error at `residual_times`
-    relative to the scene's length scale (None when positions are not predicted); `measure(trajectory)` gives the
-    scene's other Measurements, in the same order for every backend; `agreement_tolerance` asks for the
-    backends' mutual agreement to be checked too.
+    `problem` is posed in code units. When positions are predicted, `expected` holds them (K, N, 3) at
+    `residual_times`, in the scene's units (those of CodeUnits.trajectory), `outputs` the indices of those times
+    among the problem's outputs (None: all of them), and position errors are quoted relative to `length_scale`.
+    `measure(trajectory)` gives the scene's other Measurements, in the same order for every backend;
+    `agreement_tolerance` asks for the backends' mutual agreement to be checked too. `period` is the scene's own
+    orbital period in the units of `residual_times` (None for a scene of open orbits): pictures count time in it.
     """
 
     name: str
@@ -97,12 +99,28 @@ class Plan:
     code_units: CodeUnits
     predict_seconds: float
     residual_times: np.ndarray
-    residuals: Callable[[Trajectory], np.ndarray] | None
+    expected: np.ndarray | None
     measure: Callable[[Trajectory], list[Measurement]]
     positions_tolerance: float
+    length_scale: float = 1.0
+    outputs: np.ndarray | None = None
+    period: float | None = None
+    #: predicted (M, N, 3) positions densely over one period of the first orbit (or the whole run, if shorter or
+    #: open), in the scene's units, to draw the closed form as a curve (None: `expected` is dense enough)
+    outline: np.ndarray | None = None
+    #: True when the scene is posed in code units already (model scenes): its lengths and times carry no SI unit
+    in_code_units: bool = False
     #: when set, the backends' trajectories are also compared with each other: the largest |r_a - r_b| / |r_b|
     #: of any body at any output must stay below it
     agreement_tolerance: float | None = None
+
+    def positions_at_residual_times(self, trajectory: Trajectory) -> np.ndarray:
+        """A backend's (K, N, 3) positions at `residual_times`, in the scene's units."""
+        return trajectory.positions if self.outputs is None else trajectory.positions[self.outputs]
+
+    def residuals(self, positions: np.ndarray) -> np.ndarray:
+        """(K,) position error max_bodies |r - r_expected| / length_scale of positions at `residual_times`."""
+        return np.max(np.linalg.norm(positions - self.expected, axis=-1), axis=-1) / self.length_scale
 
 
 @functools.singledispatch

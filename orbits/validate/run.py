@@ -55,7 +55,16 @@ class Check:
 
 @dataclass(frozen=True)
 class SceneReport:
-    """Checks, wall times (s), pinned settings, versions and time bookkeeping of one validated scene."""
+    """Checks, wall times (s), pinned settings, versions and time bookkeeping of one validated scene.
+
+    Where positions are predicted: `residual_times` (the scene's units: s for a data scene, code units for a
+    model scene), each backend's position error |dr| / length_scale there, the predicted positions `expected`
+    and each backend's `positions` (K, N, 3) at those times, in the scene's units, for pictures, with a dense
+    closed-form `outline` of one period (Plan.outline); `period` is the
+    scene's own orbital period in the units of `residual_times` (None for open orbits); `in_code_units` says a
+    model scene's lengths and times are G = 1 code units, not SI. The positions stay out of
+    to_dict (they are the scene's to recompute); everything else is in it.
+    """
 
     name: str
     description: str
@@ -68,6 +77,11 @@ class SceneReport:
     code_units: CodeUnits
     residual_times: np.ndarray = field(default_factory=lambda: np.zeros(0))
     residuals: dict = field(default_factory=dict)  # backend -> |dr| / r_max at each residual time
+    period: float | None = None
+    in_code_units: bool = False
+    expected: np.ndarray | None = None
+    outline: np.ndarray | None = None
+    positions: dict = field(default_factory=dict)  # backend -> (K, N, 3) positions at the residual times
 
     @property
     def passed(self) -> bool:
@@ -112,7 +126,7 @@ def _scene_dict(report):
         "versions": report.versions, "time_modes": report.time_modes,
         "code_units": {"length_m": report.code_units.length, "gm_m3_s2": report.code_units.gm,
                        "time_s": report.code_units.time},
-        "residual_times_s": report.residual_times.tolist(),
+        "residual_times_s": report.residual_times.tolist(), "period_s": report.period,
         "residuals": {name: series.tolist() for name, series in report.residuals.items()},
     }
 
@@ -132,9 +146,11 @@ def validate_scene(
         except (RuntimeError, FloatingPointError, OverflowError, MemoryError) as err:  # a run that blew up
             failures[name] = f"{type(err).__name__}: {err}".splitlines()[0]
     trajectories = {name: the_plan.code_units.trajectory(result) for name, result in results.items()}
-    checks, residuals = [_failed_run(name, reason, backend_names) for name, reason in failures.items()], {}
-    if the_plan.residuals is not None and trajectories:
-        residuals = {name: the_plan.residuals(t) for name, t in trajectories.items()}
+    checks = [_failed_run(name, reason, backend_names) for name, reason in failures.items()]
+    residuals, positions = {}, {}
+    if the_plan.expected is not None and trajectories:
+        positions = {name: the_plan.positions_at_residual_times(t) for name, t in trajectories.items()}
+        residuals = {name: the_plan.residuals(p) for name, p in positions.items()}
         errors = {name: float(np.max(series)) for name, series in residuals.items()}
         checks.append(Check("positions |dr|/r_max", "", None, errors, errors, the_plan.positions_tolerance,
                             "relative error"))
@@ -152,7 +168,9 @@ def validate_scene(
         time_modes={**{n: r.time_mode for n, r in results.items()}, **{n: f"failed: {failures[n]}" for n in failures}},
         code_units=the_plan.code_units,
         residual_times=the_plan.residual_times if residuals else np.zeros(0),
-        residuals=residuals,
+        residuals=residuals, period=the_plan.period, in_code_units=the_plan.in_code_units,
+        expected=the_plan.expected if residuals else None, outline=the_plan.outline if residuals else None,
+        positions=positions,
     )
 
 

@@ -103,22 +103,45 @@ def _plan_data_scene(scene: Scene) -> Plan:
         analytic_invariants = predict.invariants(scene, *predict.two_body_states(scene, scene.times))
     predict_seconds = prediction.wall_time + time.perf_counter() - start
 
-    residuals = None
-    if prediction.positions is not None:
-        scale = predict.length_scale(scene, prediction.positions)
-
-        def residuals(trajectory: Trajectory) -> np.ndarray:
-            dr = np.linalg.norm(trajectory.positions[at_scene] - prediction.positions, axis=-1)
-            return np.max(dr, axis=-1) / scale
-
     def measure(trajectory: Trajectory) -> list[Measurement]:
         return _measure(scene, prediction, trajectory, at_scene, at_extra, analytic_invariants)
 
+    has_positions = prediction.positions is not None
+    period = _first_period(scene)
     return Plan(
         name=scene.name, description=scene.description, problem=_problem(scene, units, grid), code_units=units,
-        predict_seconds=predict_seconds, residual_times=scene.times, residuals=residuals, measure=measure,
+        predict_seconds=predict_seconds, residual_times=scene.times, expected=prediction.positions, measure=measure,
         positions_tolerance=scene.tolerance["positions"],
+        length_scale=predict.length_scale(scene, prediction.positions) if has_positions else 1.0,
+        outputs=at_scene, period=period, outline=_outline(scene, period) if has_positions else None,
     )
+
+
+#: samples of the drawn closed form (Plan.outline)
+OUTLINE_POINTS = 721
+
+
+def _outline(scene: Scene, period: float | None) -> np.ndarray:
+    """Closed-form (M, N, 3) positions (m): the curve a picture draws the integrated positions on.
+
+    Over one period of the first orbit from a periapsis passage, at evenly spaced eccentric anomalies E (t = t_p +
+    (E - e sin E) T / 2 pi), so an e = 0.9 ellipse is as well drawn at periapsis as at apoapsis; a run shorter
+    than a period, or of an open orbit, evenly in time over the run."""
+    if period is None or scene.times[-1] < period:
+        return predict.two_body_states(scene, np.linspace(0.0, scene.times[-1], OUTLINE_POINTS))[0]
+    first = scene.orbiting[0]
+    e = scene.bodies[first].orbit.e
+    periapsis_time = predict.periapsis_time(scene, first)
+    anomaly = np.linspace(0.0, 2 * np.pi, OUTLINE_POINTS)
+    return predict.two_body_states(scene, periapsis_time + (anomaly - e * np.sin(anomaly)) * period / (2 * np.pi))[0]
+
+
+def _first_period(scene: Scene) -> float | None:
+    """T (s) of the scene's first orbiting body when it is an ellipse (what `periods` counts), else None."""
+    first = next(iter(scene.orbiting), None)
+    if first is None or scene.bodies[first].orbit.e >= 1:
+        return None
+    return predict.period_of(scene, first)
 
 
 def _problem(scene, units, times):

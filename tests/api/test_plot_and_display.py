@@ -72,23 +72,63 @@ def test_orbit_plane_refuses_arrays_of_orbits():
         orbit_plane(Orbit.from_elements("Earth", a=[7000, 8000] * u.km, e=0.1))
 
 
-def test_validation_residuals_one_line_per_scene_and_backend(tmp_path):
-    report = validate([scene.load("circular"), scene.load("flyby")])
-    fig, ax = validation_residuals(report)
-    assert labels(ax) == {"circular: rebound", "circular: heyoka", "flyby: rebound", "flyby: heyoka"}
-    assert ax.get_yscale() == "log" and ax.get_xscale() == "log" and "dimensionless" in ax.get_ylabel()
-    top = max(np.nanmax(line.get_ydata()) for line in ax.get_lines())
-    assert 0 < top < 1e-10
-    circular = [line for line in ax.get_lines() if line.get_label() == "circular: rebound"][0]
-    assert circular.get_xdata()[-1] == pytest.approx(100, rel=1e-9)  # the scene runs 100 orbits of r = L
-    assert "orbits" in ax.get_xlabel()
+@pytest.fixture(scope="module")
+def validated():
+    """Four scenes through both integrators: two of 100 whole orbits, a flyby, the expanding sphere."""
+    from orbits.validate import load
+
+    return validate([load(name) for name in ("circular", "eccentric", "flyby", "expanding_universe")])
+
+
+def test_validation_residuals_count_time_in_each_scenes_own_period(validated, tmp_path):
+    fig, axes = validation_residuals(validated)
+    closed, passages = axes
+    assert labels(closed) == {f"{name}: {b}" for name in ("circular", "eccentric") for b in ("rebound", "heyoka")}
+    assert labels(passages) == {f"{name}: {b}" for name in ("flyby", "expanding_universe")
+                                for b in ("rebound", "heyoka")}
+    assert closed.get_xscale() == "log" and closed.get_yscale() == "log" and "dimensionless" in closed.get_ylabel()
+    for name in ("circular", "eccentric"):  # both scenes run 100 periods of their own orbit (a = 1 AU, r = 7000 km)
+        line = [line for line in closed.get_lines() if line.get_label() == f"{name}: rebound"][0]
+        assert line.get_xdata()[-1] == pytest.approx(100, rel=1e-13)  # measured 0 and 1.4e-16
+    assert "periods" in closed.get_xlabel() and "fraction of the run" in passages.get_xlabel()
+    flyby = [line for line in passages.get_lines() if line.get_label() == "flyby: heyoka"][0]
+    assert flyby.get_xdata()[-1] == 1.0 and flyby.get_xdata()[0] == pytest.approx(1 / 200)
+    top = max(np.nanmax(line.get_ydata()) for ax in axes for line in ax.get_lines())
+    assert 0 < top < 3e-10  # measured 3.0e-11 (eccentric, heyoka)
     fig.canvas.draw()
-    assert ax.get_legend().get_window_extent().x0 >= ax.get_window_extent().x1  # the legend is off the data
+    for ax in axes:  # each legend lies below its panel, off the data
+        assert ax.get_legend().get_window_extent().y1 <= ax.get_window_extent().y0
     for suffix in ("png", "svg", "pdf"):
         save(fig, tmp_path / f"r.{suffix}")
         assert (tmp_path / f"r.{suffix}").stat().st_size > 1000
     with pytest.raises(ValueError, match=".png, .svg or .pdf"):
         save(fig, tmp_path / "r.gif")
+
+
+def test_validation_tracks_draw_the_integrations_on_the_closed_form(validated):
+    from orbits.plot import validation_tracks
+
+    _, panels = validation_tracks(validated)
+    assert [ax.get_title().split("\n")[0] for ax in panels] == ["circular", "eccentric", "flyby",
+                                                                  "expanding_universe"]
+    circular, eccentric, flyby, _ = panels
+    curve = next(line for line in circular.get_lines() if line.get_label() == "closed form").get_xydata()
+    assert np.hypot(*curve.T) == pytest.approx(7000.0, rel=1e-13)  # the 7000 km circle face on, in km: 3.2e-15
+    ellipse = next(line for line in eccentric.get_lines() if line.get_label() == "closed form").get_xydata()
+    distance = np.hypot(*ellipse.T)  # from the Sun: sampled evenly in E, the curve reaches both apsides
+    assert (distance.min(), distance.max()) == pytest.approx((0.1, 1.9), rel=2e-14)  # measured 9.7e-16, 2.3e-15
+    assert "[AU]" in eccentric.get_xlabel() and "[km]" in circular.get_xlabel()
+    for ax, name in ((circular, "circular"), (flyby, "flyby")):
+        outputs = next(line for line in ax.get_lines() if line.get_label() == "closed form at the outputs")
+        size = np.abs(outputs.get_xydata()).max()
+        for backend in ("rebound", "heyoka"):
+            marks = next(line for line in ax.get_lines() if line.get_gid() == f"integrated {backend}")
+            np.testing.assert_allclose(marks.get_xydata(), outputs.get_xydata(), rtol=0, atol=1e-10 * size)
+        worst = {s.name: s for s in validated.scenes}[name].residuals
+        assert f"heyoka {np.max(worst['heyoka']):.1e}" in ax.get_title()
+    (legend,) = panels[0].figure.legends  # four panels fill the row: the legend goes below
+    assert [text.get_text() for text in legend.get_texts()] == [
+        "closed form", "closed form at the outputs", "rebound", "heyoka", "first body (the origin)"]
 
 
 def test_html_and_text_display():
