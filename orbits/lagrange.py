@@ -189,19 +189,43 @@ class RestrictedThreeBody(display.Displayed):
         v_si = units.to_si(v, units.M_PER_S, "velocity v") / (self._n * self.r)[..., None]
         return lagrange.jacobi_constant(r_si, v_si, self.mu) * self._scale_squared << units.M_PER_S**2
 
-    def zero_velocity_grid(self, extent: float = 1.5, points: int = 401) -> tuple[u.Quantity, u.Quantity, u.Quantity]:
-        """(x, y, C) for plotting zero-velocity curves: a points x points grid (m) over |x|, |y| <= extent r in the
-        rotating plane, and C = -2 Phi (m2/s2), the Jacobi constant of a particle at rest there (+inf on a
-        primary). A particle of Jacobi constant C_0 cannot enter where C < C_0; contour C at C(L1), C(L2), ..."""
+    def zero_velocity_grid(self, extent: float = 1.5, points: int = 401, center: tuple[float, float] = (0.0, 0.0)
+                           ) -> tuple[u.Quantity, u.Quantity, u.Quantity]:
+        """(x, y, C) for plotting zero-velocity curves: a points x points grid (m) over |x - x_c|, |y - y_c| <=
+        extent r in the rotating plane about `center` (x_c, y_c) (units of r; the barycentre by default), and
+        C = -2 Phi (m2/s2), the Jacobi constant of a particle at rest there (+inf on a primary). A particle of
+        Jacobi constant C_0 cannot enter where C < C_0; contour C at C(L1), C(L2), ..."""
         if np.ndim(self.mu) != 0:
             raise OrbitDomainError("zero_velocity_grid needs a single binary; this object holds an array of them")
-        axis = np.linspace(-extent, extent, points)
-        x, y = np.meshgrid(axis, axis)
+        x, y = np.meshgrid(center[0] + np.linspace(-extent, extent, points),
+                           center[1] + np.linspace(-extent, extent, points))
         grid = np.stack([x, y, np.zeros_like(x)], axis=-1)
         with np.errstate(divide="ignore"):
             c = lagrange.jacobi_constant(grid, np.zeros(3), self.mu)
         r = float(self.r)
         return x * r << units.M, y * r << units.M, c * float(self._scale_squared) << units.M_PER_S**2
+
+    def departure_state(self, point: str = "L1", offset: u.Quantity | None = None) -> tuple[u.Quantity, u.Quantity]:
+        """Rotating-frame state (r in m, v in m/s, shape (3,) each) `offset` (length; 1e-6 r by default) from the
+        unstable `point` along its growing mode: the linearised motion carries it off as offset * exp(lambda t),
+        lambda = growth_rates of the point (orbits.core.lagrange.growing_mode: the planar eigenvector of the
+        largest real eigenvalue, dv = lambda dr). OrbitDomainError for a linearly stable point."""
+        if np.ndim(self.mu) != 0:
+            raise OrbitDomainError("departure_state needs a single binary; this object holds an array of them")
+        k = _point_index(point)
+        mu, r = float(self.mu), float(self.r)
+        rates = lagrange.growth_rates(mu)
+        if not rates[k] > 0.0:
+            unstable = ", ".join(name for name, rate in zip(POINTS, rates, strict=True) if rate > 0.0)
+            raise OrbitDomainError(f"{POINTS[k]} is linearly stable at mu = {mu:.6g}: nothing departs from it "
+                                   f"(unstable points there: {unstable})")
+        size = 1e-6 if offset is None else float(inputs.positive(offset, units.M, "offset")) / r
+        if not size <= 0.01:
+            raise OrbitDomainError(f"offset = {size:.3g} r: the linear departure holds only near the point; "
+                                   f"give at most 0.01 r ({0.01 * r:.6g} m)")
+        mode = lagrange.growing_mode(mu)[k]
+        position = lagrange.positions(mu)[k] + size * mode[:3]
+        return position * r << units.M, size * mode[3:] * float(self._n * self.r) << units.M_PER_S
 
     # ---- a test particle, for an integrator --------------------------------------------------------
     def test_particle_problem(self, r: u.Quantity, v: u.Quantity, times: u.Quantity) -> NBodyProblem:
@@ -275,6 +299,13 @@ class RestrictedThreeBody(display.Displayed):
         table = getattr(self, POINT_NAMES[name])
         value = table[..., k, :] if name == "position" else table[..., k]
         return None if name == "e_folding_time" and not np.all(np.isfinite(value)) else value
+
+
+def _point_index(point: str) -> int:
+    """0..4 for "L1".."L5" (UnknownNameError otherwise)."""
+    if point not in POINTS:
+        raise UnknownNameError(f"unknown point {point!r}; choose from {', '.join(POINTS)}")
+    return POINTS.index(point)
 
 
 BINARY_NAMES = ["mass_ratio", "separation", "angular_velocity", "period"]

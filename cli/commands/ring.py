@@ -57,6 +57,6 @@ def breakup_picture(ring: "Ring") -> tuple:
     backend = "heyoka" if backends.available("heyoka") else "rebound"
     result = backends.integrate(backend, problem)
     fig, axes = ring_snapshots(result.times, result.positions, expected.growth_rate, expected.breakup_time,
-                               expected.first_body)
+                               expected.first_body, period=ring.period)
     fig.suptitle(f"{ring!r}, integrated by {backend}")
     return fig, axes

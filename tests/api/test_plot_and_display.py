@@ -207,11 +207,15 @@ def test_lagrange_plane_marks_the_five_points_and_the_zero_velocity_curves():
 def test_ring_breakup_draws_the_prediction_through_the_seed():
     from orbits.plot import ring_breakup
 
-    times = np.linspace(0, 40, 50)
-    _, ax = ring_breakup(times, 1e-16 * np.exp(times), 1.0, 29.9)
+    times = np.linspace(0, 40, 50)  # in 1 / omega
+    _, ax = ring_breakup(times, 1e-16 * np.exp(times), 1.0, 29.9, period=2 * u.d)
     prediction = [line for line in ax.get_lines() if line.get_label().startswith("round-off")][0]
-    np.testing.assert_allclose(prediction.get_ydata(), 1e-16 * np.exp(times), rtol=1e-12)
-    assert ax.get_yscale() == "log" and any("29.9" in line.get_label() for line in ax.get_lines())
+    np.testing.assert_allclose(prediction.get_ydata(), 1e-16 * np.exp(times), rtol=1e-15)
+    np.testing.assert_allclose(prediction.get_xdata(), times / (2 * np.pi), rtol=1e-15)  # in ring periods
+    assert prediction.get_label() == "round-off x exp(t / 0.159 periods)"  # 1 / (2 pi) periods
+    breakup = [line for line in ax.get_lines() if line.get_label().startswith("predicted break-up")][0]
+    assert breakup.get_label() == "predicted break-up, 4.76 periods" and breakup.get_xdata()[0] == 29.9 / (2 * np.pi)
+    assert ax.get_yscale() == "log" and ax.get_xlabel() == "time [ring periods 2 pi / omega, 1 period = 2 d]"
 
 
 def test_scale_factor_runs_through_turnaround_to_the_big_crunch():

@@ -8,9 +8,10 @@ import numpy as np
 import pytest
 
 from orbits import RestrictedThreeBody
-from orbits.plot import coorbital_plane, lagrange_plane, ring_snapshots
+from orbits.core.errors import OrbitDomainError, UnknownNameError
+from orbits.plot import coorbital_plane, lagrange_departure, lagrange_plane, ring_snapshots
 from orbits.validate import backends
-from orbits.validate.builders import ring_problem
+from orbits.validate.builders import fitted_growth_rate, ring_problem
 
 matplotlib.use("Agg")
 
@@ -78,9 +79,49 @@ def test_a_tadpole_about_l4_stays_out_of_its_forbidden_region(earth_moon):
     scaled = track.to_value(u.m) / earth_moon.separation.to_value(u.m)
     longitude = np.degrees(np.arctan2(scaled[:, 1], scaled[:, 0] + mu))
     assert 45 < longitude.min() < 50 and 70 < longitude.max() < 75  # measured 47.9 and 73.1
-    _, ax = lagrange_plane(earth_moon, trajectories={"tadpole": track}, points=101)
+    _, ax = lagrange_plane(earth_moon, trajectories={"tadpole": track}, jacobi_constants={"tadpole": c0}, points=301)
     drawn = [line for line in ax.get_lines() if line.get_gid() == "trajectory"][0]
     np.testing.assert_allclose(drawn.get_xydata(), scaled[:, :2], rtol=1e-15)
+    # its own zero-velocity curve, at its own C, and the region forbidden to it instead of the C(L1..L3) shading
+    own = [c for c in ax.collections if not c.filled and len(c.levels) == 1]
+    assert len(own) == 1 and own[0].levels[0] == pytest.approx(c0.value, rel=1e-15)
+    r = earth_moon.separation.to_value(u.m)
+    for path in own[0].get_paths():
+        points = np.column_stack([path.vertices, np.zeros(len(path.vertices))]) * r * u.m
+        drawn_c = -2 * earth_moon.effective_potential(points).to_value(u.J / u.kg)
+        np.testing.assert_allclose(drawn_c, c0.value, rtol=2e-4)  # a 0.01 r grid; measured 2.2e-5
+    labels = {handle.get_label() for handle in ax.get_legend().legend_handles}
+    assert "forbidden to the tadpole (its C)" in labels and "forbidden at C(L3)" not in labels
+    with pytest.raises(ValueError, match="no trajectory of that label"):
+        lagrange_plane(earth_moon, trajectories={"tadpole": track}, jacobi_constants={"horseshoe": c0})
+
+
+def test_a_particle_leaves_l1_at_the_eigenvalue_rate(earth_moon):
+    """1e-6 r off the Earth-Moon L1 along the growing mode: heyoka carries it off at the linear rate (e-folding
+    1.48 d) until it is 1e-3 r away, and then round the Moon."""
+    offset = 1e-6 * earth_moon.separation
+    r0, v0 = earth_moon.departure_state("L1", offset)
+    gap = np.linalg.norm(r0 - earth_moon.positions[0]) / offset
+    assert gap.to_value(u.one) == pytest.approx(1.0, rel=6e-10)  # 384 m beside 3.2e8 m: measured 6.0e-11
+    # the Jacobi constant is C(L1) to second order along the mode (the linear flow conserves it and the mode
+    # grows, so its quadratic form is zero there): measured 1.1e-16
+    assert earth_moon.jacobi_constant(r0, v0).value == pytest.approx(earth_moon.jacobi_constants[0].value, rel=1e-15)
+    times = np.linspace(0, 30, 1501)[1:] * u.day
+    result = backends.integrate("heyoka", earth_moon.test_particle_problem(r0, v0, times))
+    track = earth_moon.rotating_track(result.positions)
+    _, (plane, distance) = lagrange_departure(earth_moon, "L1", offset, times, track)
+    away = [line for line in distance.get_lines() if line.get_gid() == "trajectory"][0].get_ydata()
+    rate = fitted_growth_rate(times.to_value(u.s), away, 1e-6, 1e-3)
+    assert rate == pytest.approx(earth_moon.growth_rates[0].to_value(1 / u.s), rel=2e-3)  # measured 1.7e-4
+    assert away.max() > 0.1 and "[d]" in distance.get_xlabel() and distance.get_yscale() == "log"
+    x0, x1 = plane.get_xlim()
+    assert x0 < earth_moon.positions[0, 0] / earth_moon.separation < x1 and x1 - x0 < 0.5  # framed on L1
+    with pytest.raises(OrbitDomainError, match="L4 is linearly stable"):
+        earth_moon.departure_state("L4")
+    with pytest.raises(OrbitDomainError, match="at most 0.01 r"):
+        earth_moon.departure_state("L1", 0.1 * earth_moon.separation)
+    with pytest.raises(UnknownNameError, match="unknown point 'L6'"):
+        earth_moon.departure_state("L6")
 
 
 def test_a_horseshoe_of_the_sun_and_earth_goes_round_through_l3():
@@ -108,6 +149,6 @@ def test_ring_snapshots_mark_the_breakup_level_and_show_the_ring_in_its_own_fram
     angles = np.sort(np.mod(np.degrees(np.arctan2(first[:, 1], first[:, 0])), 360))
     np.testing.assert_allclose(angles, [0, 72, 144, 216, 288], atol=1e-9)  # the regular pentagon it starts as
     marks = [line.get_xdata()[0] for line in axes[0].get_lines() if line.get_gid() == "snapshot"]
-    np.testing.assert_allclose(marks[1], expected.breakup_time, rtol=0.01)  # the nearest output
+    np.testing.assert_allclose(marks[1], expected.breakup_time / (2 * np.pi), rtol=0.01)  # nearest output, periods
     last = [line for line in axes[-1].get_lines() if line.get_gid() == "bodies"][0].get_xydata()
     assert np.abs(np.hypot(*last.T) - 1).max() > 0.05  # broken up by 1.5 break-up times
