@@ -141,7 +141,7 @@ class Cosmology(display.Displayed):
         Planck Collaboration 2020, A&A 641, A6 (paper VI), table 2, TT,TE,EE+lowE+lensing+BAO, with the values
         astropy.cosmology.Planck18 uses. Without `radiation`, Omega_Lambda = 1 - Omega_m: astropy's
         FlatLambdaCDM(67.66, 0.30966, Tcmb0=0) to 1e-13 (tests/api/test_cosmology_api.py). With it, photons at
-        Tcmb0 = 2.7255 K and Neff = 3.046 neutrinos as radiation (Omega_r = 9.15e-5), which is astropy's Planck18
+        Tcmb0 = 2.7255 K and Neff = 3.046 neutrinos as radiation (Omega_r = 9.139e-5), which is astropy's Planck18
         with massless neutrinos (m_nu = 0). Planck's one 0.06 eV neutrino, neither radiation nor matter, is left
         out either way: astropy's Planck18 has an age 13.787 Gyr and D_L(z = 1) = 6791.3 Mpc, this model 13.810
         Gyr and 6797.4 Mpc without radiation, 13.804 Gyr and 6796.8 Mpc with it.

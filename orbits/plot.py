@@ -649,9 +649,12 @@ def binary_plane(binary: "Binary", ax: Any = None, unit: u.UnitBase | None = Non
     scale = u.m.to(unit)
     x, y = _conic_points(p, e, np.inf)
     r_now = p / (1 + e * np.cos(nu)) * np.array([np.cos(nu), np.sin(nu)])
-    for share, name, color in ((-share2, "star 1", "C0"), (1 - share2, "star 2", "C1")):
-        ax.plot(share * x * scale, share * y * scale, color=color, lw=1.5, label=f"{name} orbit")
-        ax.plot(share * r_now[0] * scale, share * r_now[1] * scale, marker="o", color=color, ls="none")
+    masses = (binary.mass1, binary.mass2)
+    for k, (share, color) in enumerate(((-share2, "C0"), (1 - share2, "C1"))):
+        mass = display.quantity_text(masses[k].to(display.natural_unit(masses[k])), digits=4)
+        ax.plot(share * x * scale, share * y * scale, color=color, lw=1.5, label=f"star {k + 1} ({mass}) orbit")
+        ax.plot(share * r_now[0] * scale, share * r_now[1] * scale, marker="o", color=color, ls="none",
+                label=f"star {k + 1} now (nu = {math.degrees(nu):.4g} deg)")
     ax.plot(
         [-share2 * r_now[0] * scale, (1 - share2) * r_now[0] * scale],
         [-share2 * r_now[1] * scale, (1 - share2) * r_now[1] * scale],
@@ -661,6 +664,7 @@ def binary_plane(binary: "Binary", ax: Any = None, unit: u.UnitBase | None = Non
     )
     ax.plot(0, 0, marker="+", ms=12, color="k", ls="none", label="centre of mass")
     _finish_plane(ax, unit, "x toward periapsis")
+    _legend_outside(ax)
     return fig, ax
 
 
@@ -769,34 +773,43 @@ def radial_velocity_curves(binary: "Binary", ax: Any = None, cycles: float = 1.2
 
 
 def scale_factor_curves(
-    models: dict[str, "Cosmology"], t_max: u.Quantity, ax: Any = None, samples: int = 400
+    models: dict[str, "Cosmology"], t_max: u.Quantity, ax: Any = None, samples: int = 400, log: bool = False
 ) -> tuple[Any, Any]:
     """a(t) against cosmic time for {label: Cosmology}, from the big bang to t_max (time Quantity).
 
-    A universe that recollapses is drawn through its turnaround (a dot) down to its big crunch (a cross) when
-    they fall before t_max; today (a = 1) is the dotted line.
+    Each model has its own colour and line style (solid, dashed, dash-dotted, dotted), so two models that nearly
+    coincide both show. A universe that recollapses is drawn through its turnaround (a dot) down to its big crunch
+    (a cross) when they fall before t_max, each named with its model; today (a = 1) is the dotted grey line.
+    `log` puts a on a log scale (from 1e-2), for models whose a(t) spans decades by t_max.
     """
     fig, ax = _axes(ax)
     unit = display.axis_unit(t_max)
     end = t_max.to_value(unit)
+    styles = ("-", "--", "-.", ":")
     for k, (label, model) in enumerate(models.items()):
+        color, style = f"C{k % 10}", styles[k % len(styles)]
         crunch = model.big_crunch_time.to_value(unit)
         last = min(end, crunch)
         times = np.linspace(0.0, last, samples) * unit
-        ax.plot(times.to_value(unit), model.scale_factor(times).to_value(u.one), color=f"C{k}", label=label)
+        ax.plot(times.to_value(unit), model.scale_factor(times).to_value(u.one), color=color, ls=style, lw=1.6,
+                label=label)
         turnaround = model.turnaround_time.to_value(unit)
         if turnaround <= end:
-            ax.plot(turnaround, model.model.max_scale_factor, marker="o", color=f"C{k}", ls="none", clip_on=False,
-                    label=f"turnaround, t = {turnaround:.4g} {display.unit_text(unit)}")
+            ax.plot(turnaround, model.model.max_scale_factor, marker="o", color=color, ls="none", clip_on=False,
+                    label=f"{label}: turnaround, t = {turnaround:.4g} {display.unit_text(unit)}")
         if crunch <= end:
-            ax.plot(crunch, 0.0, marker="X", ms=9, color=f"C{k}", ls="none", clip_on=False,
-                    label=f"big crunch, t = {crunch:.4g} {display.unit_text(unit)}")
+            ax.plot(crunch, 1e-2 if log else 0.0, marker="X", ms=9, color=color, ls="none", clip_on=False,
+                    label=f"{label}: big crunch, t = {crunch:.4g} {display.unit_text(unit)}")
     ax.axhline(1.0, color="gray", lw=0.8, ls=":", label="today, a = 1")
     ax.set_xlim(0, end)
-    ax.set_ylim(bottom=0)
+    if log:
+        ax.set_yscale("log")
+        ax.set_ylim(bottom=1e-2)
+    else:
+        ax.set_ylim(bottom=0)
     ax.set_xlabel(f"time since the big bang [{display.unit_text(unit)}]")
     ax.set_ylabel("scale factor a [dimensionless]")
-    ax.grid(alpha=0.3)
+    ax.grid(alpha=0.3, which="major")
     _legend_outside(ax)
     return fig, ax
 
@@ -877,7 +890,7 @@ def cosmology_overview(cosmology: "Cosmology", label: str, z_max: float = 10.0) 
         "Einstein-de Sitter, same H0": Cosmology.einstein_de_sitter(cosmology.hubble_constant),
     }
     same = [name for name, other in references.items() if _same_universe(other, cosmology)]
-    models = {"this universe" + (f" (= {same[0]})" if same else ""): cosmology,
+    models = {"this universe" + (f" = {same[0]}" if same else ""): cosmology,
               **{name: other for name, other in references.items() if name not in same}}
     hubble_diagram(models, z_max, ax=axes[2], emphasis=next(iter(models)))
     fig.suptitle(label)

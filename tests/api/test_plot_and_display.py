@@ -173,10 +173,13 @@ def test_binary_plane_keeps_the_centre_of_mass_on_the_joining_line():
     lines = {line.get_label(): line.get_xydata() for line in ax.get_lines()}
     join = lines["joining line"]
     # masses 1 : 0.5, so star 1 is twice as close to the centre of mass as star 2, on the other side
-    np.testing.assert_allclose(join[1], -2 * join[0], rtol=1e-12)
-    star1, star2 = lines["star 1 orbit"], lines["star 2 orbit"]
-    assert np.ptp(star2[:, 0]) == pytest.approx(2 * np.ptp(star1[:, 0]), rel=1e-12)
-    assert np.ptp(star1[:, 0]) + np.ptp(star2[:, 0]) == pytest.approx(2.0, rel=1e-9)  # 2 a of the relative orbit
+    np.testing.assert_allclose(join[1], -2 * join[0], rtol=2e-15)  # measured 2.2e-16
+    star1, star2 = lines["star 1 (1 M_sun) orbit"], lines["star 2 (0.5 M_sun) orbit"]
+    assert "star 1 now (nu = 60 deg)" in lines
+    assert np.ptp(star2[:, 0]) == pytest.approx(2 * np.ptp(star1[:, 0]), rel=2e-15)  # measured 2.2e-16
+    assert np.ptp(star1[:, 0]) + np.ptp(star2[:, 0]) == pytest.approx(2.0, rel=2e-15)  # 2 a of the relative orbit: 0
+    ax.figure.canvas.draw()
+    assert ax.get_legend().get_window_extent().y1 <= ax.get_window_extent().y0  # the legend below, off the data
 
 
 def test_scale_factor_curves_reach_one_at_the_age():
@@ -229,9 +232,28 @@ def test_scale_factor_runs_through_turnaround_to_the_big_crunch():
     crunch = closed.big_crunch_time.to_value(u.Gyr)
     assert t[-1] == pytest.approx(crunch, rel=1e-12) and a[-1] == 0 and a[0] == 0
     assert a.max() == pytest.approx(2.0, rel=3e-5)  # a_max = Om / (Om - 1); 400 points: 3.9e-6
-    turnaround = [xy for name, xy in lines.items() if name.startswith("turnaround")][0]
+    turnaround = lines[f"closed: turnaround, t = {crunch / 2:.4g} Gyr"]
     assert tuple(turnaround[0]) == pytest.approx((crunch / 2, 2.0), rel=1e-12)
-    assert [xy for name, xy in lines.items() if name.startswith("big crunch")][0][0, 0] == pytest.approx(crunch)
+    assert lines[f"closed: big crunch, t = {crunch:.4g} Gyr"][0, 0] == pytest.approx(crunch)
+
+
+def test_scale_factor_curves_tell_models_apart():
+    """Planck 2018 and a flat Om = 0.31 model nearly coincide: different line styles keep both visible; a log
+    axis shows a Lambda universe's exponential growth beside a closed one's crunch, each marker named."""
+    from orbits import Cosmology
+    from orbits.plot import scale_factor_curves
+
+    h0 = 67.66 * u.km / u.s / u.Mpc
+    models = {"flat": Cosmology.from_densities(h0, Om0=0.31, Ol0=0.69), "planck18": Cosmology.planck18(),
+              "closed": Cosmology.from_densities(h0, Om0=3.0, Ol0=0.0)}
+    _, ax = scale_factor_curves(models, 100 * u.Gyr, log=True)
+    drawn = {line.get_label(): line for line in ax.get_lines()}
+    assert [drawn[name].get_linestyle() for name in models] == ["-", "--", "-."]
+    assert len({drawn[name].get_color() for name in models}) == 3
+    assert ax.get_yscale() == "log" and ax.get_ylim()[0] == 1e-2
+    assert drawn["planck18"].get_ydata()[-1] > 100  # exp(H0 sqrt(Ol) t): about 400 at 100 Gyr
+    assert sum(name.startswith("closed: ") for name in drawn) == 2 and not any(
+        name.startswith(("flat: ", "planck18: ")) for name in drawn)  # only the closed model turns round
     assert ax.get_legend().get_bbox_to_anchor().y0 < ax.bbox.y0  # legend below the axes, off the data
 
 
@@ -254,7 +276,7 @@ def test_hubble_diagram_draws_the_distance_modulus():
     # the model is drawn last, thick and black, and a reference identical to it is not drawn under it
     hubble = axes[2].get_lines()
     assert [line.get_label() for line in hubble] == ["Einstein-de Sitter, same H0",
-                                                     "this universe (= Planck 2018 (flat, no radiation))"]
+                                                     "this universe = Planck 2018 (flat, no radiation)"]
     assert hubble[-1].get_color() == "k" and hubble[-1].get_linewidth() > hubble[0].get_linewidth()
     _, axes = cosmology_overview(Cosmology.from_densities(70 * u.km / u.s / u.Mpc, Om0=0.3, Ol0=0.7), "other")
     assert len(axes[2].get_lines()) == 3 and axes[2].get_lines()[-1].get_label() == "this universe"
