@@ -242,8 +242,19 @@ def test_api_rows_compare_the_same_calls():
 
 def test_cli_rows_time_fresh_processes():
     rows = bench.bench_cli(runs=2, commands=[(["--help"], 0.2)])
+    assert len(rows) == 1  # given commands and no first runs: none of the slow first-ever runs
     assert rows[0].command == "orbits --help" and rows[0].runs == 2 and rows[0].min_seconds <= rows[0].median_seconds
     assert "0.20" in bench.format_cli(rows)
+
+
+def test_first_runs_are_timed_against_a_warm_second_run():
+    """Each first run gives two rows, first ever and warm; the target of a ratio is that ratio times the warm
+    time."""
+    rows = bench.bench_cli(commands=[], first_runs=[(["--help"], None, 1.5)])
+    first, warm = rows
+    assert first.command == "orbits --help (first ever: empty kernel cache)" and first.runs == 1
+    assert warm.command == "orbits --help (second run, warm cache)" and warm.target_seconds is None
+    assert first.target_seconds == pytest.approx(1.5 * warm.median_seconds, rel=1e-15)
 
 
 def test_validate_rows_split_the_time_by_stage():

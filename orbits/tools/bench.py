@@ -8,7 +8,8 @@
   relative position and velocity error against mpmath (orbits.tools.reference), for orbits, heyoka's
   lagrange_prop cfunc, a plain NumPy f-and-g + Newton baseline, pykep and hapsira.
 - bench_api: the unit-aware API (orbits.Orbit) against the float64 core on the same inputs.
-- bench_cli: cold start of the command line, as the median of repeated fresh processes.
+- bench_cli: cold start of the command line, as the median of repeated fresh processes, and the first run on
+  a fresh install (empty kernel cache) against the second.
 - bench_validate: where the time of ``orbits validate`` goes (analytic, integrator setup and compile,
   integration) per built-in scene, sequential and as a dask sweep.
 
@@ -22,10 +23,12 @@ package is absent are skipped with a note; every peer is imported lazily.
 import contextlib
 import dataclasses
 import math
+import os
 import shutil
 import statistics
 import subprocess
 import sys
+import tempfile
 import textwrap
 import time
 from collections.abc import Callable, Iterable, Mapping, Sequence
@@ -992,11 +995,24 @@ def _orbits_command():
     return [script] if script else [sys.executable, "-c", "from orbits_cli.main import app; app()"]
 
 
-def bench_cli(runs: int = 10, commands: Sequence[tuple[list[str], float | None]] | None = None) -> list[CliRow]:
+#: (arguments of `orbits`, target seconds or None, largest ratio to the warm run or None) of the first runs
+#: bench_cli times: once with an empty kernel cache, as on a fresh install, then once more with the cache that
+#: run left
+FIRST_RUN_COMMANDS = [
+    (["kepler", "--e", "0.9", "--M", "0.1 rad"], 1.0, None),
+    (["validate", "--format", "json"], None, 1.5),
+]
+
+
+def bench_cli(runs: int = 10, commands: Sequence[tuple[list[str], float | None]] | None = None,
+              first_runs: Sequence[tuple[list[str], float | None, float | None]] | None = None) -> list[CliRow]:
     """Cold-start wall time of each command over `runs` fresh processes (one unmeasured warm-up run
-    fills the OS file cache, as on any machine that has run orbits before)."""
+    fills the OS file cache, as on any machine that has run orbits before); then each of `first_runs`
+    (FIRST_RUN_COMMANDS when neither list is given) timed once with NUMBA_CACHE_DIR a new empty folder (what a
+    new user waits for: anything compiled on first use) and once more warm, the target of the first run being
+    its own, or its ratio to the warm run times the warm time."""
     rows = []
-    for args, target in commands or CLI_COMMANDS:
+    for args, target in CLI_COMMANDS if commands is None else commands:
         argv = _orbits_command() + args
         subprocess.run(argv, capture_output=True, check=True)
         times = []
@@ -1005,7 +1021,25 @@ def bench_cli(runs: int = 10, commands: Sequence[tuple[list[str], float | None]]
             subprocess.run(argv, capture_output=True, check=True)
             times.append(time.perf_counter() - start)
         rows.append(CliRow("orbits " + " ".join(args), runs, statistics.median(times), min(times), target))
+    for args, target, ratio in (FIRST_RUN_COMMANDS if commands is None and first_runs is None else first_runs or []):
+        first, warm = _first_and_warm(_orbits_command() + args)
+        command = "orbits " + " ".join(args)
+        rows.append(CliRow(f"{command} (first ever: empty kernel cache)", 1, first, first,
+                           target if ratio is None else ratio * warm))
+        rows.append(CliRow(f"{command} (second run, warm cache)", 1, warm, warm, None))
     return rows
+
+
+def _first_and_warm(argv: list[str]) -> tuple[float, float]:
+    """Wall times (s) of argv run twice in fresh processes sharing a new, empty numba cache folder."""
+    times = []
+    with tempfile.TemporaryDirectory(prefix="orbits-bench-cache-") as folder:
+        environment = {**os.environ, "NUMBA_CACHE_DIR": folder}
+        for _ in range(2):
+            start = time.perf_counter()
+            subprocess.run(argv, capture_output=True, check=True, env=environment)
+            times.append(time.perf_counter() - start)
+    return times[0], times[1]
 
 
 def format_cli(rows: Sequence[CliRow]) -> str:
