@@ -974,7 +974,7 @@ def format_api(rows: Sequence[ApiRow]) -> str:
 CLI_COMMANDS = [
     (["--help"], 0.2),
     (["orbit", "--primary", "Earth", "--a", "42164 km", "--only", "period,speed"], 0.6),
-    (["kepler", "--e", "0.9", "--M", "0.1 rad"], None),
+    (["kepler", "--e", "0.9", "--M", "0.1 rad"], 0.5),
 ]
 
 
@@ -995,6 +995,10 @@ def _orbits_command():
     return [script] if script else [sys.executable, "-c", "from orbits_cli.main import app; app()"]
 
 
+#: imports every command pays before orbits does anything, timed the same way (fresh processes of this Python):
+#: the floor under the cold-start targets on this machine
+FLOOR_IMPORTS = ["numpy", "astropy.units"]
+
 #: (arguments of `orbits`, target seconds or None, largest ratio to the warm run or None) of the first runs
 #: bench_cli times: once with an empty kernel cache, as on a fresh install, then once more with the cache that
 #: run left
@@ -1007,20 +1011,24 @@ FIRST_RUN_COMMANDS = [
 def bench_cli(runs: int = 10, commands: Sequence[tuple[list[str], float | None]] | None = None,
               first_runs: Sequence[tuple[list[str], float | None, float | None]] | None = None) -> list[CliRow]:
     """Cold-start wall time of each command over `runs` fresh processes (one unmeasured warm-up run
-    fills the OS file cache, as on any machine that has run orbits before); then each of `first_runs`
+    fills the OS file cache, as on any machine that has run orbits before), after the FLOOR_IMPORTS alone (by
+    default, that is when no commands are given); then each of `first_runs`
     (FIRST_RUN_COMMANDS when neither list is given) timed once with NUMBA_CACHE_DIR a new empty folder (what a
     new user waits for: anything compiled on first use) and once more warm, the target of the first run being
     its own, or its ratio to the warm run times the warm time."""
     rows = []
-    for args, target in CLI_COMMANDS if commands is None else commands:
-        argv = _orbits_command() + args
+    floors = [([sys.executable, "-c", f"import {name}"], f"floor: python -c 'import {name}'")
+              for name in (FLOOR_IMPORTS if commands is None else [])]
+    timed = [(_orbits_command() + args, "orbits " + " ".join(args), target)
+             for args, target in (CLI_COMMANDS if commands is None else commands)]
+    for argv, label, target in [(argv, label, None) for argv, label in floors] + timed:
         subprocess.run(argv, capture_output=True, check=True)
         times = []
         for _ in range(runs):
             start = time.perf_counter()
             subprocess.run(argv, capture_output=True, check=True)
             times.append(time.perf_counter() - start)
-        rows.append(CliRow("orbits " + " ".join(args), runs, statistics.median(times), min(times), target))
+        rows.append(CliRow(label, runs, statistics.median(times), min(times), target))
     for args, target, ratio in (FIRST_RUN_COMMANDS if commands is None and first_runs is None else first_runs or []):
         first, warm = _first_and_warm(_orbits_command() + args)
         command = "orbits " + " ".join(args)
