@@ -6,7 +6,7 @@ Every kernel has the signature kernel(start, stop, inputs..., out) and returns
 NumPy checks' error message), unconverged counts solves that hit the iteration cap (ConvergenceError).
 
 Elliptic solver, in two passes over the batch:
-1. A fixed, branch-free pipeline that LLVM vectorises (AVX-512 here): exact reduction of M modulo 2 pi,
+1. A fixed, branch-free pipeline that LLVM vectorises (AVX2 or AVX-512): exact reduction of M modulo 2 pi,
    Markley's (1995) starter (|error| <= 2.7e-4 relative on e <= 0.99), one Halley step, one Newton step.
    sin, x - sin x and 1 - cos x come from Taylor polynomials on [0, 2] and, past x = 2, on pi - x, so
    the residual (1 - e) x - M + e (x - sin x) is free of cancellation and no libm call blocks the

@@ -1,7 +1,7 @@
 """Scalar float64 building blocks for the compiled kernels (numba), written so LLVM can vectorise them.
 
 No function here calls libm except as a fallback outside its stated range, so a loop that inlines them
-(``jit(inline=True)``) compiles to SIMD code (AVX-512 on this machine): libm calls would stop the
+(``jit(inline=True)``) compiles to SIMD code (AVX2 or AVX-512, what the CPU has): libm calls would stop the
 vectoriser. Accuracy, measured against mpmath on 1e6 points of each range:
 - sin_cos(x), 0 <= x <= 64: Cody-Waite reduction by pi/2 in three parts (fdlibm's constants),
   Taylor polynomials of degree 15 and 16 on [-pi/4, pi/4]; within 1 ulp of sin and cos.
