@@ -158,8 +158,7 @@ def reports_errors(command: Callable[_P, _R]) -> Callable[_P, _R]:
 
         import astropy.units as u
 
-        from orbits import OrbitsError
-        from orbits.core.errors import OrbitsWarning
+        from orbits import OrbitsError, OrbitsWarning
 
         try:
             with warnings.catch_warnings(record=True) as said:

@@ -49,6 +49,7 @@ _HOMES = {
     "DegenerateOrbitError": "orbits.core.errors",
     "OrbitDomainError": "orbits.core.errors",
     "OrbitsError": "orbits.core.errors",
+    "OrbitsWarning": "orbits.core.errors",
     "SceneError": "orbits.core.errors",
     "UnknownNameError": "orbits.core.errors",
 }
