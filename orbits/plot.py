@@ -746,12 +746,7 @@ def radial_velocity_curves(binary: "Binary", ax: Any = None, cycles: float = 1.2
     if binary.shape != ():
         raise ValueError(f"radial_velocity_curves draws one binary; this Binary holds {binary.shape}: "
                          f"index it first")
-    if ax is None:
-        import matplotlib.pyplot as plt
-
-        fig, ax = plt.subplots(figsize=(9.5, 4.8), layout="constrained")
-    else:
-        fig = ax.figure
+    fig, ax = _axes(ax, figsize=(9.5, 4.8))
     period = binary.period.to_value(u.s)
     phase = np.linspace(0.0, cycles, samples)
     dt = (phase * period - binary.time_since_periapsis.to_value(u.s)) << u.s
@@ -947,12 +942,7 @@ def lagrange_plane(
         raise ValueError(f"jacobi_constants for {sorted(set(own) - set(trajectories))}: no trajectory of that "
                          f"label; trajectories: {sorted(trajectories)}")
 
-    if ax is None:
-        import matplotlib.pyplot as plt
-
-        fig, ax = plt.subplots(figsize=(9.6, 6.4), layout="constrained")
-    else:
-        fig = ax.figure
+    fig, ax = _axes(ax, figsize=(9.6, 6.4))
     x, y, c = system.zero_velocity_grid(extent=extent, points=points, center=center)
     r = float(system.separation.to_value(u.m))
     xs, ys = x.to_value(u.m) / r, y.to_value(u.m) / r
@@ -1359,12 +1349,8 @@ def porkchop(p: Any, ax: Any = None) -> tuple[Any, Any]:
     tested in tests/api/test_porkchop.py (the marker sits on the minimum's dates, the levels bracket the grid).
     """
     import matplotlib.dates as mdates
-    import matplotlib.pyplot as plt
 
-    if ax is None:
-        fig, ax = plt.subplots(figsize=(8.0, 7.2), layout="constrained")
-    else:
-        fig = ax.figure
+    fig, ax = _axes(ax, figsize=(8.0, 7.2))
     x = p.launch_dates.tdb.jd - _UNIX_EPOCH_JD
     y = p.arrival_dates.tdb.jd - _UNIX_EPOCH_JD
     blank = ~p.valid
