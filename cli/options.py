@@ -160,14 +160,15 @@ def reports_errors(command: Callable[_P, _R]) -> Callable[_P, _R]:
 
         from orbits import OrbitsError, OrbitsWarning
 
+        said = []
         try:
-            with warnings.catch_warnings(record=True) as said:
-                warnings.simplefilter("error", RuntimeWarning)  # a float64 overflow is an error, never a warning
-                warnings.simplefilter("always", OrbitsWarning)
-                try:
+            try:
+                with warnings.catch_warnings(record=True) as said:
+                    warnings.simplefilter("error", RuntimeWarning)  # a float64 overflow is an error, never a warning
+                    warnings.simplefilter("always", OrbitsWarning)
                     return command(*args, **kwargs)
-                finally:
-                    _print_warnings(said, OrbitsWarning)
+            finally:  # outside the recording: a warning passed on goes to the caller's filters, not back to `said`
+                _print_warnings(said, OrbitsWarning)
         except RuntimeWarning as err:
             print(f"orbits: error: the computation left float64 ({err}); the inputs are outside what orbits can "
                   f"compute", file=sys.stderr)

@@ -94,8 +94,9 @@ BUILTIN_ACCURACY_KM = {"Sun": 9.0, "Mercury": 2.3e3, "Venus": 5.4e3, "Earth-Moon
 
 #: GM (m3/s2) of each DE421 point that carries mass, from JPL DE430 (Folkner et al. 2014, IPN Progress Report
 #: 42-196, Table 8, to the digits of JPL Horizons' gm_Horizons.pck): the masses an N-body model of these points
-#: uses. Mars and Jupiter-Pluto are whole systems, as their DE421 points are system barycentres (Mars's moons add
-#: 4e-8); the Moon's is 4902.8000661637961 km3/s2 (DE421's own: 4902.800076).
+#: uses. Jupiter-Pluto are whole systems, as their DE421 points are system barycentres; Mars's point is the
+#: planet's centre but carries the system's mass too (its moons add 4e-8); the Moon's is 4902.8000661637961
+#: km3/s2 (DE421's own: 4902.800076).
 DE430_GM = {name: gm * 1e9 for name, gm in {
     "Sun": 132_712_440_041.93938, "Mercury": 22_031.78, "Venus": 324_858.592, "Earth": 398_600.43543609598,
     "Moon": 4_902.8000661637961, "Mars": 42_828.375214, "Jupiter": 126_712_764.8, "Saturn": 37_940_585.2,

@@ -212,7 +212,7 @@ class RestrictedThreeBody(display.Displayed):
         largest real eigenvalue, dv = lambda dr). OrbitDomainError for a linearly stable point."""
         if np.ndim(self.mu) != 0:
             raise OrbitDomainError("departure_state needs a single binary; this object holds an array of them")
-        k = _point_index(point)
+        k = lagrange.point_index(point)
         mu, r = float(self.mu), float(self.r)
         rates = lagrange.growth_rates(mu)
         if not rates[k] > 0.0:
@@ -299,13 +299,6 @@ class RestrictedThreeBody(display.Displayed):
         table = getattr(self, POINT_NAMES[name])
         value = table[..., k, :] if name == "position" else table[..., k]
         return None if name == "e_folding_time" and not np.all(np.isfinite(value)) else value
-
-
-def _point_index(point: str) -> int:
-    """0..4 for "L1".."L5" (UnknownNameError otherwise)."""
-    if point not in POINTS:
-        raise UnknownNameError(f"unknown point {point!r}; choose from {', '.join(POINTS)}")
-    return POINTS.index(point)
 
 
 BINARY_NAMES = ["mass_ratio", "separation", "angular_velocity", "period"]

@@ -14,8 +14,8 @@ import astropy.units as u
 import numpy as np
 
 from orbits import display, inputs, units
-from orbits.core.errors import OrbitsWarning, UnknownNameError
-from orbits.core.lagrange import POINTS
+from orbits.core.errors import OrbitsWarning
+from orbits.core.lagrange import point_index
 from orbits.io import write_atomic
 
 if TYPE_CHECKING:
@@ -36,13 +36,17 @@ def _axes(ax, figsize=(6.4, 5.6)):
     return ax.figure, ax
 
 
-def _finish_plane(ax, unit, x_label):
-    """Equal aspect, labelled axes with the length unit, grid and legend: the end of every in-plane picture."""
+def _finish_plane(ax, unit, x_label, legend_below=False):
+    """Equal aspect, labelled axes with the length unit, grid and legend (inside where there is room, or below
+    the axes): the end of every in-plane picture."""
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel(f"{x_label} [{display.unit_text(unit)}]")
     ax.set_ylabel(f"y [{display.unit_text(unit)}]")
     ax.grid(alpha=0.3)
-    ax.legend(loc="best", fontsize="small")
+    if legend_below:
+        _legend_outside(ax)
+    else:
+        ax.legend(loc="best", fontsize="small")
 
 
 def _length_unit(size_m):
@@ -84,9 +88,11 @@ def orbit_plane(
         raise ValueError(f"orbit_plane draws one orbit; this Orbit holds {orbit.shape} orbits: index it first")
     flat = dataclasses.replace(orbit, inc=np.zeros(()), raan=np.zeros(()), argp=np.zeros(()))
     later = [] if times is None else [flat.at(t).r.to_value(u.m) for t in np.atleast_1d(times)]
-    size = _extent([("", flat)], max((float(np.linalg.norm(r)) for r in later), default=0.0))
+    furthest = 1.05 * max((float(np.linalg.norm(r)) for r in later), default=0.0)  # the arc runs past each dot
+    size = _extent([("", flat)], furthest)
     unit = unit or _length_unit(size)
-    fig, ax = orbits(flat, ax=ax, labels=None if label is None else [label], unit=unit, primary=primary)
+    fig, ax = orbits(flat, ax=ax, labels=None if label is None else [label], unit=unit, primary=primary,
+                     window=size << u.m if later else None)
     scale = u.m.to(unit)
     p, e = float(orbit.p), float(orbit.e)
     whole = e < 1 and p / (1 - e) <= _LONG * p / (1 + e)
@@ -663,8 +669,7 @@ def binary_plane(binary: "Binary", ax: Any = None, unit: u.UnitBase | None = Non
         label="joining line",
     )
     ax.plot(0, 0, marker="+", ms=12, color="k", ls="none", label="centre of mass")
-    _finish_plane(ax, unit, "x toward periapsis")
-    _legend_outside(ax)
+    _finish_plane(ax, unit, "x toward periapsis", legend_below=True)
     return fig, ax
 
 
@@ -999,9 +1004,7 @@ def lagrange_departure(system: "RestrictedThreeBody", point: str, offset: u.Quan
     Returns (figure, [plane, distance])."""
     import matplotlib.pyplot as plt
 
-    if point not in POINTS:
-        raise UnknownNameError(f"unknown point {point!r}; choose from {', '.join(POINTS)}")
-    k = POINTS.index(point)
+    k = point_index(point)
     r = float(system.separation.to_value(u.m))
     where = system.positions.to_value(u.m)[k, :2] / r
     shown = units.to_si(track, units.M, "track")[:, :2] / r
@@ -1174,11 +1177,7 @@ def validation_residuals(report: Any, figure: Any = None) -> tuple[Any, np.ndarr
     groups = {"closed": orbiting, "open": [s for s in shown if s not in orbiting]}
     groups = {kind: scenes for kind, scenes in groups.items() if scenes}
     if not groups:
-        ax = figure.subplots()
-        ax.text(0.5, 0.5, "no scene here predicts positions: nothing to plot against time", ha="center",
-                transform=ax.transAxes)
-        ax.set_axis_off()
-        return figure, np.array([ax])
+        return figure, _nothing_to_draw(figure, "no scene here predicts positions: nothing to plot against time")
     panels = np.atleast_1d(figure.subplots(1, len(groups), sharey=True))
     for ax, (kind, scenes) in zip(panels, groups.items(), strict=True):
         for scene in scenes:
@@ -1215,10 +1214,7 @@ def validation_tracks(report: Any, figure: Any = None, columns: int = 4) -> tupl
     rows = max(1, math.ceil(len(shown) / columns))
     figure = _figure(figure, (3.0 * min(columns, max(1, len(shown))) + 1.0, 3.2 * rows + 0.6))
     if not shown:
-        ax = figure.subplots()
-        ax.text(0.5, 0.5, "no scene here predicts positions: no tracks to draw", ha="center", transform=ax.transAxes)
-        ax.set_axis_off()
-        return figure, np.array([ax])
+        return figure, _nothing_to_draw(figure, "no scene here predicts positions: no tracks to draw")
     panels = np.atleast_1d(figure.subplots(rows, min(columns, len(shown)), squeeze=False)).ravel()
     markers = ("x", "+", "1", "2")
     for ax, scene in zip(panels, shown, strict=False):
@@ -1265,6 +1261,14 @@ def validation_tracks(report: Any, figure: Any = None, columns: int = 4) -> tupl
 TRACK_MARKERS = 50
 
 
+def _nothing_to_draw(figure: Any, text: str) -> np.ndarray:
+    """One blank panel of `figure` saying why nothing is drawn; returned as the array of panels."""
+    ax = figure.subplots()
+    ax.text(0.5, 0.5, text, ha="center", transform=ax.transAxes)
+    ax.set_axis_off()
+    return np.array([ax])
+
+
 def _face_on_basis(points: np.ndarray) -> np.ndarray:
     """(2, 3) orthonormal rows spanning the plane of largest spread of (M, 3) points about the origin (their
     first two right singular vectors): an orbit seen face on, whatever its inclination."""
@@ -1274,10 +1278,15 @@ def _face_on_basis(points: np.ndarray) -> np.ndarray:
 
 def validation_overview(report: Any) -> tuple[Any, np.ndarray]:
     """The picture of `orbits validate --plot`: residuals against time on top (validation_residuals), the
-    integrated trajectories over the analytic ones below (validation_tracks). Returns (figure, all panels)."""
+    integrated trajectories over the analytic ones below (validation_tracks); one panel saying so when no scene
+    of the report predicts positions. Returns (figure, all panels)."""
     import matplotlib.pyplot as plt
 
     tracks = sum(1 for scene in report.scenes if scene.expected is not None and scene.positions)
+    if not tracks:  # nothing over time either: one panel says so
+        fig = plt.figure(figsize=(8.0, 2.0), layout="constrained")
+        names = ", ".join(scene.name for scene in report.scenes)
+        return fig, _nothing_to_draw(fig, f"no positions are predicted in {names}: the report's checks are all")
     rows = max(1, math.ceil(tracks / 4))
     fig = plt.figure(figsize=(13.0, 5.4 + 3.3 * rows), layout="constrained")
     top, bottom = fig.subfigures(2, 1, height_ratios=(5.4, 3.3 * rows))

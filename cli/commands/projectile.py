@@ -53,7 +53,8 @@ def command(
                                      "--mass, --drag-coefficient, --density or --area")
         shot = shot.with_linear_drag(_rate(rate))
     elif drag == Drag.quadratic:
-        if rate is not None or (terminal_speed is None) == (len(given) < 4) or (terminal_speed and given):
+        one_way = (terminal_speed is not None and not given) or (terminal_speed is None and len(given) == len(body))
+        if rate is not None or not one_way:
             raise typer.BadParameter("--drag quadratic takes --terminal-speed (e.g. '30 m/s'), or all of --mass, "
                                      "--drag-coefficient, --density and --area; no --rate")
         shot = shot.with_quadratic_drag(**_quadratic(terminal_speed, mass, drag_coefficient, density, area))

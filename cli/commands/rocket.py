@@ -34,7 +34,11 @@ def command(
     single = m0 is not None or mf is not None
     if single == (propellant is not None or structure is not None or payload is not None):
         raise typer.BadParameter("give --m0 and --mf (one stage) or --propellant, --structure and --payload (stages)")
-    stage_count = 1 if single else len(propellant or ())
+    if single and (m0 is None or mf is None):
+        raise typer.BadParameter("a single stage needs both --m0 and --mf")
+    if not single and (not propellant or not structure or payload is None):
+        raise typer.BadParameter("stages need --propellant and --structure for each stage, and --payload")
+    stage_count = 1 if single else len(propellant)
     for option, values in (("--isp", isp), ("--exhaust-speed", exhaust_speed), ("--thrust", thrust)):
         if values and len(values) not in (1, stage_count):
             raise typer.BadParameter(f"{len(values)} {option} for {stage_count} stage{'s' * (stage_count > 1)}: "
@@ -44,13 +48,9 @@ def command(
         speeds["isp"] = _each(isp, "time", "--isp")
     force = None if not thrust else _each(thrust, "force", "--thrust")
     if single:
-        if m0 is None or mf is None:
-            raise typer.BadParameter("a single stage needs both --m0 and --mf")
         rocket = Rocket.single_stage(inputs.parse_quantity(m0, "mass", "--m0"),
                                      inputs.parse_quantity(mf, "mass", "--mf"), thrust=force, **speeds)
     else:
-        if not propellant or not structure or payload is None:
-            raise typer.BadParameter("stages need --propellant and --structure for each stage, and --payload")
         if len(propellant) != len(structure):
             raise typer.BadParameter(f"{len(propellant)} --propellant but {len(structure)} --structure: one of each "
                                      "per stage")

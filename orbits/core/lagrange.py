@@ -24,9 +24,17 @@ from numpy.typing import ArrayLike
 from orbits.core._dd import cbrt
 from orbits.core._roots import halley_in_bracket
 from orbits.core.checks import check_finite
-from orbits.core.errors import OrbitDomainError
+from orbits.core.errors import OrbitDomainError, UnknownNameError
 
 POINTS = ("L1", "L2", "L3", "L4", "L5")
+
+
+def point_index(point: str) -> int:
+    """0..4 for "L1".."L5" (UnknownNameError naming the five otherwise)."""
+    if point not in POINTS:
+        raise UnknownNameError(f"unknown point {point!r}; choose from {', '.join(POINTS)}")
+    return POINTS.index(point)
+
 
 #: Routh's critical mass ratio mu_R = (1 - sqrt(23/27)) / 2, as a double-double (hi + lo) to decide
 #: mu < mu_R exactly; L4 and L5 are linearly stable iff mu < mu_R.

@@ -80,17 +80,6 @@ def spring_pair_frequency(k: ArrayLike, m1: ArrayLike, m2: ArrayLike) -> np.ndar
     return np.sqrt(np.asarray(k, dtype=float) * (1.0 / m1 + 1.0 / m2))
 
 
-def check_amplitude(amplitude: ArrayLike) -> None:
-    """Raise OrbitDomainError unless every pendulum amplitude is in [0, pi) rad (pi: balanced upside down)."""
-    a = np.asarray(amplitude, dtype=float)
-    bad = ~((a >= 0) & (a < np.pi))
-    if np.any(bad):
-        raise OrbitDomainError(
-            f"amplitude theta0 = {float(a[bad].flat[0])!r} rad is outside the allowed range [0, pi) rad: at pi the "
-            "pendulum balances upside down and never swings"
-        )
-
-
 def pendulum_period(omega0: ArrayLike, amplitude: ArrayLike) -> np.ndarray:
     """T = 4 K(sin**2(theta0 / 2)) / omega0 = 2 pi / (omega0 AGM(1, cos(theta0 / 2))) (s): the exact period at
     amplitude theta0 in [0, pi) (XXV.vi's T2 with u = 2 sqrt(g R) sin(theta0 / 2))."""

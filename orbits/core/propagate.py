@@ -454,7 +454,7 @@ def _solve_elliptic(A, ec, es, m):
     step length, one Halley step kept in [lo, hi], one Newton step, certified when that step d is below
     ELLIPTIC_STEP x and its own error |F''| d**2 / (2 F') below ELLIPTIC_ERROR x / 2 (F' and F'' change by less
     than 1e-3 over the step, so the local estimate holds); sin x and 1 - cos x then follow the Newton step to
-    first order (the second-order terms are below 2**-60 of them)."""
+    first order (the second-order terms, of the order of the step squared, are below 2**-52 of them)."""
     markley, local, lo, hi = _elliptic_starters(A, ec, es, m)
     f_m, df_m, d2f_m, _, _ = _elliptic_residual(markley, A, ec, es, m)
     f_l, df_l, d2f_l, _, _ = _elliptic_residual(local, A, ec, es, m)

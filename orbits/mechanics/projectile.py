@@ -288,7 +288,7 @@ class ConicalPendulum(display.Displayed):
     @classmethod
     def at_angle(cls, length: u.Quantity, angle: u.Quantity, g: u.Quantity | None = None,
                  mass: u.Quantity | None = None) -> "ConicalPendulum":
-        """String length, cone angle in (0, 90) deg."""
+        """String length, cone angle in [0, 90) deg (0: the bob hangs straight down)."""
         theta = angle_in(angle, "cone angle theta", 0.0, np.pi / 2, "[0, pi/2)")
         m = None if mass is None else inputs.positive(mass, units.KG, "mass m")
         return cls(inputs.positive(length, units.M, "string length L"), theta, gravity(g), m)

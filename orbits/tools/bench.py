@@ -1022,12 +1022,8 @@ def bench_cli(runs: int = 10, commands: Sequence[tuple[list[str], float | None]]
     timed = [(_orbits_command() + args, "orbits " + " ".join(args), target)
              for args, target in (CLI_COMMANDS if commands is None else commands)]
     for argv, label, target in [(argv, label, None) for argv, label in floors] + timed:
-        subprocess.run(argv, capture_output=True, check=True)
-        times = []
-        for _ in range(runs):
-            start = time.perf_counter()
-            subprocess.run(argv, capture_output=True, check=True)
-            times.append(time.perf_counter() - start)
+        _process_times(argv, 1)  # the warm-up run
+        times = _process_times(argv, runs)
         rows.append(CliRow(label, runs, statistics.median(times), min(times), target))
     for args, target, ratio in (FIRST_RUN_COMMANDS if commands is None and first_runs is None else first_runs or []):
         first, warm = _first_and_warm(_orbits_command() + args)
@@ -1040,14 +1036,19 @@ def bench_cli(runs: int = 10, commands: Sequence[tuple[list[str], float | None]]
 
 def _first_and_warm(argv: list[str]) -> tuple[float, float]:
     """Wall times (s) of argv run twice in fresh processes sharing a new, empty numba cache folder."""
-    times = []
     with tempfile.TemporaryDirectory(prefix="orbits-bench-cache-") as folder:
-        environment = {**os.environ, "NUMBA_CACHE_DIR": folder}
-        for _ in range(2):
-            start = time.perf_counter()
-            subprocess.run(argv, capture_output=True, check=True, env=environment)
-            times.append(time.perf_counter() - start)
-    return times[0], times[1]
+        first, warm = _process_times(argv, 2, {**os.environ, "NUMBA_CACHE_DIR": folder})
+    return first, warm
+
+
+def _process_times(argv: list[str], runs: int, environment: dict[str, str] | None = None) -> list[float]:
+    """Wall time (s) of each of `runs` fresh processes running argv (which must exit 0)."""
+    times = []
+    for _ in range(runs):
+        start = time.perf_counter()
+        subprocess.run(argv, capture_output=True, check=True, env=environment)
+        times.append(time.perf_counter() - start)
+    return times
 
 
 def format_cli(rows: Sequence[CliRow]) -> str:

@@ -213,16 +213,17 @@ def _lamberthub_solver(name, subset):
     import lamberthub
 
     function = getattr(lamberthub, name)
+    defaults = (35, 1e-5, 1e-7)  # maxiter, atol, rtol: lamberthub's own defaults, passed positionally
 
     def one(case):
         prograde = bool(case.prograde if case.normal is None else case.normal[2] >= 0)
         return function(float(case.mu), np.asarray(case.r1, dtype=float), np.asarray(case.r2, dtype=float),
-                        float(case.tof), int(case.revolutions), prograde, case.branch == "right", 35, 1e-5, 1e-7)[0]
+                        float(case.tof), int(case.revolutions), prograde, case.branch == "right", *defaults)[0]
 
     def batch(r1, r2, tof, mu):
         v1 = np.empty_like(r1)
         for i in range(tof.size):
-            v1[i] = function(mu, r1[i], r2[i], tof[i], 0, True, True, 35, 1e-5, 1e-7)[0]
+            v1[i] = function(mu, r1[i], r2[i], tof[i], 0, True, True, *defaults)[0]
         return v1
 
     start = time.perf_counter()

@@ -126,7 +126,8 @@ def _scene_dict(report):
         "versions": report.versions, "time_modes": report.time_modes,
         "code_units": {"length_m": report.code_units.length, "gm_m3_s2": report.code_units.gm,
                        "time_s": report.code_units.time},
-        "residual_times_s": report.residual_times.tolist(), "period_s": report.period,
+        "time_unit": "code time unit sqrt(L**3 / GM), G = 1" if report.in_code_units else "s",
+        "residual_times": report.residual_times.tolist(), "period": report.period,
         "residuals": {name: series.tolist() for name, series in report.residuals.items()},
     }
 

@@ -67,6 +67,17 @@ def test_orbit_plane_of_a_circle_a_comet_and_an_orbit_inside_its_primary():
     assert "inside Earth" in ax.get_title()
 
 
+def test_orbit_plane_draws_an_open_orbit_out_to_the_body_at_the_given_times():
+    """q = 7000 km, e = 1.5: after 6 h the body is 140,000 km out, twice the default 10 q window; the arc runs past
+    it (to 1.05 times its distance), so every dot sits on a drawn part of the conic."""
+    _, ax = orbit_plane(Orbit.from_elements("Earth", q=7000 * u.km, e=1.5), times=[3, 6] * u.h)
+    lines = {line.get_label(): line.get_xydata() for line in ax.get_lines()}
+    reach = np.hypot(*lines["orbit, e = 1.5"].T).max()
+    furthest = np.hypot(*lines["body at given times"].T).max()
+    assert furthest == pytest.approx(140.246, rel=1e-5) and "10^3 km" in ax.get_xlabel()
+    assert 1.0 < reach / furthest <= 1.05 + 1e-12  # measured 1.05
+
+
 def test_orbit_plane_refuses_arrays_of_orbits():
     with pytest.raises(ValueError, match="index it first"):
         orbit_plane(Orbit.from_elements("Earth", a=[7000, 8000] * u.km, e=0.1))
@@ -103,6 +114,27 @@ def test_validation_residuals_count_time_in_each_scenes_own_period(validated, tm
         assert (tmp_path / f"r.{suffix}").stat().st_size > 1000
     with pytest.raises(ValueError, match=".png, .svg or .pdf"):
         save(fig, tmp_path / "r.gif")
+
+
+def test_validation_overview_of_scenes_without_predicted_positions_says_so():
+    from orbits.plot import validation_overview
+    from orbits.validate import load
+
+    _, panels = validation_overview(validate([load("ring_3")]))  # a ring checks its break-up, not positions
+    (only,) = panels
+    assert only.texts[0].get_text() == "no positions are predicted in ring_3: the report's checks are all"
+
+
+def test_validation_json_says_in_which_unit_its_times_are(validated):
+    """A data scene's residual times and period are in seconds, a model scene's in G = 1 code time units."""
+    from orbits.constants import BODIES
+
+    scenes = {scene["name"]: scene for scene in validated.to_dict()["scenes"]}
+    circular, sphere = scenes["circular"], scenes["expanding_universe"]
+    assert circular["time_unit"] == "s" and sphere["time_unit"].startswith("code time unit")
+    period = 2 * np.pi * np.sqrt(7e6**3 / BODIES["Earth"].gm)  # a test particle on a 7000 km circle about the Earth
+    assert circular["period"] == pytest.approx(period, rel=1e-15) and sphere["period"] is None
+    assert circular["residual_times"][-1] == pytest.approx(100 * period, rel=1e-15)  # 100 periods
 
 
 def test_validation_tracks_draw_the_integrations_on_the_closed_form(validated):

@@ -152,3 +152,22 @@ def test_errors_exit_2_with_one_line_on_stderr(args, fragment):
     assert fragment in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
     assert result.stdout == ""
+
+
+def test_a_warning_not_of_orbits_is_passed_on_once_and_the_command_returns():
+    """orbits' own warnings become one stderr line each; any other warning goes back to Python's machinery once,
+    outside the recording (re-issued inside it, it was recorded again and the loop over the record never ended)."""
+    import warnings
+
+    from orbits import OrbitsWarning
+    from orbits_cli.options import reports_errors
+
+    def command():
+        warnings.warn("from a library", UserWarning, stacklevel=1)
+        warnings.warn("from orbits", OrbitsWarning, stacklevel=1)
+        return 42
+
+    with warnings.catch_warnings(record=True) as passed_on:
+        warnings.simplefilter("always")
+        assert reports_errors(command)() == 42
+    assert [(w.category, str(w.message)) for w in passed_on] == [(UserWarning, "from a library")]

@@ -144,3 +144,29 @@ def test_spring_dashpot_restitution():
     tests/validation/test_mechanics_integration.py."""
     assert collisions.restitution_of_spring_dashpot(0.0) == 1.0
     assert collisions.restitution_of_spring_dashpot(0.5) == pytest.approx(math.exp(-math.pi / math.sqrt(3)))
+
+
+def test_energy_lost_is_the_drop_in_kinetic_energy():
+    """(1 - e**2) mu v_n**2 / 2 against K - K' summed at 50 digits from the velocities after (independent of the
+    closed form): head-on, oblique along a given normal and along the relative velocity; exactly 0 when elastic.
+    Measured 6.7e-16 at most (relative; the velocities after are float64, so K' carries their rounding)."""
+    cases = [
+        (2.0, 3.0, 1.0, -1.0, 0.5, None, False),
+        (0.3, 12.5, 7.0, 0.25, 0.8, None, False),
+        (2.0, [3.0, 1.0, 0.0], 1.0, [-1.0, 0.5, 0.2], 0.6, [1.0, 2.0, 0.0], True),
+        (5.0, [0.0, 4.0, 1.0], 3.0, [1.0, -2.0, 0.0], 0.3, None, True),
+    ]
+    with mpmath.workdps(50):
+        for m1, v1, m2, v2, e, normal, vectors in cases:
+            if vectors:
+                w1, w2 = collisions.oblique_velocities_after(m1, v1, m2, v2, e, normal)
+            else:
+                w1, w2 = collisions.velocities_after(m1, v1, m2, v2, e)
+
+            def kinetic(m, v):
+                return mpmath.mpf(m) * sum(mpmath.mpf(float(x)) ** 2 for x in np.atleast_1d(v)) / 2
+
+            drop = kinetic(m1, v1) + kinetic(m2, v2) - kinetic(m1, w1) - kinetic(m2, w2)
+            lost = collisions.energy_lost(m1, v1, m2, v2, e, normal, vectors)
+            assert abs(float((lost - drop) / drop)) <= 4e-15, (m1, v1, e)
+            assert collisions.energy_lost(m1, v1, m2, v2, 1.0, normal, vectors) == 0.0
