@@ -131,7 +131,8 @@ def epoch(value: Any, scale: str = "utc") -> Time:
     parsed = [_one_epoch(t, scale) for t in texts]
     if isinstance(value, str):
         return parsed[0]
-    return Time([p.tdb for p in parsed])
+    jd1, jd2 = np.array([tdb_julian_dates(p) for p in parsed]).T  # each through the offline, quiet conversion
+    return Time(jd1, jd2, format="jd", scale="tdb")
 
 
 @contextlib.contextmanager

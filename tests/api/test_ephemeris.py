@@ -293,6 +293,24 @@ def test_bad_epochs_are_one_line_errors(when, message):
         ephemeris.state("Mars", when)
 
 
+def test_a_list_of_epochs_is_each_epoch_in_its_own_scale():
+    """A list mixes scales as single strings do: each entry becomes the TDB instant its own string gives (the
+    same two-part Julian date), with no ERFA warning for a UTC date past the leap-second table (warnings are
+    errors in the tests)."""
+    texts = ["2026-11-25", "2026-11-25 TDB", "1950-06-01 TT", "2040-01-01", "2001-03-04 12:00 TAI"]
+    listed = ephemeris.state("Mars", texts, center="Sun")
+    for k, text in enumerate(texts):
+        single = ephemeris.state("Mars", text, center="Sun")
+        np.testing.assert_array_equal(listed.r_si[k], single.r_si)
+
+
+def test_a_ut1_epoch_in_a_list_outside_the_installed_table_is_refused_not_downloaded():
+    """Before the fix a list went around the offline guard: astropy tried to download the IERS table and raised
+    its own multi-line error."""
+    with pytest.raises(OrbitDomainError, match="outside the installed Earth-orientation table"):
+        ephemeris.state("Mars", ["2020-01-02", "2049-01-01 UT1"])
+
+
 def test_bad_names_and_sources_are_one_line_errors():
     with pytest.raises(UnknownNameError, match="did you mean Mars"):
         ephemeris.state("Marz", "2026-11-25")
