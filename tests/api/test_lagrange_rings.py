@@ -47,6 +47,26 @@ def test_units_and_scaling_match_the_core(earth_moon):
     assert np.isinf(earth_moon.e_folding_times[3]) and earth_moon.triangular_points_stable
 
 
+def test_earth_moon_e_folding_times_are_the_collinear_characteristic_roots(earth_moon):
+    """The README's 1.48, 2.01 and 24.4 d at L1..L3, against mpmath at 40 digits: each point by findroot on the
+    rotating-frame force, then the real root of the planar characteristic equation, lambda**2 = (c2 - 2 +
+    sqrt(9 c2**2 - 8 c2)) / 2 with c2 = (1 - mu) / |x + mu|**3 + mu / |x - 1 + mu|**3 (Szebehely 1967), and
+    e-folding time 1 / (lambda n). Measured 4e-16 relative."""
+    n = float(earth_moon.angular_velocity.to_value(u.rad / u.s))
+    expected = []
+    with mp.workdps(40):
+        mu = mpf(float(earth_moon.mu))
+        force = lambda x: x - (1 - mu) * (x + mu) / abs(x + mu) ** 3 - mu * (x - 1 + mu) / abs(x - 1 + mu) ** 3
+        for guess in ("0.84", "1.16", "-1.0"):
+            x = mp.findroot(force, mpf(guess))
+            c2 = (1 - mu) / abs(x + mu) ** 3 + mu / abs(x - 1 + mu) ** 3
+            rate = mp.sqrt((c2 - 2 + mp.sqrt(9 * c2**2 - 8 * c2)) / 2)
+            expected.append(float(1 / (rate * n)))
+    days = earth_moon.e_folding_times[:3].to_value(u.day)
+    np.testing.assert_allclose(earth_moon.e_folding_times[:3].to_value(u.s), expected, rtol=4e-15, atol=0)
+    assert [round(d, 2 if d < 10 else 1) for d in days] == [1.48, 2.01, 24.4]
+
+
 def test_masses_as_quantities_and_units_invariance():
     by_mass = RestrictedThreeBody.from_primaries(2e30 * u.kg, 1e27 * u.kg, 5 * u.AU)
     by_gm = RestrictedThreeBody.from_primaries(2e30 * G * u.m**3 / u.s**2, 1e27 * G * u.m**3 / u.s**2, 5 * u.AU)

@@ -27,6 +27,18 @@ def test_the_1pn_term_brings_mercury_and_earth_to_the_kilometre(report):
     assert values["Mercury"] < 2.0 and values["Earth"] < 10.0
 
 
+def test_from_1950_the_floors_larger_epoch_is_reached_and_passes():
+    """The tolerances are 3x the worse of two measured epochs (orbits/validate/models.py SOLAR_SYSTEM_FLOOR_KM).
+    From 1950 the Jupiter system, a point here, misses DE421 by 20.7 km (0.94 km from J2000) and Mars by 5.8 km:
+    the floor is reached there, so the bound is the physics', not slack. Measured 20.7 and 5.8 km."""
+    earlier = validate_scene(models.build("solar_system", {"epoch": "1950-01-01"}))
+    assert earlier.passed, [(c.quantity, c.errors) for c in earlier.checks if not c.passed]
+    values = {c.quantity.split(":")[0]: c.values["heyoka"] for c in earlier.checks if "max km" in c.quantity}
+    floors = models.SOLAR_SYSTEM_FLOOR_KM[True]
+    assert 0.9 * floors["Jupiter"] <= values["Jupiter"] <= floors["Jupiter"] * 1.01, values["Jupiter"]
+    assert values["Mars"] <= floors["Mars"] * 1.01
+
+
 def test_without_relativity_mercurys_perihelion_lags_by_gr_advance():
     """The Newtonian perihelion trails DE421 by GR's 42.98 arcsec/century: measured 4.2982 arcsec in 10 years
     against 4.298 (relative 5e-5)."""
