@@ -1100,7 +1100,7 @@ def ring_breakup(
     ax.set_xlabel(f"time [ring periods 2 pi / omega{one}]")
     ax.set_ylabel("largest chord error [ring radius]")
     ax.grid(alpha=0.3, which="major")
-    ax.legend(loc="best", fontsize="small")
+    _legend_outside(ax)
     return fig, ax
 
 

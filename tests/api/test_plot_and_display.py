@@ -243,7 +243,7 @@ def test_ring_breakup_draws_the_prediction_through_the_seed():
     from orbits.plot import ring_breakup
 
     times = np.linspace(0, 40, 50)  # in 1 / omega
-    _, ax = ring_breakup(times, 1e-16 * np.exp(times), 1.0, 29.9, period=2 * u.d)
+    fig, ax = ring_breakup(times, 1e-16 * np.exp(times), 1.0, 29.9, period=2 * u.d)
     prediction = [line for line in ax.get_lines() if line.get_label().startswith("round-off")][0]
     np.testing.assert_allclose(prediction.get_ydata(), 1e-16 * np.exp(times), rtol=1e-15)
     np.testing.assert_allclose(prediction.get_xdata(), times / (2 * np.pi), rtol=1e-15)  # in ring periods
@@ -251,6 +251,9 @@ def test_ring_breakup_draws_the_prediction_through_the_seed():
     breakup = [line for line in ax.get_lines() if line.get_label().startswith("predicted break-up")][0]
     assert breakup.get_label() == "predicted break-up, 4.76 periods" and breakup.get_xdata()[0] == 29.9 / (2 * np.pi)
     assert ax.get_yscale() == "log" and ax.get_xlabel() == "time [ring periods 2 pi / omega, 1 period = 2 d]"
+    fig.canvas.draw()
+    legend, label = ax.get_legend().get_window_extent(), ax.xaxis.label.get_window_extent()
+    assert legend.y1 <= label.y0 and len(ax.get_legend().get_texts()) == 4  # below the axes and their label
 
 
 def test_scale_factor_runs_through_turnaround_to_the_big_crunch():
@@ -366,6 +369,44 @@ def test_orbits_3d_view_and_trajectories():
     x, y, z = line.get_data_3d()
     np.testing.assert_allclose(np.stack([x, y, z], axis=-1), r.to_value(u.km), rtol=1e-12)
     assert ax.name == "3d" and "z [km]" in ax.get_zlabel()
+
+
+def test_orbit_plot_draws_the_orbit_about_its_primary():
+    """Orbit.plot is orbits.plot.orbits for one orbit: its conic, its apsides and where it is now, about the
+    primary to scale, in labelled axes; the checks are the focal equation and the elements, not the plotter."""
+    import matplotlib.pyplot as plt
+
+    a, e = 26600.0, 0.74  # km; a Molniya-like ellipse, first in the equatorial plane with periapsis at -y
+    orbit = Orbit.from_elements("Earth", a=a * u.km, e=e, argp=270 * u.deg, nu=30 * u.deg)
+    fig, ax = orbit.plot()
+    track = [line for line in ax.get_lines() if line.get_label() == "orbit, e = 0.74"][0].get_xydata()
+    r, theta = np.hypot(*track.T), np.arctan2(track[:, 1], track[:, 0])
+    assert r.min() == pytest.approx(a * (1 - e), rel=1e-15)  # measured 0: the samples include both apsides
+    assert r.max() == pytest.approx(a * (1 + e), rel=1e-15)
+    np.testing.assert_allclose(r * (1 + e * np.cos(theta - np.radians(270))), a * (1 - e * e),
+                               rtol=5e-15)  # r = p / (1 + e cos(theta - omega)) at every point: measured 6.7e-16
+    peri = _by_gid(ax, "periapsis")[0].get_xydata()[0]  # x is cos(270 deg) q: measured 1.3e-12 km
+    assert tuple(peri) == pytest.approx((0, -a * (1 - e)), rel=1e-15, abs=1e-11)
+    np.testing.assert_allclose(_by_gid(ax, "body now")[0].get_xydata()[0], orbit.r.to_value(u.km)[:2],
+                               rtol=1e-15)  # measured 0
+    earth = [patch for patch in ax.patches if patch.get_label() == "Earth (to scale)"][0]
+    assert earth.get_radius() == pytest.approx(6378.1, rel=1e-12)  # km, IAU 2015 nominal equatorial radius
+    assert earth.get_center() == (0, 0) and {"periapsis", "apoapsis", "body now"} <= labels(ax)
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("x [km]", "y [km]")
+    fig.canvas.draw()
+    assert ax.get_legend().get_window_extent().x0 >= ax.get_window_extent().x1  # the legend is off the data
+    # tilted by i = 63.4 deg and seen edge-on along y: periapsis at z = -q sin i, apoapsis at z = +Q sin i
+    tilted = Orbit.from_elements("Earth", a=a * u.km, e=e, inc=63.4 * u.deg, argp=270 * u.deg)
+    _, given = plt.subplots()
+    fig, ax = tilted.plot(ax=given, projection="xz")
+    assert ax is given and fig is given.figure and (ax.get_xlabel(), ax.get_ylabel()) == ("x [km]", "z [km]")
+    sin_i = np.sin(np.radians(63.4))
+    assert _by_gid(ax, "periapsis")[0].get_xydata()[0, 1] == pytest.approx(-a * (1 - e) * sin_i,
+                                                                         rel=1e-15)  # measured 1.1e-16
+    assert _by_gid(ax, "apoapsis")[0].get_xydata()[0, 1] == pytest.approx(a * (1 + e) * sin_i,
+                                                                        rel=1e-15)  # measured 0
+    with pytest.raises(ValueError, match="projection 'xw'"):
+        orbit.plot(projection="xw")
 
 
 def test_near_parabolic_comet_is_drawn_over_a_sensible_window():
