@@ -1,7 +1,8 @@
 """Physical constants and a few named bodies, each value with its source.
 
 G is astropy's CODATA 2018 value. Gravitational parameters are the IAU 2015 nominal values
-(Resolution B3) where one exists, otherwise the JPL planetary ephemeris value; masses are GM / G.
+(Resolution B3) where one exists, otherwise a JPL value (planetary ephemeris, satellite ephemerides, Horizons'
+mass file, Small-Body Database) or, for Vesta, Dawn's gravity field; masses are GM / G.
 Heliocentric elements are the J2000 mean elements of Standish (1992), "Keplerian Elements for
 Approximate Positions of the Major Planets", Table 1 (ecliptic and equinox of J2000).
 """
@@ -98,6 +99,12 @@ _WGCCRE = "IAU WGCCRE 2015, Archinal et al. (2018), Celest. Mech. Dyn. Astr. 130
 _HORIZONS = ("JPL Horizons mass file gm_Horizons.pck, version 3.0 of 2017-05-09 (J. Giorgini): planets alone from "
              "the satellite ephemerides MAR097, JUP340, SAT393, URA111, NEP081, PLU055")
 _HORIZONS_MOON = _HORIZONS.replace("planets alone", "moons")
+#: the later mass file, read in two copies: JPL's gm_Horizons.pck revision of 2025-01-29 and the 2021-09-30 one
+#: that REBOUND 5.2.2 carries (rebound/horizons.py, HORIZONS_MASS_DATA); its asteroids 2000001-2000704 are
+#: "SB441-N16 small-body integration perturber file (DE441 masses)", the masses DE440 uses too
+_HORIZONS_2025 = ("JPL Horizons mass file gm_Horizons.pck, version 4 (J. Giorgini), revision of 2025-01-29: "
+                  "{what}")
+_DE441_ASTEROID = _HORIZONS_2025.format(what="DE440/DE441 small-body perturber mass (SB441-N16)")
 _STANDISH = "Standish (1992) J2000 mean elements, Table 1 (valid 1800-2050)"
 
 
@@ -138,7 +145,11 @@ _CATALOGUE = [
     _planet("Mercury", 22_031.78 * _KM3, _DE430, 2440.53, 58.6462, "WGCCRE 2015 (6.1385108 deg/d)",
             _standish(0.38709927, 0.20563593, 7.00497902, 252.25032350, 77.45779628, 48.33076593)),
     _planet("Venus", 324_858.592 * _KM3, _DE430, 6051.8, 243.0185, "WGCCRE 2015 (-1.4813688 deg/d)",
-            _standish(0.72333566, 0.00677672, 3.39467605, 181.97909950, 131.60246718, 76.67984255), retrograde=True),
+            _standish(0.72333566, 0.00677672, 3.39467605, 181.97909950, 131.60246718, 76.67984255), retrograde=True,
+            # J2 = -sqrt(5) C20 from the normalised C20 = -.1969723357760000E-05 of the file, at its 6051 km
+            j2=math.sqrt(5.0) * 1.969723357760e-6, j2_radius_km=6051.0,
+            j2_source="MGNP180U, Konopliv et al. (1999), Icarus 139; PDS MGN-V-RSS-5-GRAVITY-L2-V1.0 file SHGJ180U.A01 "
+                      "(normalised C20 = -1.96972335776e-6 at the 6051.0 km reference radius; J2 = -sqrt(5) C20)"),
     Body("Earth", 3.986004e14, 6.3781e6, SIDEREAL_DAY,
          f"GM and equatorial radius: {_IAU2015}; rotation: IERS sidereal day; J2: IERS Conventions (2010), Table 1.1; "
          f"system GM (Earth and Moon): {_DE430}",
@@ -178,20 +189,43 @@ _CATALOGUE = [
             _standish(39.48211675, 0.24882730, 17.14001206, 238.92903833, 224.06891629, 110.30393684),
             retrograde=True, kind="dwarf planet",
             system_gm_km3=977.0),
+    # 62.6284 was cited to Park et al. (2016), Nature 537 (Dawn) before; that attribution is not re-checked here
     Body("Ceres", 62.6284 * _KM3, 469.7e3, 9.074170 / 24.0 * _DAY,
-         f"GM: Park et al. (2016), Nature 537 (Dawn); mean radius and rotation (952.1532635 deg/d): {_WGCCRE}",
+         "GM: the JPL Small-Body Database value as JPL Horizons prints it for 1 Ceres ('GM= 62.6284', with "
+         "'RAD= 469.7', 'ROTPER= 9.07417'; Horizons output of 2022-07-07); mean radius and rotation "
+         f"(952.1532635 deg/d): {_WGCCRE}",
          None, "Sun", "dwarf planet"),
-    Body("Vesta", 17.288245 * _KM3, 262.7e3, 5.342128 / 24.0 * _DAY,
-         f"GM: Konopliv et al. (2014), Icarus 240 (Dawn); mean radius and rotation (1617.3329428 deg/d): {_WGCCRE}",
+    # VESTA20H's GM to all its digits; the catalogue had 17.288245 km3/s2, 1.8e-9 from it
+    Body("Vesta", 17.2882449693 * _KM3, 262.7e3, 5.342128 / 24.0 * _DAY,
+         "GM: Konopliv et al. (2014), Icarus 240 (Dawn), the VESTA20H gravity field's GM, 17,288,244,969.3 m3/s2 "
+         f"(as pyshtools.constants.Vesta carries it); mean radius and rotation (1617.3329428 deg/d): {_WGCCRE}",
          None, "Sun", "asteroid"),
-    Body("Eris", 1.67e22 * G, 1163e3, 15.786 * _DAY,
-         "GM: G x mass 1.67e22 kg, Brown & Schaller (2007), Science 316; radius: Sicardy et al. (2011), Nature 478; "
-         "rotation: Szakats et al. (2023), A&A 669 (synchronous with Dysnomia)", None, "Sun", "dwarf planet"),
+    # the largest asteroids after Ceres and Vesta; radii are volume-equivalent, like Ceres' and Vesta's mean radii
+    Body("Pallas", 13.665878145967422 * _KM3, (275.0 * 258.0 * 238.0) ** (1.0 / 3.0) * _KM, 360.0 / 1105.8036 * _DAY,
+         f"GM: {_DE441_ASTEROID}, BODY2000002_GM; radius: volume-equivalent (abc)**(1/3) = 256.6 km of the "
+         "triaxial-ellipsoid radii a = 275, b = 258, c = 238 km of Carry et al. (2010), Icarus 205 (arXiv:0912.3626); "
+         "rotation: the IAU WGCCRE prime meridian W = 38 + 1105.8036 d deg (a 7.8132 h period), as a port of NAIF's "
+         "T_PCKANG test routine codes it",
+         None, "Sun", "asteroid"),
+    Body("Hygiea", 5.6251476453852289 * _KM3, 217e3, 13.8 / 24.0 * _DAY,
+         f"GM: {_DE441_ASTEROID}, BODY2000010_GM; volume-equivalent radius 217 +- 7 km and rotation period 13.8 h "
+         "(half the earlier 27.6 h; sense of rotation not checked): Vernazza et al. (2020), Nature Astronomy, "
+         "doi:10.1038/s41550-019-0915-8 (VLT/SPHERE)",
+         None, "Sun", "asteroid"),
+    # gm_Horizons.pck gives Eris the whole system mass (Dysnomia's GM set to 0 there)
+    Body("Eris", 1098.9 * _KM3, 1163e3, 15.786 * _DAY,
+         "GM: " + _HORIZONS_2025.format(what="BODY920136199_GM = 1.0989E+03, the Eris system mass of Brozovic, JPL "
+                                             "IOM 392R-22-003 (2022-09-01), all given to Eris (Dysnomia's GM 0)")
+         + "; radius: Sicardy et al. (2011), Nature 478; rotation: Szakats et al. (2023), A&A 669 (synchronous with "
+         "Dysnomia)", None, "Sun", "dwarf planet"),
     Body("Moon", 4_902.8000661637961 * _KM3, 1.7374e6, 27.321661 * _DAY,
-         f"GM: {_DE430}; radius: {_WGCCRE}; rotation: synchronous, the sidereal month 27.321661 d",
+         f"GM: {_DE430}; radius: {_WGCCRE}; rotation: synchronous, the sidereal month 27.321661 d; J2: the Lunar "
+         "Prospector field LP150Q, Konopliv et al. (2001), Icarus 150; PDS LP-L-RSS-5-GRAVITY-V1 file JGL150Q1 "
+         "(normalised C20 = -9.09010949481e-5 at the 1738 km reference radius; J2 = -sqrt(5) C20)",
          MeanElements("Earth", 3.84399e8, 0.0549, _deg(5.145), 0.0, 0.0, 0.0,
                       "NASA Moon fact sheet mean orbit (node and periapsis precess; set to 0)"),
-         "Earth", "moon"),
+         # J2 = -sqrt(5) C20 from the normalised C20 = -.9090109494810000E-04 of JGL150Q1, at its 1738 km
+         "Earth", "moon", math.sqrt(5.0) * 9.09010949481e-5, 1_738e3),
     _moon("Phobos", "Mars", 7.087546066894452e-4, 11.08, 0.31891023),
     _moon("Deimos", "Mars", 9.615569648120313e-5, 6.2, 1.26244),
     _moon("Io", "Jupiter", 5959.924010272514, 1821.49, 1.769137786),

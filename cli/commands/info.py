@@ -38,20 +38,24 @@ def show(fmt: str) -> None:
 
 
 def _bodies(rows: list):
-    """The catalogue as a table in natural units: GM km3/s2, radius km, rotation d (- retrograde), J2."""
+    """The catalogue as a table in natural units: GM km3/s2, radius km, rotation d (- retrograde), and J2 (times
+    1e6) beside the reference radius of its fit, which J2 is meaningless without (Neptune's 3408.43e-6 holds at
+    25,225 km, not at its 24,764 km equatorial radius)."""
     from rich import box
     from rich.table import Table
 
     from orbits.display import number
 
-    table = Table(box=box.SIMPLE, pad_edge=False, padding=(0, 1), collapse_padding=True,
-                  title="bodies (sources below; a negative rotation is retrograde)")
+    table = Table(box=box.SIMPLE, pad_edge=False, padding=(0, 0),
+                  title="bodies (sources below; rot. < 0: retrograde; @ R: the reference radius of J2)")
     for name, justify in (("body", "left"), ("kind", "left"), ("orbits", "left"), ("GM km3/s2", "right"),
-                          ("R km", "right"), ("rot. d", "right"), ("J2", "right")):
+                          ("R km", "right"), ("rot. d", "right"), ("1e6 J2", "right"), ("@ R km", "right")):
         table.add_column(name, justify=justify, no_wrap=True)
     for b in rows:
         rotation = b["rotation_period_s"] / 86400.0 * (-1 if b["retrograde"] else 1)
+        has_j2 = b["j2"] is not None
         table.add_row(b["name"], b["kind"], b["parent"] or "", number(b["gm_m3_s2"] / 1e9, 7),
                       number(b["radius_m"] / 1e3, 6), number(rotation, 6),
-                      "" if b["j2"] is None else number(b["j2"], 5))
+                      number(b["j2"] * 1e6, 6) if has_j2 else "",
+                      number(b["j2_radius_m"] / 1e3, 6) if has_j2 else "")
     return table

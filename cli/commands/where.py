@@ -19,7 +19,8 @@ from orbits_cli.options import (
 def command(
     body_name: Annotated[str, typer.Argument(metavar="BODY", help="a planet, Pluto, the Moon or a barycentre")],
     epoch: EpochOption = None,
-    observer: Annotated[str, typer.Option(help="where it is seen from (a planet, the Moon, the Sun)")] = "Earth",
+    observer: Annotated[str, typer.Option(help="where it is seen from: a planet, Pluto, the Moon or a barycentre "
+                                               "(not the Sun: elongation and phase are measured from it)")] = "Earth",
     ephemeris: EphemerisOption = Ephemeris.auto,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,

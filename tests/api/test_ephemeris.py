@@ -22,8 +22,10 @@ RNG_EPOCHS = np.random.default_rng(20261125).uniform(2415021.0, 2469807.0, 200) 
 
 def test_the_catalogue_has_the_sun_planets_dwarf_planets_and_major_moons():
     names = set(BODIES)
-    assert {"Sun", *PLANETS, "Ceres", "Vesta", "Eris", "Moon", "Phobos", "Deimos", "Io", "Europa", "Ganymede",
-            "Callisto", "Titan", "Triton", "Charon"} <= names
+    assert {"Sun", *PLANETS, "Ceres", "Vesta", "Pallas", "Hygiea", "Eris", "Moon", "Phobos", "Deimos", "Io",
+            "Europa", "Ganymede", "Callisto", "Titan", "Triton", "Charon"} <= names
+    assert {BODIES[n].kind for n in ("Vesta", "Pallas", "Hygiea")} == {"asteroid"}
+    assert {BODIES[n].kind for n in ("Pluto", "Ceres", "Eris")} == {"dwarf planet"}
     for b in BODIES.values():
         assert b.source and b.gm > 0 and b.radius > 0 and b.rotation_period > 0
         assert b.parent is None or b.parent in BODIES
@@ -84,8 +86,8 @@ def test_every_gm_is_its_sources_value():
     the Moon and the moons, and the N-body scene's DE430 masses, each within 4e-14 (measured 3.6e-15 at most: the
     catalogue rounds a few of the file's last digits, e.g. 126712764.8 for 1.2671276480000021e8). The IAU 2015
     nominal values of the Sun, Earth and Jupiter are astropy's (above), rounded from the ephemeris values:
-    3.2e-10, 8.9e-8 and 3.9e-8 from Horizons'. Ceres and Vesta carry Dawn's values (Park et al. 2016,
-    Konopliv et al. 2014), 0.3 % and 1.4e-5 from the DE431 perturber masses."""
+    3.2e-10, 8.9e-8 and 3.9e-8 from Horizons'. Ceres and Vesta carry Dawn's values, 0.3 % and 1.4e-5 from the
+    DE431 perturber masses (they are held to their own sources in the next test)."""
     for name, naif in CATALOGUE_IDS.items():
         assert BODIES[name].gm == pytest.approx(HORIZONS_GM_2017[naif] * 1e9, rel=4e-14), name
     for name, naif in SYSTEM_IDS.items():
@@ -101,6 +103,47 @@ def test_every_gm_is_its_sources_value():
     galileans = sum(BODIES[m].gm for m in ("Io", "Europa", "Ganymede", "Callisto"))
     assert HORIZONS_GM_2017["599"] * 1e9 + galileans == pytest.approx(BODIES["Jupiter"].system_gm, rel=7.5e-9)
     assert BODIES["Pluto"].gm + BODIES["Charon"].gm == pytest.approx(BODIES["Pluto"].system_gm, rel=2e-3)
+
+
+#: the later mass file, transcribed by hand (km3/s2) from JPL's gm_Horizons.pck revision of 2025-01-29: the
+#: asteroids are its "SB441-N16 small-body integration perturber file (DE441 masses)" (REBOUND 5.2.2's copy of the
+#: 2021-09-30 revision, rebound/horizons.py, has the same digits), Eris its system mass from Brozovic, JPL IOM
+#: 392R-22-003 (2022), with Dysnomia's GM set to 0
+HORIZONS_GM_2025 = {"2000001": 6.2628888644409933e1, "2000002": 1.3665878145967422e1,
+                    "2000004": 1.7288232879171513e1, "2000010": 5.6251476453852289e0, "920136199": 1.0989e3}
+
+
+def test_small_body_gms_are_their_sources_values():
+    """Each to 1e-9 of a transcription of its source: Pallas, Hygiea and Eris of Horizons' mass file (above),
+    Ceres of the JPL Small-Body Database as Horizons prints it ("GM= 62.6284"), Vesta of Dawn's VESTA20H field
+    (Konopliv et al. 2014; GM 17,288,244,969.3 m3/s2 as pyshtools.constants.Vesta has it). Independently, DE440's
+    masses (the same file) agree with Dawn's for Ceres and Vesta to 7.8e-6 and 7.0e-7, and DE431's (the 2017 file,
+    BIG16: Pallas 13.923011, Hygiea 5.542392) differ from DE440's by 1.8 % and 1.5 %."""
+    for name, naif in (("Pallas", "2000002"), ("Hygiea", "2000010"), ("Eris", "920136199")):
+        assert BODIES[name].gm == pytest.approx(HORIZONS_GM_2025[naif] * 1e9, rel=1e-9), name
+    assert BODIES["Ceres"].gm == pytest.approx(62.6284e9, rel=1e-9)
+    assert BODIES["Vesta"].gm == pytest.approx(17_288_244_969.3, rel=1e-9)
+    assert BODIES["Ceres"].gm == pytest.approx(HORIZONS_GM_2025["2000001"] * 1e9, rel=2e-5)
+    assert BODIES["Vesta"].gm == pytest.approx(HORIZONS_GM_2025["2000004"] * 1e9, rel=2e-6)
+    assert BODIES["Pallas"].gm == pytest.approx(13.923011e9, rel=2.5e-2)
+    assert BODIES["Hygiea"].gm == pytest.approx(5.542392e9, rel=2e-2)
+
+
+def test_j2_of_venus_and_the_moon_come_from_their_gravity_fields():
+    """J2 = -sqrt(5) C20 from the fully normalised C20 of the field files, at each file's reference radius:
+    Venus MGNP180U (PDS SHGJ180U.A01: C20 = -.1969723357760000E-05 at 6051.0 km; its GM, 324858.592079 km3/s2, is
+    DE430's Venus to 2.4e-10) and the Moon's Lunar Prospector LP150Q (PDS JGL150Q1: C20 = -.9090109494810000E-04
+    at 1738.0 km). Bodies whose J2 could not be checked against a source carry none."""
+    venus, moon = BODIES["Venus"], BODIES["Moon"]
+    assert venus.j2 == pytest.approx(-math.sqrt(5) * -0.1969723357760000e-05, rel=1e-9)
+    assert venus.j2_radius == 6_051_000.0
+    assert venus.gm == pytest.approx(0.3248585920790000e06 * 1e9, rel=1e-9)
+    assert moon.j2 == pytest.approx(-math.sqrt(5) * -0.9090109494810000e-04, rel=1e-9)
+    assert moon.j2_radius == 1_738_000.0
+    for b in BODIES.values():
+        assert (b.j2 is None) == (b.j2_radius is None), b.name
+    with_j2 = {b.name for b in BODIES.values() if b.j2 is not None}
+    assert with_j2 == {"Venus", "Earth", "Moon", "Mars", "Jupiter", "Saturn", "Uranus", "Neptune"}
 
 
 def test_j2_of_the_earth_is_the_iers_value():

@@ -49,6 +49,7 @@ def test_orbit_at_an_epoch_is_the_osculating_orbit():
     (["orbit", "--epoch", "2026-11-25"], "needs a BODY"),
     (["orbit", "Mars", "--epoch", "2026-11-25", "--a", "1 AU"], "drop the elements"),
     (["orbit", "Titan", "--epoch", "2026-11-25"], "not in the ephemeris"),
+    (["where", "Mars", "--epoch", "2026-11-25", "--observer", "Sun"], "must not be the Sun"),
 ])
 def test_bad_input_is_one_line_with_exit_status_2(args, message):
     result = run(*args)
@@ -62,8 +63,19 @@ def test_info_lists_the_catalogue():
     assert result.exit_code == 0, result.output
     bodies = {b["name"]: b for b in json.loads(result.stdout)["bodies"]}
     assert bodies["Titan"]["parent"] == "Saturn" and bodies["Venus"]["retrograde"] is True
+    assert bodies["Neptune"]["j2_radius_m"] == 25_225e3 and bodies["Pallas"]["kind"] == "asteroid"
     table = run("info").stdout
     assert "Ganymede" in table and max(len(line) for line in table.splitlines()) <= 80
+    assert "…" not in table  # no column cut short
+    # J2 is shown (times 1e6) with the reference radius of its fit, not alone
+    neptune = next(line for line in table.splitlines() if line.split()[:1] == ["Neptune"]).split()
+    assert neptune[-2:] == ["3408.43", "25225"]
+    assert "@ R km" in table
+
+
+def test_where_help_offers_only_observers_it_accepts():
+    text = " ".join(run("where", "--help").stdout.replace("│", " ").split())
+    assert "a planet, Pluto, the Moon or a barycentre (not the Sun" in text
 
 
 @pytest.mark.parametrize("body_name", ["Mars", "Saturn", "Moon"])
