@@ -287,20 +287,41 @@ def validation_report(data: dict[str, Any]) -> None:
     out.print(f"{verdict} ({len(data['scenes'])} scenes)")
 
 
+def _seconds(seconds: float | None) -> str:
+    """A run time in us, ms or s, 3 significant digits ("-" for none)."""
+    if seconds is None:
+        return "-"
+    if seconds < 1e-3:
+        return f"{seconds * 1e6:.3g} us"
+    return f"{seconds * 1e3:.3g} ms" if seconds < 1 else f"{seconds:.3g} s"
+
+
+def _setting(setting: Any) -> str:
+    """A knob setting in few characters: "epsilon=1e-07" -> "eps 1e-07", "steps per period=300" -> "300 steps/P"."""
+    text = str(setting)
+    if text.startswith("steps per period="):
+        return text.removeprefix("steps per period=") + " steps/P"
+    return text.replace("epsilon=", "eps ").replace("rtol=", "rtol ").replace("tol=", "tol ")
+
+
 def precision_tables(data: dict[str, Any]) -> None:
-    """Print the work-precision summary: per problem, each method's best error and its fastest run at target."""
+    """Print the work-precision summary, one table per problem: each method's best error with its setting and run
+    time, and its fastest run reaching the target."""
     out = console()
     target = _error(data["target"])
-    grid = Table(title=f"work-precision: best error, and the fastest run reaching {target}", title_justify="left",
-                 box=box.SIMPLE_HEAD, pad_edge=False)
-    for name in ("problem", "method", "best error", "at", "time", f"fastest <= {target}", "time"):
-        grid.add_column(escape(name), overflow="fold", justify="left" if name in ("problem", "method") else "right")
-    for row in data["summary"]:
-        fastest = row["fastest_at_target"] or "not reached"
-        grid.add_row(escape(row["problem"]), escape(row["method"]), _error(row["best_error"]),
-                     escape(str(row["best_setting"])), f"{row['best_seconds'] * 1e3:.3g} ms", escape(str(fastest)),
-                     "-" if row["fastest_seconds"] is None else f"{row['fastest_seconds'] * 1e3:.3g} ms")
-    out.print(grid)
+    out.print(f"work-precision: each method's best position error (relative to the orbit's size), and its fastest "
+              f"run reaching {target}")
+    problems = list(dict.fromkeys(row["problem"] for row in data["summary"]))
+    for problem in problems:
+        grid = Table(title=escape(problem), title_justify="left", box=box.SIMPLE_HEAD, pad_edge=False)
+        for name in ("method", "error", "at", "time", f"to {target}", "time"):
+            grid.add_column(escape(name), justify="left" if name == "method" else "right", no_wrap=True)
+        for row in (r for r in data["summary"] if r["problem"] == problem):
+            fastest = row["fastest_at_target"]
+            grid.add_row(escape(row["method"].replace("high_accuracy", "high acc.")), _error(row["best_error"]), escape(_setting(row["best_setting"])),
+                         _seconds(row["best_seconds"]), "not reached" if fastest is None else escape(_setting(fastest)),
+                         _seconds(row["fastest_seconds"]))
+        out.print(grid)
     notes = {r["note"] for r in data["rows"] if r["note"]}
     for note in sorted(notes):
         out.print(escape(textwrap.fill(f"note: {note}", out.width, initial_indent="  ", subsequent_indent="    ")))

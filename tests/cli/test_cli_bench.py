@@ -55,3 +55,19 @@ def test_validate_sweep_matches_the_sequential_run(tmp_path):
         for s in json.loads(path.read_text())["scenes"]
     ]
     assert strip(sequential) == strip(swept)
+
+
+def test_bench_precision_table_is_one_table_per_problem_within_80_columns(monkeypatch):
+    """Each problem heads its own table; each method is one row of at most 80 columns, settings and times in a
+    few characters (no wrapped or elided cell)."""
+    monkeypatch.setenv("COLUMNS", "80")
+    result = run("bench", "precision", "--quick", "--problem", "L4")
+    assert result.exit_code == 0, result.output
+    lines = result.output.splitlines()
+    assert max(len(line) for line in lines) <= 80 and "…" not in result.output
+    assert any(line.strip() == "Earth-Moon L4, 100 periods" for line in lines)
+    rows = {line.split()[0] + " " + line.split()[1]: line for line in lines if line.startswith((" orbits", " rebound",
+                                                                                                " heyoka"))}
+    assert "closed form" in rows["orbits analytic"] and " us" in rows["orbits analytic"]
+    assert "eps " in rows["rebound IAS15"] and "steps/P" in rows["rebound WHFast"]
+    assert "tol " in rows["heyoka long"] and len(rows) == 7
