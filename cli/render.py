@@ -318,7 +318,8 @@ def precision_tables(data: dict[str, Any]) -> None:
             grid.add_column(escape(name), justify="left" if name == "method" else "right", no_wrap=True)
         for row in (r for r in data["summary"] if r["problem"] == problem):
             fastest = row["fastest_at_target"]
-            grid.add_row(escape(row["method"].replace("high_accuracy", "high acc.")), _error(row["best_error"]), escape(_setting(row["best_setting"])),
+            method = row["method"].replace("high_accuracy", "high acc.")
+            grid.add_row(escape(method), _error(row["best_error"]), escape(_setting(row["best_setting"])),
                          _seconds(row["best_seconds"]), "not reached" if fastest is None else escape(_setting(fastest)),
                          _seconds(row["fastest_seconds"]))
         out.print(grid)
