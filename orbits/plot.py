@@ -727,11 +727,14 @@ def binary_sky(binary: "Binary", ax: Any = None, distance: u.Quantity | None = N
         ax.plot(peri[1] * scale, peri[0] * scale, marker="o", mfc="none", color="C0", ls="none", gid="periastron",
                 label="periastron")
     now_r, now_v = sky(float(rel.nu))
+    across = np.hypot(*now_v[:2])
+    along_the_line_of_sight = across <= 1e-9 * np.linalg.norm(now_v)  # edge on at a node: no direction to draw
     ax.plot(now_r[1] * scale, now_r[0] * scale, marker="o", color="k", ls="none", gid="star 2 now",
-            label="star 2 now")
-    arrow = now_v[:2] / max(np.hypot(*now_v[:2]), 1e-300) * 0.12 * reach
-    ax.annotate("", xy=(now_r[1] * scale + arrow[1], now_r[0] * scale + arrow[0]),
-                xytext=(now_r[1] * scale, now_r[0] * scale), arrowprops=dict(arrowstyle="->", color="k"))
+            label="star 2 now (moving along the line of sight)" if along_the_line_of_sight else "star 2 now")
+    if not along_the_line_of_sight:
+        arrow = now_v[:2] / across * 0.12 * reach
+        ax.annotate("", xy=(now_r[1] * scale + arrow[1], now_r[0] * scale + arrow[0]),
+                    xytext=(now_r[1] * scale, now_r[0] * scale), arrowprops=dict(arrowstyle="->", color="k"))
     ax.set_aspect("equal", adjustable="datalim")
     ax.invert_xaxis()  # east to the left, as the sky is seen
     text = display.unit_text(unit)

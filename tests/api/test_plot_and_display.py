@@ -569,6 +569,23 @@ def test_binary_sky_draws_the_apparent_orbit_north_up_east_left():
     assert "[arcsec]" in ax.get_xlabel()
 
 
+def test_binary_sky_draws_no_direction_for_a_star_moving_along_the_line_of_sight():
+    """A circular orbit edge on (i = 90 deg), star 2 at its node: the velocity is all along the line of sight and
+    its sky part round-off, so no arrow, and the legend says why; anywhere else one arrow."""
+    from orbits import Binary
+    from orbits.plot import binary_sky
+
+    def arrows(ax):
+        return [a for a in ax.texts if getattr(a, "arrow_patch", None) is not None]
+
+    edge_on = Binary.from_elements(1.0 * u.solMass, 0.5 * u.solMass, period=10 * u.yr, e=0.0, inc=90 * u.deg,
+                                   raan=30 * u.deg, nu=0 * u.deg)
+    _, ax = binary_sky(edge_on)
+    assert arrows(ax) == [] and "line of sight" in _by_gid(ax, "star 2 now")[0].get_label()
+    _, ax = binary_sky(_visual_binary())
+    assert len(arrows(ax)) == 1 and _by_gid(ax, "star 2 now")[0].get_label() == "star 2 now"
+
+
 def test_radial_velocity_curves_span_two_k_about_the_systemic_velocity():
     from orbits.plot import radial_velocity_curves
 
