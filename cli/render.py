@@ -288,12 +288,14 @@ def validation_report(data: dict[str, Any]) -> None:
 
 
 def _seconds(seconds: float | None) -> str:
-    """A run time in us, ms or s, 3 significant digits ("-" for none)."""
+    """A run time in us, ms or s, 3 significant digits ("-" for none); the unit is chosen after rounding, so
+    999.96 us reads "1 ms", never "1e+03 us"."""
     if seconds is None:
         return "-"
-    if seconds < 1e-3:
-        return f"{seconds * 1e6:.3g} us"
-    return f"{seconds * 1e3:.3g} ms" if seconds < 1 else f"{seconds:.3g} s"
+    rounded = float(f"{seconds:.3g}")
+    if rounded < 1e-3:
+        return f"{rounded * 1e6:.3g} us"
+    return f"{rounded * 1e3:.3g} ms" if rounded < 1 else f"{rounded:.3g} s"
 
 
 def _setting(setting: Any) -> str:

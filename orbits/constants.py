@@ -55,7 +55,8 @@ class Body:
     """A named body: GM (m3/s2), mass (kg), equatorial radius (m), sidereal rotation period (s), each sourced.
 
     `gm` is the body alone (what an orbit about it feels); `system_gm` the body with its moons (what its
-    barycentre carries, and what DE421's Jupiter-Pluto points stand for), where it differs. `parent` is the
+    barycentre carries, and what DE421's Jupiter-Pluto points stand for), where it differs. Eris is the one
+    exception: only its system's mass is published (Dysnomia's is not separated), so both are that mass. `parent` is the
     body it orbits (None for the Sun), `kind` one of KINDS, `j2` the unnormalised second zonal harmonic at the
     reference radius `j2_radius` (m) where one is published, `orbit` J2000 mean elements where the catalogue has
     them. A retrograde rotator (Venus, Uranus, Pluto, Triton's primary aside) has `retrograde=True`; the period
@@ -217,7 +218,7 @@ _CATALOGUE = [
          "GM: " + _HORIZONS_2025.format(what="BODY920136199_GM = 1.0989E+03, the Eris system mass of Brozovic, JPL "
                                              "IOM 392R-22-003 (2022-09-01), all given to Eris (Dysnomia's GM 0)")
          + "; radius: Sicardy et al. (2011), Nature 478; rotation: Szakats et al. (2023), A&A 669 (synchronous with "
-         "Dysnomia)", None, "Sun", "dwarf planet"),
+         "Dysnomia)", None, "Sun", "dwarf planet", system_gm=1098.9 * _KM3),
     Body("Moon", 4_902.8000661637961 * _KM3, 1.7374e6, 27.321661 * _DAY,
          f"GM: {_DE430}; radius: {_WGCCRE}; rotation: synchronous, the sidereal month 27.321661 d; J2: the Lunar "
          "Prospector field LP150Q, Konopliv et al. (2001), Icarus 150; PDS LP-L-RSS-5-GRAVITY-V1 file JGL150Q1 "

@@ -685,10 +685,11 @@ def _sky_unit(size_m, distance_m):
 
 def binary_sky(binary: "Binary", ax: Any = None, distance: u.Quantity | None = None,
                samples: int = 721) -> tuple[Any, Any]:
-    """The apparent orbit of star 2 about star 1 on the sky, north up and east to the LEFT (as the sky is seen):
-    the relative orbit r2 - r1 projected along the line of sight, star 1 at the origin, star 2 now with an arrow
-    along its motion, periastron, the line of nodes (position angle Omega) with the ascending node (where star 2
-    recedes) and the descending node. Offsets in a length unit, or in arcsec (mas) given the `distance`.
+    """The apparent orbit of star 2 about star 1 on the sky, north up and east to the LEFT (as the sky is seen): the
+    relative orbit r2 - r1 projected along the line of sight, star 1 at the origin, star 2 now with an arrow along
+    its motion across the sky (none where it moves along the line of sight), periastron, the line of nodes (position
+    angle Omega) with the ascending node (where star 2 recedes) and the descending node. Offsets in a length unit,
+    or in arcsec (mas) given the `distance`.
 
     Elements in the sky frame of orbits.binary (x north, y east, z away from the observer). The projected ellipse
     has area pi a b |cos i| (tests/api/test_binary_observables.py).

@@ -21,15 +21,17 @@ without the extra); the frame does not change C3 or v_inf. The Sun's GM is DE430
 that goes with the ephemeris: orbits.ephemeris.DE430_GM["Sun"]. Cells whose arrival is not after the launch are
 invalid: masked in every grid, never a number.
 
-Mission-design tables give C3 about the Earth-Moon barycentre ("EMB" here), not the Earth's centre, which moves
-12.5 m/s about it: from the Earth C3 differs by up to 2 v_inf x 12.5 m/s (0.8 % of a 9 km2/s2 C3).
+The C3 of NASA's Earth-to-Mars mission design handbook matches departures from the Earth-Moon barycentre ("EMB"
+here), not from the Earth's centre, which moves 12.5 m/s about it: from the Earth C3 differs by up to
+2 v_inf x 12.5 m/s (0.8 % of a 9 km2/s2 C3).
 
 Tests (tests/api/test_porkchop.py): the eight transfers NASA/TM-2010-216764 (Burke, Falck and McGuire 2010,
 "Earth-to-Mars Mission Opportunities 2026 to 2045") tabulates for 2026, 2028 and 2031, recomputed from the
-Earth-Moon barycentre on their dates, have its C3 to 0.10 % and its arrival v_inf to 0.03 %, and a 1-day grid of each
-window finds its least C3 within two days of the table's dates; the returned v1, propagated by the mpmath reference
-(orbits.tools.reference), reaches the arrival body as astropy reads it from DE421 to 1.1e-14 of its distance; C3 and
-v_inf recomputed from astropy's DE421 velocities; coarser grids miss the least C3 by more as their step grows.
+Earth-Moon barycentre on their dates, have its C3 to 0.10 % and its arrival v_inf to 0.03 %, and a 1-day grid of
+each window finds its least C3 within two days of the table's dates (its figures as transcribed: see the tests);
+the returned v1, propagated by the mpmath reference (orbits.tools.reference), reaches the arrival body as astropy
+reads it from DE421 to 1.1e-14 of its distance; C3 and v_inf recomputed from astropy's DE421 velocities; coarser
+grids miss the least C3 by more as their step grows.
 """
 
 from collections.abc import Iterable

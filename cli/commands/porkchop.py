@@ -17,8 +17,8 @@ def _window(text: str, option: str) -> tuple[str, str]:
 
 def command(
     departure: Annotated[str, typer.Option(
-        "--from", help="the departure body, e.g. Earth, or EMB (the Earth-Moon barycentre, about which "
-                       "mission-design tables give C3)")] = "Earth",
+        "--from", help="the departure body, e.g. Earth, or EMB (the Earth-Moon barycentre, whose C3 is "
+                       "the one NASA's Earth-to-Mars handbook tabulates)")] = "Earth",
     target: Annotated[str, typer.Option("--to", help="the arrival body, e.g. Mars")] = "Mars",
     launch: Annotated[str, typer.Option("--launch", help="launch dates START:END, e.g. 2026-09-01:2027-01-31")
                       ] = "2026-09-01:2027-01-31",

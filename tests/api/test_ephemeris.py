@@ -86,8 +86,8 @@ def test_every_gm_is_its_sources_value():
     the Moon and the moons, and the N-body scene's DE430 masses, each within 4e-14 (measured 3.6e-15 at most: the
     catalogue rounds a few of the file's last digits, e.g. 126712764.8 for 1.2671276480000021e8). The IAU 2015
     nominal values of the Sun, Earth and Jupiter are astropy's (above), rounded from the ephemeris values:
-    3.2e-10, 8.9e-8 and 3.9e-8 from Horizons'. Ceres and Vesta carry Dawn's values, 0.3 % and 1.4e-5 from the
-    DE431 perturber masses (they are held to their own sources in the next test)."""
+    3.2e-10, 8.9e-8 and 3.9e-8 from Horizons'. Ceres carries JPL's Small-Body Database value and Vesta Dawn's,
+    0.3 % and 1.4e-5 from the DE431 perturber masses (they are held to their own sources in the next test)."""
     for name, naif in CATALOGUE_IDS.items():
         assert BODIES[name].gm == pytest.approx(HORIZONS_GM_2017[naif] * 1e9, rel=4e-14), name
     for name, naif in SYSTEM_IDS.items():

@@ -4,9 +4,11 @@ minima against a published mission-design table, masking, errors and what the pi
 Published values: Burke, Falck and McGuire, "Interplanetary Mission Design Handbook: Earth-to-Mars Mission
 Opportunities 2026 to 2045", NASA/TM-2010-216764, NASA Glenn Research Center (2010), Tables 2 (2026), 3 (2028) and
 the 2031 table: minimum C3 and minimum arrival v_inf of the Type I and Type II transfers, computed with the MIDAS
-patched-conic optimizer. The PDF could not be opened offline; its figures are as transcribed in two independent
-secondary sources (a Rust test suite, VisVivaSpace/lamberto tests/mars_2026_validation.rs, and a mission-design
-research note), which agree digit for digit. The handbook's C3 is the departure energy about the Earth-Moon
+patched-conic optimizer. The PDF could not be opened offline. The 2026 rows were read in two transcriptions that
+agree digit for digit: a Rust test suite (VisVivaSpace/lamberto, tests/mars_2026_validation.rs, whose header
+credits the tables to Sergeyevsky, Snyder and Cunniff, the authors of the earlier JPL handbook series) and a
+mission-design research note found by the search tool, with no citable author; the 2028 and 2031 rows were
+read in that note alone. The handbook's C3 matches departures from the Earth-Moon
 barycentre: from there every row agrees to 0.10 % (C3) and 0.03 % (v_inf); from the Earth's centre C3 is off by up
 to 0.81 % (the Earth moves 12.5 m/s about the barycentre) while v_inf at Mars moves by 1e-4 at most.
 """
