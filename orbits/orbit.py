@@ -14,7 +14,7 @@ degenerate angles are those of orbits.core.elements.
 from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import astropy.units as u
 import numpy as np
@@ -24,6 +24,9 @@ from orbits.constants import Body, G, body
 from orbits.core import anomalies, elements, frames, propagate, twobody
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
+
+if TYPE_CHECKING:
+    from orbits.ephemeris import BodyState
 
 #: how a primary is named in error messages
 PRIMARY = "primary mass or gravitational parameter"
@@ -162,7 +165,19 @@ class Orbit(display.Displayed):
 
         if target.parent is None:
             raise OrbitDomainError(f"{target.name} orbits nothing in the catalogue")
-        seen = ephemeris.state(target.name, epoch, center=target.parent, source=source, scale=scale)
+        return cls.from_state(ephemeris.state(target.name, epoch, center=target.parent, source=source, scale=scale))
+
+    @classmethod
+    def from_state(cls, seen: "BodyState") -> "Orbit":
+        """The osculating orbit through an ephemeris state (orbits.ephemeris.state) of a catalogue body about its
+        parent, in the ecliptic frame of J2000, mu = G (M_parent + M_body) (the system's mass for a system
+        barycentre), with the body's mass."""
+        from orbits import ephemeris
+
+        target = body(seen.body)
+        if target.parent is None or body(target.parent).name != seen.center:
+            raise OrbitDomainError(f"an orbit needs {seen.body}'s state about its parent "
+                                   f"({target.parent or 'none in the catalogue'}), not about {seen.center}")
         gm = target.barycentre_gm if target.name in ephemeris.SYSTEM_BARYCENTRES else target.gm
         mu = (body(target.parent).gm + gm) << units.M3_PER_S2
         r = frames.equatorial_to_ecliptic(seen.r_si) << units.M
