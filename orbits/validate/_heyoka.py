@@ -17,9 +17,11 @@
 
 from __future__ import annotations
 
+import contextlib
 import copy
 import os
 import time
+from collections.abc import Callable, Iterator
 
 import numpy as np
 
@@ -234,3 +236,53 @@ def _grid(times: np.ndarray, start: float) -> tuple[np.ndarray, int]:
     if times[0] == start:
         return times, 0
     return np.concatenate(([start], times)), 1
+
+
+# ---- heyoka's closed-form functions, the peers of orbits' own in the benchmarks ----------------------------------
+
+
+@contextlib.contextmanager
+def _threads(heyoka, threads: int) -> Iterator[None]:
+    """Run heyoka's compiled functions on `threads` threads inside the block."""
+    previous = heyoka.get_nthreads()
+    heyoka.set_nthreads(threads)
+    try:
+        yield
+    finally:
+        heyoka.set_nthreads(previous)
+
+
+def kepler_solver(threads: int = 1) -> Callable[[np.ndarray], np.ndarray]:
+    """heyoka's kepE compiled as a cfunc: a function of a (2, n) array of (e, M) returning E (n,), run on `threads`
+    threads (elliptic only: NaN for e >= 1)."""
+    import heyoka
+
+    _follow_cache_dir(heyoka)
+    e, mean = heyoka.make_vars("e", "M")
+    cf = heyoka.cfunc([heyoka.kepE(e, mean)], [e, mean])
+
+    def solve(inputs: np.ndarray) -> np.ndarray:
+        with _threads(heyoka, threads):
+            return cf(inputs)[0]
+
+    return solve
+
+
+def lagrange_propagator(threads: int = 1) -> Callable[[np.ndarray], np.ndarray]:
+    """heyoka's lagrange_prop (heyoka >= 7.11) compiled as a cfunc: a function of an (8, n) array of
+    (x, y, z, vx, vy, vz, mu, t) returning the (6, n) propagated states, run on `threads` threads (elliptic only).
+    Raises ImportError on an older heyoka."""
+    import heyoka
+
+    if not hasattr(heyoka.model, "lagrange_prop"):
+        raise ImportError("heyoka.model.lagrange_prop (heyoka >= 7.11)", name="heyoka >= 7.11")
+    _follow_cache_dir(heyoka)
+    variables = heyoka.make_vars("x", "y", "z", "vx", "vy", "vz", "mu", "t")
+    pos, vel = heyoka.model.lagrange_prop(pos0=variables[:3], vel0=variables[3:6], mu=variables[6], tm=variables[7])
+    cf = heyoka.cfunc(list(pos) + list(vel), variables)
+
+    def propagate(inputs: np.ndarray) -> np.ndarray:
+        with _threads(heyoka, threads):
+            return cf(inputs)
+
+    return propagate

@@ -245,3 +245,14 @@ def _run_whfast(sim, times: np.ndarray, dt: float):
         positions[k], velocities[k] = _snapshot(sim)
         report(n, counts[-1])
     return counts * float(dt), positions, velocities, time.perf_counter() - start
+
+
+def kepler_solver():
+    """rebound's M_to_E as a function of a list of (e, M) pairs returning the list of E (its per-call Python API:
+    the peer of orbits' Kepler solver in the benchmarks)."""
+    import rebound
+
+    def solve(pairs: list) -> list:
+        return [rebound.M_to_E(e, mean) for e, mean in pairs]
+
+    return solve
