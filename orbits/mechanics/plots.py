@@ -12,7 +12,7 @@ import numpy as np
 from orbits import plot
 
 if TYPE_CHECKING:
-    from orbits.mechanics import Collision, DampedOscillator, Pendulum, Projectile, Rolling, VerticalCircle
+    from orbits import Collision, DampedOscillator, Pendulum, Projectile, Rolling, VerticalCircle
 
 
 def _axes(ax):
