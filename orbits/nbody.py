@@ -79,7 +79,7 @@ class ZonalHarmonics:
     source: int = 0
     j3: float = 0.0
 
-    def check(self, problem: "NBodyProblem") -> None:
+    def check(self, problem: NBodyProblem) -> None:
         """Raise OrbitDomainError unless the values are finite, R > 0 and the source is a massive body."""
         _check_force_numbers(self, ("j2", "radius", "j4", "j3"))
         if not self.radius > 0.0:
@@ -98,7 +98,7 @@ class ExponentialDrag:
     scale_height: float
     source: int = 0
 
-    def check(self, problem: "NBodyProblem") -> None:
+    def check(self, problem: NBodyProblem) -> None:
         """Raise OrbitDomainError unless the values are finite and positive, the source massive, and the problem
         has test particles to slow down."""
         _check_force_numbers(self, ("reference", "base", "scale_height"))

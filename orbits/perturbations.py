@@ -403,8 +403,9 @@ class DragDecay(display.Displayed):
         """Time (s) to decay to `altitude` (length), between the band's base and the start."""
         target = self._radius + units.to_si(altitude, units.M, "altitude")
         if np.any(target > self.a0) or np.any(target < self.base):
-            raise OrbitDomainError(f"the altitude must lie between the band's base ({(self.base - self._radius) / 1e3:g}"
-                                   f" km) and the start ({(self.a0 - self._radius) / 1e3:g} km)")
+            low, high = (self.base - self._radius) / 1e3, (self.a0 - self._radius) / 1e3
+            raise OrbitDomainError(f"the altitude must lie between the band's base ({low:g} km) and the start "
+                                   f"({high:g} km)")
         mu, b, rho0, base, height = self._model()
         return drag.decay_time(self.a0, target, mu, b, rho0, base, height) << units.S
 

@@ -124,9 +124,9 @@ def frozen_eccentricity(a: ArrayLike, inc: ArrayLike, j2: ArrayLike, j3: ArrayLi
         a, dtype=float)
     drift = 4.0 - 5.0 * sine**2
     if np.any(np.abs(drift) < 1e-9):
-        raise OrbitDomainError(f"no frozen orbit at the critical inclination ({np.degrees(CRITICAL_INCLINATIONS[0]):.2f} "
-                               f"or {np.degrees(CRITICAL_INCLINATIONS[1]):.2f} deg): J2 does not turn the periapsis "
-                               f"there, so nothing balances J3")
+        low, high = np.degrees(CRITICAL_INCLINATIONS)
+        raise OrbitDomainError(f"no frozen orbit at the critical inclination ({low:.2f} or {high:.2f} deg): J2 does "
+                               f"not turn the periapsis there, so nothing balances J3")
     curvature = np.cos(inc) ** 2 * (4.0 - 15.0 * sine**2) / (sine * drift)
     e = -0.5 * q * sine * s
     for _ in range(50):
