@@ -26,7 +26,8 @@ def test_secular_orbit_rates_and_mean_element_propagation():
 
 def test_designs_give_back_their_targets():
     design = sun_synchronous("Earth", altitude=700 * u.km)
-    assert design.inclination.to_value(u.deg) == pytest.approx(98.18776, abs=1e-5)  # the catalogue GM (IAU 2015 nominal)
+    # the catalogue GM (IAU 2015 nominal)
+    assert design.inclination.to_value(u.deg) == pytest.approx(98.18776, abs=1e-5)
     assert design.secular.node_rate.to_value(u.rad / u.s) == pytest.approx(
         design.extra["node_rate_target"].to_value(u.rad / u.s), rel=1e-14)
     back = sun_synchronous("Earth", inc=design.inclination)
