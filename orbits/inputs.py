@@ -17,6 +17,7 @@ import numpy as np
 
 from orbits import units
 from orbits.constants import BODIES, STANDARD_GRAVITY, Body, G, body
+from orbits.core import elements
 from orbits.core.checks import check_finite, first_where, require_magnitude, require_positive
 from orbits.core.errors import OrbitDomainError
 
@@ -172,6 +173,27 @@ def angle(value: u.Quantity, name: str) -> np.ndarray:
     si = units.to_si(value, units.RAD, name)
     check_finite(si, name, "rad")
     return si
+
+
+def position(value: u.Quantity, name: str = "position r") -> np.ndarray:
+    """A position (m, (..., 3)) relative to a primary: a finite vector (`vector`) away from the primary's centre."""
+    r = vector(value, units.M, name)
+    if np.any(np.all(r == 0.0, axis=-1)):
+        raise OrbitDomainError(f"{name} = (0, 0, 0) m coincides with the primary; |r| must be positive")
+    return r
+
+
+def inclination(value: u.Quantity) -> np.ndarray:
+    """Inclination i (rad), finite and in [0, pi]."""
+    return angle_in(value, "inclination i", 0.0, np.pi, "[0, pi]")
+
+
+def true_anomaly(value: u.Quantity, e: np.ndarray) -> np.ndarray:
+    """True anomaly nu (rad) on a conic of (checked) eccentricity e: finite and, on an open conic, strictly
+    between the asymptotes (1 + e cos nu > 0)."""
+    nu = angle(value, "true anomaly nu")
+    elements.require_inside_asymptotes(e, nu)
+    return nu
 
 
 def vector(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
