@@ -124,6 +124,9 @@ def displays(command: Callable[_P, _R]) -> Callable[..., _R]:
             name, sep, value = item.partition("=")
             if not sep or not name.strip() or not value.strip():
                 raise typer.BadParameter(f"--unit {item!r}: write NAME=UNIT, e.g. period=d")
+            if name.strip() in overrides:
+                raise typer.BadParameter(f"--unit {name.strip()} is given twice ({overrides[name.strip()]}, "
+                                         f"{value.strip()}); give each quantity one unit")
             overrides[name.strip()] = value.strip()
         render.use(render.Display(units.value, overrides, digits))
         return command(*args, **kwargs)
@@ -132,6 +135,37 @@ def displays(command: Callable[_P, _R]) -> Callable[..., _R]:
     wrapper.__signature__ = signature.replace(parameters=[*signature.parameters.values(), *_DISPLAY_PARAMETERS])
     wrapper.__annotations__ = {**command.__annotations__, **{p.name: p.annotation for p in _DISPLAY_PARAMETERS}}
     return wrapper
+
+
+def refuse_repeated_options(group, args: list[str]) -> None:
+    """A usage error for an option given more than once that holds one value (`--a 7000 km --a 8000 km`), or for a
+    flag given both ways (`--sweep --no-sweep`): the parser would keep the last silently. Options that collect a
+    list (`--unit`) may repeat. `args` are the words after `orbits`; the verb (and sub-verb) they name is found
+    first."""
+    command, words = group, list(args)
+    while hasattr(command, "commands") and words and words[0] in command.commands:
+        command, words = command.commands[words[0]], words[1:]
+    spellings = {}
+    for param in getattr(command, "params", []):
+        if getattr(param, "param_type_name", "") == "option":
+            for spelling in [*param.opts, *param.secondary_opts]:
+                spellings[spelling] = param
+    seen: dict[str, list[str]] = {}
+    words = iter(words[: words.index("--")] if "--" in words else words)
+    for word in words:
+        spelling, equals, value = word.partition("=")
+        param = spellings.get(spelling)
+        if param is None:
+            continue
+        if not param.is_flag and not equals:
+            value = next(words, "")
+        if param.multiple or param.count:
+            continue
+        seen.setdefault(param.name, []).append(spelling if param.is_flag else f"{spelling} {value!r}")
+    for given in seen.values():
+        if len(given) > 1:
+            what = "a switch" if spellings[given[0].split(" ")[0]].is_flag else "an option that holds one value"
+            raise typer.BadParameter(f"{', '.join(given)}: {what}, given {len(given)} times; give it once")
 
 
 def _print_warnings(caught, ours):
