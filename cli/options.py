@@ -184,7 +184,8 @@ def _print_warnings(caught, ours):
 
 
 def reports_errors(command: Callable[_P, _R]) -> Callable[_P, _R]:
-    """Turn the library's input errors into one line on stderr and exit status 2."""
+    """Turn the library's input errors into one line on stderr and exit status 2, and Ctrl-C into "orbits:
+    interrupted" and exit status 130."""
 
     @functools.wraps(command)
     def wrapper(*args, **kwargs):
@@ -203,6 +204,9 @@ def reports_errors(command: Callable[_P, _R]) -> Callable[_P, _R]:
                     return command(*args, **kwargs)
             finally:  # outside the recording: a warning passed on goes to the caller's filters, not back to `said`
                 _print_warnings(said, OrbitsWarning)
+        except KeyboardInterrupt:
+            print("orbits: interrupted", file=sys.stderr)
+            raise typer.Exit(130) from None
         except RuntimeWarning as err:
             print(f"orbits: error: the computation left float64 ({err}); the inputs are outside what orbits can "
                   f"compute", file=sys.stderr)

@@ -9,6 +9,8 @@ import contextlib
 import contextvars
 import math
 import operator
+import signal
+import threading
 import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
@@ -301,3 +303,24 @@ def report(done: float, total: float) -> None:
     if done >= total or now - last[0] >= 0.1:
         last[0] = now
         callback(min(1.0, float(done) / float(total)))
+
+
+@contextlib.contextmanager
+def python_sigint() -> Iterator[None]:
+    """Run a call into an integrator library with Python's own Ctrl-C handler installed, and install it again
+    after the call, whatever the library did.
+
+    rebound's ``integrate`` installs a C handler for SIGINT of its own (it stops its loop, and the call raises
+    KeyboardInterrupt) and leaves it installed when it returns, so a Ctrl-C later in the process, in Python
+    code or during a heyoka run, only set rebound's flag and was lost. Python's handler is re-installed by
+    setting the Python-level handler again (signal.signal re-registers the C function). Signal handlers belong
+    to the main thread; elsewhere (a dask worker thread) the block runs unchanged."""
+    handler = signal.getsignal(signal.SIGINT)
+    guard = handler is not None and threading.current_thread() is threading.main_thread()
+    if guard:
+        signal.signal(signal.SIGINT, handler)
+    try:
+        yield
+    finally:
+        if guard:
+            signal.signal(signal.SIGINT, handler)
