@@ -45,7 +45,8 @@ import numpy as np
 from astropy.time import Time
 
 from orbits import display, units
-from orbits.constants import BODIES, SPEED_OF_LIGHT
+from orbits.constants import BODIES, SPEED_OF_LIGHT, body
+from orbits.core import frames
 from orbits.core.errors import OrbitDomainError, UnknownNameError
 from orbits.tables import quantity_table
 
@@ -420,6 +421,34 @@ def states(bodies: Sequence[str], when: Any, center: str = "solar system barycen
            source: str = "auto", scale: str = "utc") -> dict[str, BodyState]:
     """state() of several bodies relative to one centre at the same epoch(s), by name."""
     return {point_name(b): state(b, when, center, source=source, scale=scale) for b in bodies}
+
+
+@dataclass(frozen=True, eq=False)
+class Osculating:
+    """The two-body problem of a catalogue body about its parent at an epoch, as the ephemeris gives it: the state
+    read (relative to the parent, ICRF), the same position r (m) and velocity v (m/s) in the ecliptic frame of
+    J2000, the GM of the point whose position that is (m3/s2; for Jupiter-Pluto, which DE421 gives as system
+    barycentres, the system's: Body.barycentre_gm) and mu = GM_parent + gm (m3/s2)."""
+
+    state: BodyState
+    r: np.ndarray
+    v: np.ndarray
+    gm: float
+    mu: float
+
+
+def osculating(name: str, when: Any, *, source: str = "auto", scale: str = "utc") -> Osculating:
+    """The state of the catalogue body `name` relative to its parent (the Sun for a planet, the Earth for the Moon)
+    at `when`, turned to the ecliptic of J2000, with the gravitational parameters of its osculating orbit: the
+    one home of what Orbit.from_body(name, epoch) and the solar-system picture draw. OrbitDomainError for a body
+    that orbits nothing in the catalogue."""
+    target = body(name)
+    if target.parent is None:
+        raise OrbitDomainError(f"{target.name} orbits nothing in the catalogue")
+    seen = state(target.name, when, center=target.parent, source=source, scale=scale)
+    gm = target.barycentre_gm if target.name in SYSTEM_BARYCENTRES else target.gm
+    return Osculating(seen, frames.equatorial_to_ecliptic(seen.r_si), frames.equatorial_to_ecliptic(seen.v_si), gm,
+                      body(target.parent).gm + gm)
 
 
 def points() -> tuple[str, ...]:

@@ -21,7 +21,7 @@ import numpy as np
 
 from orbits import display, inputs, units
 from orbits.constants import Body, G, body
-from orbits.core import anomalies, elements, frames, propagate, twobody
+from orbits.core import anomalies, elements, propagate, twobody
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
 
@@ -163,14 +163,9 @@ class Orbit(display.Displayed):
     def _osculating(cls, target: Body, epoch: Any, source: str, scale: str) -> "Orbit":
         from orbits import ephemeris
 
-        if target.parent is None:
-            raise OrbitDomainError(f"{target.name} orbits nothing in the catalogue")
-        seen = ephemeris.state(target.name, epoch, center=target.parent, source=source, scale=scale)
-        gm = target.barycentre_gm if target.name in ephemeris.SYSTEM_BARYCENTRES else target.gm
-        mu = (body(target.parent).gm + gm) << units.M3_PER_S2
-        r = frames.equatorial_to_ecliptic(seen.r_si) << units.M
-        v = frames.equatorial_to_ecliptic(seen.v_si) << units.M_PER_S
-        return cls.from_vectors(mu, r, v, mass=gm / G << units.KG)
+        seen = ephemeris.osculating(target.name, epoch, source=source, scale=scale)
+        return cls.from_vectors(seen.mu << units.M3_PER_S2, seen.r << units.M, seen.v << units.M_PER_S,
+                                mass=seen.gm / G << units.KG)
 
     # ---- shape ----------------------------------------------------------------------------------
     @property

@@ -5,7 +5,8 @@ probe wraps to record importer -> imported), never by reading source text.
 Layers, bottom up; a module may import its own layer and the layers below it:
     0 core         orbits.core.*: float64 NumPy; numpy, the standard library and (in the _fast kernels) numba
     1 base         units, constants, inputs (the input rules), nbody, io, tables, display, system
-    2 domain       orbit, kepler, binary, flyby, escape, lagrange, rings, cosmology, scene, predict, plot
+    2 domain       orbit, kepler, binary, flyby, escape, lagrange, rings, cosmology, scene, predict, and the
+                   pictures orbits.plot.* (one module per subject over the shared orbits.plot.frame)
     3 validation   orbits.validate.*
     4 tools        orbits.tools.* (benchmarks, precision sweeps, the mpmath reference, Dask)
     5 interfaces   orbits_cli.*, which calls the public library only: never orbits.core nor a private module
@@ -243,6 +244,12 @@ def test_no_module_imports_itself_back(edges):
     """No import cycle between our modules at run time, function-local imports included: a module never needs,
     directly or through others, a module that needs it (e.g. a picture importing the object that draws itself)."""
     assert import_cycles(edges) == []
+
+
+def test_the_picture_frame_imports_no_picture(edges):
+    """orbits.plot.frame is what every picture builds on: it imports no other module of orbits.plot."""
+    assert [(src, dst) for src, dst in edges if src == "orbits.plot.frame" and dst.startswith("orbits.plot")] == []
+    assert ("orbits.plot.conics", "orbits.plot.frame") in edges
 
 
 def test_imports_flow_one_way(edges):
