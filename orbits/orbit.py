@@ -85,17 +85,13 @@ class Orbit(display.Displayed):
         _check_shapes(e=e, a=a, p=p, q=q, inc=inc, raan=raan, argp=argp, nu=nu)
         size = inputs.semi_latus_rectum(e + 0.0, a=a, p=p, q=q)
         angles = [
-            inputs.angle(x, name)
-            for x, name in (
-                (inc, "inclination i"),
-                (raan, "longitude of the ascending node Omega"),
-                (argp, "argument of periapsis omega"),
-                (nu, "true anomaly nu"),
-            )
+            inputs.inclination(inc),
+            inputs.angle(raan, "longitude of the ascending node Omega"),
+            inputs.angle(argp, "argument of periapsis omega"),
+            inputs.true_anomaly(nu, e),
         ]
         mu = inputs.gravitational_parameter(primary, PRIMARY)
-        r, _ = elements.elements_to_state(size, e + 0.0, *angles, mu)  # validates ranges and asymptotes
-        shape = r.shape[:-1]
+        shape = np.broadcast_shapes(*(np.shape(x) for x in (size, e, *angles, mu)))
         # Wrapped before broadcasting: a scalar default (0 deg) is wrapped once, not once per orbit. Arrays
         # computed here are new and kept as they are; the others are copied (they may be views of inputs).
         wrapped = [elements.wrap_two_pi(angles[1]), elements.wrap_two_pi(angles[2]), elements.wrap_pi(angles[3])]
@@ -108,9 +104,10 @@ class Orbit(display.Displayed):
     ) -> "Orbit":
         """Orbit through the state r (length, shape (..., 3)) and v (speed, shape (..., 3))."""
         mu = inputs.gravitational_parameter(primary, PRIMARY)
-        r_si = inputs.vector(r, units.M, "position r")
+        r_si = inputs.position(r)
         v_si = inputs.vector(v, units.M_PER_S, "velocity v")
-        fields = elements.state_to_elements(r_si, v_si, mu)
+        _check_shapes(r=r_si[..., 0], v=v_si[..., 0], mu=mu)
+        fields = elements.state_to_elements_unchecked(r_si, v_si, mu)
         shape = fields[0].shape
         return cls(np.broadcast_to(mu, shape).astype(float), *fields, mass=_mass(mass, shape))
 
@@ -330,17 +327,17 @@ class Orbit(display.Displayed):
     @cached_property
     def mean_anomaly(self) -> u.Quantity:
         """M (rad): E - e sin E (ellipse), e sinh H - H (hyperbola), Barker's W (parabola)."""
-        return anomalies.mean_from_true(self.nu, self.e) << units.RAD
+        return anomalies.mean_from_true_unchecked(self.nu, self.e) << units.RAD
 
     @cached_property
     def time_since_periapsis(self) -> u.Quantity:
         """t - T_periapsis = M / n (s), negative before the periapsis passage."""
-        return anomalies.time_since_periapsis(self.nu, self.p, self.e, self.mu) << units.S
+        return anomalies.time_since_periapsis_unchecked(self.nu, self.p, self.e, self.mu) << units.S
 
     # ---- state and vectors (XXI.viii) -----------------------------------------------------------
     @cached_property
     def _state(self):
-        return elements.elements_to_state(self.p, self.e, self.inc, self.raan, self.argp, self.nu, self.mu)
+        return elements.elements_to_state_unchecked(self.p, self.e, self.inc, self.raan, self.argp, self.nu, self.mu)
 
     @cached_property
     def r(self) -> u.Quantity:

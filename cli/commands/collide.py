@@ -25,8 +25,7 @@ def command(
     plot: PlotOption = None,
 ) -> None:
     """Velocities after, centre-of-mass velocity and kinetic energies of a collision (IX.vii-xiii)."""
-    from orbits import inputs
-    from orbits.mechanics import Collision
+    from orbits import Collision, inputs
     from orbits_cli import render
 
     masses = inputs.parse_quantity(m1, "mass", "--m1"), inputs.parse_quantity(m2, "mass", "--m2")

@@ -37,8 +37,7 @@ def command(
     plot: PlotOption = None,
 ) -> None:
     """Time of flight, range, apex and landing speed of a projectile (XX.iii-v)."""
-    from orbits import inputs
-    from orbits.mechanics import Projectile
+    from orbits import Projectile, inputs
     from orbits_cli import render
 
     shot = Projectile.launch(

@@ -61,24 +61,16 @@ def integrate(
         _CACHE[key] = _compile(heyoka, *key)
     ta = copy.copy(_CACHE[key])
     setup_time = time.perf_counter() - start
-    grid, skip = _grid(problem.times)
     dtype = FP_TYPES[fp_type]
-    grid = grid.astype(dtype)
     ta.state[:] = np.hstack([problem.positions, problem.velocities]).ravel().astype(dtype)
     pars = problem.gm[: problem.n_active]
     if post_newtonian:
         pars = np.append(pars, 1.0 / problem.speed_of_light**2)
     ta.pars[:] = pars.astype(dtype)
     start = time.perf_counter()
-    end = float(grid[-1])
-    outcome, *_, states = ta.propagate_grid(grid, callback=lambda ta: _interruptible(ta, end))
+    states = _propagate_arcs(heyoka, ta, problem, dtype)
     wall_time = time.perf_counter() - start
-    if outcome != heyoka.taylor_outcome.time_limit:
-        raise RuntimeError(
-            f"heyoka propagate_grid stopped at t = {ta.time} with outcome {outcome}; "
-            f"it must reach t = {grid[-1]} (outcome time_limit)"
-        )
-    states = states[skip:].reshape(problem.times.size, problem.n_bodies, 6).astype(np.float64)
+    states = states.reshape(problem.times.size, problem.n_bodies, 6)
     settings = {
         "tol": float(tol),
         "high_accuracy": bool(high_accuracy),
@@ -87,6 +79,8 @@ def integrate(
         "fp_type": fp_type,
         "cache_hit": cache_hit,
     }
+    if problem.kicks:
+        settings.update(impulses=len(problem.kicks))
     if post_newtonian:
         settings.update(post_newtonian="REBOUNDx gr form (Anderson et al. 1975) to O(1/c^2), source body 0",
                         speed_of_light=problem.speed_of_light)
@@ -102,6 +96,33 @@ def integrate(
         version=heyoka.__version__,
         time_mode="propagate_grid from t = 0 lands exactly on each requested time",
     )
+
+
+def _propagate_arcs(heyoka, ta, problem: NBodyProblem, dtype) -> np.ndarray:
+    """(K, 6 N) float64 states at the problem's K times: over each arc, the kicks added to the state at its start,
+    propagate_grid through its outputs, then propagate_until its end (the next kick)."""
+    end = float(problem.times[-1])
+    states = np.empty((problem.times.size, 6 * problem.n_bodies))
+    for arc in problem.arcs():
+        for kick in arc.kicks:
+            ta.state[6 * kick.body + 3: 6 * kick.body + 6] += kick.delta_v.astype(dtype)
+        if arc.outputs.size:
+            grid, skip = _grid(problem.times[arc.outputs], arc.start)
+            outcome, *_, rows = ta.propagate_grid(grid.astype(dtype), callback=lambda ta: _interruptible(ta, end))
+            _require_time_limit(heyoka, ta, outcome, grid[-1])
+            states[arc.outputs] = rows[skip:]
+        if ta.time < arc.end:
+            outcome = ta.propagate_until(dtype(arc.end), callback=lambda ta: _interruptible(ta, end))[0]
+            _require_time_limit(heyoka, ta, outcome, arc.end)
+    return states
+
+
+def _require_time_limit(heyoka, ta, outcome, target: float) -> None:
+    """Raise RuntimeError with heyoka's outcome unless the propagation reached its target time."""
+    if outcome != heyoka.taylor_outcome.time_limit:
+        raise RuntimeError(
+            f"heyoka stopped at t = {ta.time} with outcome {outcome}; it must reach t = {target} (outcome time_limit)"
+        )
 
 
 def _interruptible(ta, end: float) -> bool:
@@ -207,8 +228,9 @@ def _from_jacobi(x_j: list, masses: list) -> list:
     return out
 
 
-def _grid(times: np.ndarray) -> tuple[np.ndarray, int]:
-    """Return the propagate_grid grid (it must start at t = 0) and how many leading rows to drop."""
-    if times[0] == 0.0:
+def _grid(times: np.ndarray, start: float) -> tuple[np.ndarray, int]:
+    """Return the propagate_grid grid (it must start at the integrator's time, `start`) and how many leading rows
+    to drop."""
+    if times[0] == start:
         return times, 0
-    return np.concatenate(([0.0], times)), 1
+    return np.concatenate(([start], times)), 1

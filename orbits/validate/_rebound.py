@@ -44,18 +44,21 @@ def integrate(
         raise OrbitDomainError(
             f"integrator = {integrator!r} is not offered by the rebound backend; choose one of {INTEGRATORS}"
         )
-    start = time.perf_counter()
-    sim = _simulation(rebound, problem)
-    extras = _post_newtonian(sim, problem, integrator)  # kept alive while the simulation runs
+    if integrator == "whfast" and problem.kicks:
+        raise OrbitDomainError("impulses (kicks) need an adaptive integrator: integrate them with ias15 or bs, "
+                               "not whfast")
     if integrator in ("ias15", "bs"):
         if dt is not None:
             raise OrbitDomainError(f"dt = {dt} is a WHFast setting; {integrator} chooses its own steps (pass dt=None)")
-        settings = (_configure_ias15(sim, epsilon, adaptive_mode) if integrator == "ias15"
-                    else _configure_bs(sim, epsilon))
-        setup_time = time.perf_counter() - start
-        times, positions, velocities, wall_time = _run_ias15(sim, problem.times)
+        configure = ((lambda sim: _configure_ias15(sim, epsilon, adaptive_mode)) if integrator == "ias15"
+                     else (lambda sim: _configure_bs(sim, epsilon)))
+        times, positions, velocities, wall_time, setup_time, settings = _run_adaptive(rebound, problem, integrator,
+                                                                                      configure)
         time_mode = "exact finish time: integrate(t, exact_finish_time=1) lands sim.t on each requested time"
     else:
+        start = time.perf_counter()
+        sim = _simulation(rebound, problem.gm, problem.positions, problem.velocities, problem.n_active)
+        _post_newtonian(sim, problem, integrator)  # refuses the velocity-dependent term under WHFast
         settings = _configure_whfast(sim, dt)
         com = _move_to_com(sim)
         setup_time = time.perf_counter() - start
@@ -66,8 +69,6 @@ def integrate(
             "steps x dt: sim.steps(n) to the step count n nearest each requested time; times are "
             "n * dt, not the drifting sim.t"
         )
-    if extras is not None:
-        settings = {**settings, **extras[1]}
     return NBodyResult(
         backend="rebound",
         integrator=integrator,
@@ -82,16 +83,52 @@ def integrate(
     )
 
 
-def _simulation(rebound, problem: NBodyProblem):
-    """Build a G = 1 simulation holding the problem's bodies as Cartesian states; test particles are type 0."""
+def _simulation(rebound, gm: np.ndarray, positions: np.ndarray, velocities: np.ndarray, n_active: int):
+    """Build a G = 1 simulation holding the bodies as Cartesian states; test particles are type 0."""
     sim = rebound.Simulation()
     sim.G = 1.0
-    for m, r, v in zip(problem.gm, problem.positions, problem.velocities):
+    for m, r, v in zip(gm, positions, velocities):
         sim.add(m=float(m), x=float(r[0]), y=float(r[1]), z=float(r[2]), vx=float(v[0]), vy=float(v[1]), vz=float(v[2]))
-    if problem.n_active < problem.n_bodies:
-        sim.N_active = problem.n_active
+    if n_active < gm.size:
+        sim.N_active = n_active
         sim.testparticle_type = 0
     return sim
+
+
+def _run_adaptive(rebound, problem: NBodyProblem, integrator: str, configure):
+    """IAS15 or BS over the problem's arcs: a new simulation at each impulse (IAS15 keeps predictor state that a
+    kick would invalidate), started from the kicked state at the arc's start time; return (times reached,
+    positions, velocities, wall time, setup time, settings)."""
+    reached = np.empty_like(problem.times)
+    positions = np.empty((problem.times.size, problem.n_bodies, 3))
+    velocities = np.empty_like(positions)
+    r, v = np.array(problem.positions, dtype=float), np.array(problem.velocities, dtype=float)
+    wall_time = setup_time = 0.0
+    for arc in problem.arcs():
+        start = time.perf_counter()
+        for kick in arc.kicks:
+            v[kick.body] += kick.delta_v
+        sim = _simulation(rebound, problem.gm, r, v, problem.n_active)
+        sim.t = arc.start
+        extras = _post_newtonian(sim, problem, integrator)  # kept alive while the simulation runs
+        settings = configure(sim)
+        if extras is not None:
+            settings = {**settings, **extras[1]}
+        if problem.kicks:
+            settings = {**settings, "impulses": len(problem.kicks), "at an impulse": "a new simulation from the "
+                        "kicked state"}
+        setup_time += time.perf_counter() - start
+        start = time.perf_counter()
+        for k in arc.outputs:
+            sim.integrate(float(problem.times[k]), exact_finish_time=1)
+            reached[k] = sim.t
+            positions[k], velocities[k] = _snapshot(sim)
+            report(problem.times[k], problem.times[-1])
+        if sim.t < arc.end:
+            sim.integrate(arc.end, exact_finish_time=1)
+        r, v = _snapshot(sim)
+        wall_time += time.perf_counter() - start
+    return reached, positions, velocities, wall_time, setup_time, settings
 
 
 def _post_newtonian(sim, problem: NBodyProblem, integrator: str):
@@ -180,20 +217,6 @@ def _snapshot(sim) -> tuple[np.ndarray, np.ndarray]:
     vxyz = np.empty((sim.N, 3))
     sim.serialize_particle_data(xyz=xyz, vxvyvz=vxyz)
     return xyz, vxyz
-
-
-def _run_ias15(sim, times: np.ndarray):
-    """Integrate to each time with exact_finish_time=1; return (times reached, positions, velocities, wall)."""
-    reached = np.empty_like(times)
-    positions = np.empty((times.size, sim.N, 3))
-    velocities = np.empty_like(positions)
-    start = time.perf_counter()
-    for k, t in enumerate(times):
-        sim.integrate(float(t), exact_finish_time=1)
-        reached[k] = sim.t
-        positions[k], velocities[k] = _snapshot(sim)
-        report(t, times[-1])
-    return reached, positions, velocities, time.perf_counter() - start
 
 
 def _step_counts(times: np.ndarray, dt: float) -> np.ndarray:

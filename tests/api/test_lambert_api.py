@@ -1,4 +1,5 @@
-"""orbits.lambert (orbits/transfers.py): the unit-aware Lambert solver: units, the result object, errors, repr."""
+"""orbits.lambert (orbits/manoeuvres/lambert.py): the unit-aware Lambert solver: units, the result object, errors,
+repr."""
 
 import astropy.units as u
 import numpy as np
@@ -67,7 +68,7 @@ def test_quantities_and_html():
 def test_the_public_name_is_the_function_whatever_was_imported_first():
     import importlib
 
-    importlib.import_module("orbits.transfers")
+    importlib.import_module("orbits.manoeuvres.lambert")
     assert orbits.lambert is lambert and callable(lambert)
 
 
