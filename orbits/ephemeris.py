@@ -122,18 +122,26 @@ def point_name(name: str) -> str:
 
 
 def epoch(value: Any, scale: str = "utc") -> Time:
-    """An astropy Time from a Time (any scale), an ISO string or list of them (in `scale` unless the string ends
-    with one), or "J2000" (2000-01-01 12:00 TT)."""
+    """An astropy Time in TDB from a Time (any scale), an ISO string or list of them (in `scale` unless the string
+    ends with one), or "J2000" (2000-01-01 12:00 TT). The conversion to TDB happens here, once: everything after
+    reads the two-part TDB Julian date as it is."""
     if isinstance(value, Time):
-        return value
+        return _in_tdb(value)
     texts = [value] if isinstance(value, str) else list(value)
     if not texts or not all(isinstance(t, str) for t in texts):
         raise OrbitDomainError(f"epoch: {value!r} is neither an astropy Time nor ISO date strings")
     parsed = [_one_epoch(t, scale) for t in texts]
     if isinstance(value, str):
-        return parsed[0]
+        return _in_tdb(parsed[0])
     jd1, jd2 = np.array([tdb_julian_dates(p) for p in parsed]).T  # each through the offline, quiet conversion
     return Time(jd1, jd2, format="jd", scale="tdb")
+
+
+def _in_tdb(when: Time) -> Time:
+    """The same instant(s) as a TDB Time (the Time itself when it is in TDB already)."""
+    if when.scale == "tdb":
+        return when
+    return Time(*tdb_julian_dates(when), format="jd", scale="tdb")
 
 
 @contextlib.contextmanager
@@ -275,14 +283,30 @@ def _builtin_from_ssb(point: str, when: Time) -> tuple[np.ndarray, np.ndarray]:
 def barycentric(point: str, when: Time, source: str = "auto") -> tuple[np.ndarray, np.ndarray]:
     """ICRF position (m) and velocity (m/s) of `point` relative to the solar-system barycentre, float64 arrays
     shaped epoch shape + (3,), from the resolved `source` ("de421" or "builtin")."""
+    return _read([point], when, source)[point]
+
+
+def _read(points: Sequence[str], when: Time, source: str) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Barycentric (r, v) of each distinct point at one epoch from the resolved `source`: the epoch checked against
+    the source's span once, each point read once."""
     if source == "de421":
         jd1, jd2 = tdb_julian_dates(when)
         _require_de421_span(jd1, jd2)
-        return _de421_from_ssb(point, jd1, jd2)
-    return _builtin_from_ssb(point, when)
+        return {point: _de421_from_ssb(point, jd1, jd2) for point in dict.fromkeys(points)}
+    return {point: _builtin_from_ssb(point, when) for point in dict.fromkeys(points)}
 
 
-def _resolve(source: str) -> str:
+def _relative(read: dict, target: str, origin: str, when: Time, source: str) -> "BodyState":
+    """The BodyState of `target` about `origin` from barycentric states already read."""
+    r, v = read[target]
+    if origin != "solar system barycentre":
+        r, v = r - read[origin][0], v - read[origin][1]
+    return BodyState(target, origin, when, r, v, DE421 if source == "de421" else BUILTIN)
+
+
+def resolve_source(source: str) -> str:
+    """The ephemeris that answers for `source` ("auto", "de421" or "builtin"): "de421" or "builtin"; a one-line
+    OrbitDomainError for an unknown source or for DE421 without its extra."""
     if source not in SOURCES:
         raise OrbitDomainError(f"source: {source!r} is not one of {', '.join(SOURCES)}")
     if source == "auto":
@@ -407,47 +431,44 @@ def state(body: str, when: Any, center: str = "Sun", *, source: str = "auto", sc
     Returns a BodyState in ICRF (equatorial J2000), metres and m/s. Accuracy: see the module docstring.
     """
     target, origin = point_name(body), point_name(center)
-    resolved = _resolve(source)
+    resolved = resolve_source(source)
     when = epoch(when, scale)
-    r, v = barycentric(target, when, resolved)
-    if origin != "solar system barycentre":
-        r_center, v_center = barycentric(origin, when, resolved)
-        r -= r_center
-        v -= v_center
-    return BodyState(target, origin, when, r, v, DE421 if resolved == "de421" else BUILTIN)
+    return _relative(_read([target, origin], when, resolved), target, origin, when, resolved)
 
 
 def states(bodies: Sequence[str], when: Any, center: str = "solar system barycentre", *,
            source: str = "auto", scale: str = "utc") -> dict[str, BodyState]:
-    """state() of several bodies relative to one centre at the same epoch(s), by name."""
-    return {point_name(b): state(b, when, center, source=source, scale=scale) for b in bodies}
+    """state() of several bodies relative to one centre at the same epoch(s), by name: the epoch converted and
+    checked once, each body read once."""
+    targets, origin = [point_name(b) for b in bodies], point_name(center)
+    resolved = resolve_source(source)
+    when = epoch(when, scale)
+    read = _read([*targets, origin], when, resolved)
+    return {target: _relative(read, target, origin, when, resolved) for target in targets}
 
 
 @dataclass(frozen=True, eq=False)
 class Osculating:
-    """The two-body problem of a catalogue body about its parent at an epoch, as the ephemeris gives it: the state
-    read (relative to the parent, ICRF), the same position r (m) and velocity v (m/s) in the ecliptic frame of
-    J2000, the GM of the point whose position that is (m3/s2; for Jupiter-Pluto, which DE421 gives as system
-    barycentres, the system's: Body.barycentre_gm) and mu = GM_parent + gm (m3/s2)."""
+    """The two-body problem of a state of a catalogue body about its parent: its position r (m) and velocity v
+    (m/s) in the ecliptic frame of J2000, the GM of the point whose position that is (m3/s2; for Jupiter-Pluto,
+    which DE421 gives as system barycentres, the system's: Body.barycentre_gm) and mu = GM_parent + gm (m3/s2)."""
 
-    state: BodyState
     r: np.ndarray
     v: np.ndarray
     gm: float
     mu: float
 
 
-def osculating(name: str, when: Any, *, source: str = "auto", scale: str = "utc") -> Osculating:
-    """The state of the catalogue body `name` relative to its parent (the Sun for a planet, the Earth for the Moon)
-    at `when`, turned to the ecliptic of J2000, with the gravitational parameters of its osculating orbit: the
-    one home of what Orbit.from_body(name, epoch) and the solar-system picture draw. OrbitDomainError for a body
-    that orbits nothing in the catalogue."""
-    target = body(name)
-    if target.parent is None:
-        raise OrbitDomainError(f"{target.name} orbits nothing in the catalogue")
-    seen = state(target.name, when, center=target.parent, source=source, scale=scale)
+def osculating(seen: BodyState) -> Osculating:
+    """The osculating two-body problem through a state already read (state, states) of a catalogue body about its
+    parent (the Sun for a planet, the Earth for the Moon): the one home of what Orbit.from_state and the
+    solar-system picture draw. OrbitDomainError for a state about anything but the body's parent."""
+    target = body(seen.body)
+    if target.parent is None or body(target.parent).name != seen.center:
+        raise OrbitDomainError(f"an orbit needs {seen.body}'s state about its parent "
+                               f"({target.parent or 'none in the catalogue'}), not about {seen.center}")
     gm = target.barycentre_gm if target.name in SYSTEM_BARYCENTRES else target.gm
-    return Osculating(seen, frames.equatorial_to_ecliptic(seen.r_si), frames.equatorial_to_ecliptic(seen.v_si), gm,
+    return Osculating(frames.equatorial_to_ecliptic(seen.r_si), frames.equatorial_to_ecliptic(seen.v_si), gm,
                       body(target.parent).gm + gm)
 
 
@@ -537,6 +558,8 @@ def where(body: str, when: Any, observer: str = "Earth", *, source: str = "auto"
         raise OrbitDomainError("where: the observer must not be the Sun (elongation and phase angle are measured "
                                "from the Sun's direction); for heliocentric states use ephemeris.state(body, when, "
                                "center='Sun')")
+    resolved = resolve_source(source)
     when = epoch(when, scale)
-    return Sighting(state(target, when, "Sun", source=source), state(target, when, seer, source=source),
-                    state("Sun", when, seer, source=source))
+    read = _read([target, "Sun", seer], when, resolved)
+    return Sighting(_relative(read, target, "Sun", when, resolved), _relative(read, target, seer, when, resolved),
+                    _relative(read, "Sun", seer, when, resolved))

@@ -14,7 +14,7 @@ degenerate angles are those of orbits.core.elements.
 from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import astropy.units as u
 import numpy as np
@@ -24,6 +24,9 @@ from orbits.constants import Body, G, body
 from orbits.core import anomalies, elements, propagate, twobody
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
+
+if TYPE_CHECKING:
+    from orbits.ephemeris import BodyState
 
 #: how a primary is named in error messages
 PRIMARY = "primary mass or gravitational parameter"
@@ -160,9 +163,20 @@ class Orbit(display.Displayed):
     def _osculating(cls, target: Body, epoch: Any, source: str, scale: str) -> "Orbit":
         from orbits import ephemeris
 
-        seen = ephemeris.osculating(target.name, epoch, source=source, scale=scale)
-        return cls.from_vectors(seen.mu << units.M3_PER_S2, seen.r << units.M, seen.v << units.M_PER_S,
-                                mass=seen.gm / G << units.KG)
+        if target.parent is None:
+            raise OrbitDomainError(f"{target.name} orbits nothing in the catalogue")
+        return cls.from_state(ephemeris.state(target.name, epoch, center=target.parent, source=source, scale=scale))
+
+    @classmethod
+    def from_state(cls, seen: "BodyState") -> "Orbit":
+        """The osculating orbit through an ephemeris state (orbits.ephemeris.state) of a catalogue body about its
+        parent, in the ecliptic frame of J2000, mu = G (M_parent + M_body) (the system's mass for a system
+        barycentre), with the body's mass."""
+        from orbits import ephemeris
+
+        problem = ephemeris.osculating(seen)
+        return cls.from_vectors(problem.mu << units.M3_PER_S2, problem.r << units.M, problem.v << units.M_PER_S,
+                                mass=problem.gm / G << units.KG)
 
     # ---- shape ----------------------------------------------------------------------------------
     @property

@@ -276,9 +276,23 @@ def test_the_core_imports_numpy_and_the_standard_library_only(edges):
 
 def test_rebound_and_heyoka_are_imported_by_their_adapters_and_the_benchmarks_only(edges):
     importers = {src for src, dst in edges if dst.split(".")[0] in ("rebound", "heyoka")}
-    assert importers <= {"orbits.validate._rebound", "orbits.validate._heyoka", "orbits.tools.bench"}
+    assert importers <= {"orbits.validate._rebound", "orbits.validate._heyoka", "orbits.tools.bench.kepler",
+                         "orbits.tools.bench.propagate"}
 
 
 def test_the_library_never_imports_the_command_line(edges):
     assert [(src, dst) for src, dst in edges if src.startswith("orbits") and not src.startswith("orbits_cli")
             and dst.startswith("orbits_cli")] == []
+
+
+BENCH = "orbits.tools.bench."
+BENCH_SHARED = {BENCH + "table", BENCH + "harness"}
+
+
+def test_benchmarks_import_the_shared_bench_modules_only(edges):
+    """A benchmark module of orbits.tools.bench imports no other benchmark, only the shared table and harness
+    modules (which import no module of the package); suite, which runs every benchmark, imports them all."""
+    within = [(src, dst) for src, dst in edges if src.startswith(BENCH) and dst.startswith(BENCH)]
+    assert (BENCH + "kepler", BENCH + "table") in within and (BENCH + "suite", BENCH + "kepler") in within
+    assert [(src, dst) for src, dst in within if src != BENCH + "suite" and dst not in BENCH_SHARED] == []
+    assert [(src, dst) for src, dst in within if src in BENCH_SHARED] == []

@@ -36,7 +36,7 @@ def command(
     from orbits import inputs
     from orbits_cli import render
 
-    when = Time.now() if epoch is None else eph.epoch(epoch)
+    when = eph.epoch(Time.now() if epoch is None else epoch)
     sighting = eph.where(body_name, when, observer, source=ephemeris.value)
     seen = sighting.from_observer
     title = (f"{seen.point} seen from {seen.center_point}, {eph.tdb_iso(when)} TDB (geometric, no light-time "

@@ -60,19 +60,22 @@ def solar_system(
         raise ValueError(f"which {which!r} is not one of {', '.join(SOLAR_SYSTEM)}")
     when = ephemeris.epoch(epoch)
     names = list(SOLAR_SYSTEM[which])
-    first = ephemeris.osculating(names[0], when, source=source)
+    resolved = ephemeris.resolve_source(source)
     missing = []
-    if first.state.source == ephemeris.BUILTIN and "Pluto" in names:
+    if resolved == "builtin" and "Pluto" in names:
         names.remove("Pluto")
         missing.append("Pluto (not in astropy's built-in ephemeris)")
-    seen = {names[0]: first, **{name: ephemeris.osculating(name, when, source=source) for name in names[1:]}}
-    conics = [Conic.from_state(s.r, s.v, s.mu) for s in seen.values()]
-    drawn = draw_orbits(*conics, ax=ax, projection=projection, primary="Sun",
-                        labels=[s.state.point for s in seen.values()])
-    ax, scale = drawn.axes, drawn.scale
-    axes_index = PROJECTIONS[projection]
     target = None if highlight is None else _DRAWN_AS.get(ephemeris.point_name(highlight),
                                                           ephemeris.point_name(highlight))
+    seer = None if target is None or observer is None else ephemeris.point_name(observer)
+    sighted = seer is not None and seer != target
+    elsewhere = [seer] if sighted and seer not in (*names, "Sun") else []  # an observer not drawn
+    seen = ephemeris.states([*names, *elsewhere], when, "Sun", source=resolved)  # each body read once
+    conics = [Conic.from_state(problem.r, problem.v, problem.mu)
+              for problem in (ephemeris.osculating(seen[name]) for name in names)]
+    drawn = draw_orbits(*conics, ax=ax, projection=projection, primary="Sun", labels=[seen[n].point for n in names])
+    ax, scale = drawn.axes, drawn.scale
+    axes_index = PROJECTIONS[projection]
     if target is not None and target not in (*names, "Sun"):
         raise ValueError(f"{highlight} is not drawn in the {which} solar system ({', '.join(names)})")
     positions = {name: conic.state[0] * scale for name, conic in zip(names, conics)}
@@ -82,11 +85,13 @@ def solar_system(
         _label_point(ax, positions[name], axes_index, text, bold=name == target)
     if target in names:
         drawn.curves[names.index(target)].set_linewidth(3.0)
-    if target is not None and observer is not None and ephemeris.point_name(observer) != target:
+    if sighted:
         positions["Sun"] = np.zeros(3)
-        _line_of_sight(ax, when, observer, target, positions, axes_index, scale, source)
+        for name in elsewhere:
+            positions[name] = frames.equatorial_to_ecliptic(seen[name].r_si) * scale
+        _line_of_sight(ax, seer, target, positions, axes_index)
     title = f"The {'' if which == 'all' else which + ' '}solar system on {when.tdb.iso[:16]} TDB (ecliptic J2000)"
-    title += f"\npositions: {first.state.source}"
+    title += f"\npositions: {seen[names[0]].source}"
     if missing:
         title += f"\nleft out: {', '.join(missing)}"
     notes = "\n".join(drawn.notes)  # a closest approach inside the Sun, if any, stays in the title
@@ -118,15 +123,9 @@ def _label_point(ax, point, axes_index, text, bold):
                 fontsize="small", fontweight=weight, gid="name")
 
 
-def _line_of_sight(ax, when, observer, target, positions, axes_index, scale, source):
+def _line_of_sight(ax, seer, target, positions, axes_index):
     """A dashed line from the observer (drawn or not) to the target."""
-    seer = ephemeris.point_name(observer)
-    if seer in positions:
-        start = positions[seer]
-    else:
-        seen = ephemeris.state(seer, when, "Sun", source=source)
-        start = frames.equatorial_to_ecliptic(seen.r_si) * scale
-    ends = np.stack([start, positions[target]])
+    ends = np.stack([positions[seer], positions[target]])
     ax.plot(*(ends[:, i] for i in axes_index), color="0.3", ls="--", lw=1.0, gid="line of sight",
             label=f"line of sight from {seer}")
     frame.legend_beside(ax)

@@ -9,7 +9,7 @@ import orbits
 from orbits import DegenerateOrbitError, OrbitDomainError, lambert
 from orbits.constants import BODIES
 from orbits.core import lambert as core
-from orbits.tools.bench_lambert import arrival_error
+from orbits.tools.bench.lambert import arrival_error
 
 
 def test_units_in_and_out_match_the_si_core():

@@ -110,3 +110,61 @@ def test_no_input_is_checked_twice(args):
     counts = checks_during(lambda: result.append(CliRunner().invoke(app, args)))
     assert result[0].exit_code == 0, result[0].output
     assert [key for key, n in counts.items() if n > 1] == [], counts
+
+
+# ---- an epoch converted once, a state read once ----------------------------------------------------------------
+
+
+def ephemeris_work_during(call) -> Counter:
+    """Counter of "to TDB" (an astropy Time converted to TDB from another scale), "span check" (an epoch held
+    against DE421's span) and "read <point>" (a point's barycentric state read from DE421) while `call()` runs."""
+    counts: Counter = Counter()
+
+    def profile(frame, event, _arg):
+        if event != "call":
+            return
+        code = frame.f_code
+        path = code.co_filename.replace("\\", "/")
+        if code.co_name == "_set_scale" and "astropy/time" in path:
+            if frame.f_locals.get("scale") == "tdb" and frame.f_locals["self"].scale != "tdb":
+                counts["to TDB"] += 1
+        elif path.endswith("orbits/ephemeris.py"):
+            if code.co_name == "_require_de421_span":
+                counts["span check"] += 1
+            elif code.co_name == "_de421_from_ssb":
+                counts["read " + frame.f_locals["point"]] += 1
+
+    sys.setprofile(profile)
+    try:
+        call()
+    finally:
+        sys.setprofile(None)
+    return counts
+
+
+@pytest.mark.parametrize(("args", "points"), [
+    (["where", "Mars", "--epoch", "2026-11-25"], ("Mars", "Sun", "Earth")),
+    (["orbit", "Mars", "--epoch", "2026-11-25"], ("Mars", "Sun")),
+])
+def test_an_epoch_is_converted_once_and_each_state_read_once(args, points):
+    """The epoch becomes TDB once and is checked against DE421 once; each body's state is read once."""
+    pytest.importorskip("jplephem")
+    result = []
+    counts = ephemeris_work_during(lambda: result.append(CliRunner().invoke(app, args)))
+    assert result[0].exit_code == 0, result[0].output
+    assert counts == Counter({"to TDB": 1, "span check": 1, **{f"read {p}": 1 for p in points}}), counts
+
+
+def test_the_solar_system_picture_reads_each_body_once():
+    """orbits.plot.solar_system converts its epoch to TDB once, holds it against DE421's span once and reads each
+    planet it draws, the Sun and an observer it does not draw (Jupiter, for the line of sight) once each."""
+    pytest.importorskip("jplephem")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from orbits.plot import solar_system
+
+    counts = ephemeris_work_during(lambda: solar_system("2026-11-25", which="inner", highlight="Mars",
+                                                       observer="Jupiter"))
+    points = ("Mercury", "Venus", "Earth", "Mars", "Jupiter", "Sun")
+    assert counts == Counter({"to TDB": 1, "span check": 1, **{f"read {p}": 1 for p in points}}), counts
