@@ -32,6 +32,7 @@ KINDS = {
     "force": (u.N, "kN"),
     "density": (units.KG / units.M**3, "kg/m3"),
     "area": (units.M**2, "m2"),
+    "area per mass": (units.M**2 / units.KG, "m2/kg"),
     "gravitational parameter": (units.M3_PER_S2, "m3 / s2"),
     "rate": (units.S**-1, "km / s / Mpc"),
     "dimensionless": (u.one, ""),

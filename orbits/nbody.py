@@ -66,6 +66,69 @@ def _check_times(times: np.ndarray) -> None:
         )
 
 
+@dataclass(frozen=True)
+class ZonalHarmonics:
+    """Body `source`'s zonal harmonics, felt by every other body: J2, J3 and J4 at the reference radius `radius`
+    (code units), axis of symmetry z, in the potential -(G m / r) [1 - sum_n J_n (R / r)**n P_n(z / r)]. The
+    source feels the reaction -(m_i / m_source) of each body's acceleration, as REBOUNDx's
+    "gravitational_harmonics" effect applies it (that effect has J2 and J4; J3 is a force of the adapter's)."""
+
+    j2: float
+    radius: float
+    j4: float = 0.0
+    source: int = 0
+    j3: float = 0.0
+
+    def check(self, problem: NBodyProblem) -> None:
+        """Raise OrbitDomainError unless the values are finite, R > 0 and the source is a massive body."""
+        _check_force_numbers(self, ("j2", "radius", "j4", "j3"))
+        if not self.radius > 0.0:
+            raise OrbitDomainError(f"ZonalHarmonics.radius = {self.radius!r} must be > 0 (code units)")
+        _check_source(self, problem)
+
+
+@dataclass(frozen=True)
+class ExponentialDrag:
+    """Drag on every test particle relative to body `source`: a = -(1/2) rho(r) B |v| v, with B the particle's
+    C_D A / m and rho(r) B = `reference` exp(-(r - base) / scale_height), r and v relative to the source (an
+    atmosphere that does not turn with the body). Code units: `reference` is rho0 B (1 / length)."""
+
+    reference: float
+    base: float
+    scale_height: float
+    source: int = 0
+
+    def check(self, problem: NBodyProblem) -> None:
+        """Raise OrbitDomainError unless the values are finite and positive, the source massive, and the problem
+        has test particles to slow down."""
+        _check_force_numbers(self, ("reference", "base", "scale_height"))
+        for name in ("reference", "base", "scale_height"):
+            if not getattr(self, name) > 0.0:
+                raise OrbitDomainError(f"ExponentialDrag.{name} = {getattr(self, name)!r} must be > 0 (code units)")
+        _check_source(self, problem)
+        if problem.n_active == problem.n_bodies:
+            raise OrbitDomainError("ExponentialDrag acts on test particles, and this problem has none "
+                                   "(n_active = N)")
+
+
+#: the extra forces an NBodyProblem may list, each realised by both adapters
+FORCES = (ZonalHarmonics, ExponentialDrag)
+
+
+def _check_force_numbers(force, names) -> None:
+    for name in names:
+        value = getattr(force, name)
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.floating)) or not math.isfinite(value):
+            raise OrbitDomainError(f"{type(force).__name__}.{name} = {value!r} must be a finite number")
+
+
+def _check_source(force, problem) -> None:
+    source = force.source
+    if isinstance(source, bool) or not isinstance(source, (int, np.integer)) or not 0 <= source < problem.n_active:
+        raise OrbitDomainError(f"{type(force).__name__}.source = {source!r} must index a massive body, in "
+                               f"[0, n_active = {problem.n_active})")
+
+
 @dataclass(frozen=True, eq=False)
 class Kick:
     """An impulse: body `body`'s velocity changes by `delta_v` (code units, (3,)) at `time` (code units).
@@ -134,6 +197,8 @@ class NBodyProblem:
     speed_of_light: float | None = None
     #: instant velocity changes (impulsive manoeuvres), in time order; each backend coasts between them
     kicks: tuple[Kick, ...] = ()
+    #: extra forces (FORCES: ZonalHarmonics, ExponentialDrag), each with its parameters in code units
+    forces: tuple = ()
 
     def __post_init__(self) -> None:
         """Validate and freeze every field; raise OrbitDomainError naming the offending value."""
@@ -164,6 +229,13 @@ class NBodyProblem:
                 raise OrbitDomainError("the post-Newtonian term needs every body massive (n_active = N): "
                                        f"n_active = {n_active}, N = {n}")
             object.__setattr__(self, "speed_of_light", float(c))
+        forces = tuple(self.forces)
+        for force in forces:
+            if not isinstance(force, FORCES):
+                raise OrbitDomainError(f"forces holds {force!r}; each must be one of "
+                                       f"{', '.join(f.__name__ for f in FORCES)}")
+            force.check(self)
+        object.__setattr__(self, "forces", forces)
 
     @property
     def n_bodies(self) -> int:

@@ -274,10 +274,31 @@ def test_the_core_imports_numpy_and_the_standard_library_only(edges):
     assert outside == []
 
 
-def test_rebound_and_heyoka_are_imported_by_their_adapters_and_the_benchmarks_only(edges):
-    importers = {src for src, dst in edges if dst.split(".")[0] in ("rebound", "heyoka")}
-    assert importers <= {"orbits.validate._rebound", "orbits.validate._heyoka", "orbits.tools.bench.kepler",
-                         "orbits.tools.bench.propagate"}
+ADAPTERS = {"orbits.validate._rebound", "orbits.validate._heyoka"}
+
+
+def test_rebound_and_heyoka_are_imported_by_their_adapters_only(edges):
+    importers = {src for src, dst in edges if dst.split(".")[0] in ("rebound", "reboundx", "heyoka")}
+    assert importers <= ADAPTERS
+
+
+def test_no_other_module_holds_an_import_of_rebound_or_heyoka():
+    """Every import statement of the library's source, executed or not (an import inside a benchmark the probe does
+    not run included), names rebound, REBOUNDx or heyoka only in the two adapters."""
+    import ast
+    import pathlib
+
+    import orbits
+
+    root = pathlib.Path(orbits.__file__).parent
+    found = set()
+    for path in root.rglob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text())):
+            names = ([a.name for a in node.names] if isinstance(node, ast.Import)
+                     else [node.module or ""] if isinstance(node, ast.ImportFrom) and not node.level else [])
+            if any(n.split(".")[0] in ("rebound", "reboundx", "heyoka") for n in names):
+                found.add("orbits." + ".".join(path.relative_to(root).with_suffix("").parts))
+    assert found == ADAPTERS
 
 
 def test_the_library_never_imports_the_command_line(edges):

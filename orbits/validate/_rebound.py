@@ -18,7 +18,7 @@ import time
 import numpy as np
 
 from orbits.core.errors import OrbitDomainError
-from orbits.nbody import NBodyProblem, NBodyResult, report
+from orbits.nbody import ExponentialDrag, NBodyProblem, NBodyResult, ZonalHarmonics, report
 
 INTEGRATORS = ("ias15", "whfast", "bs")
 #: IAS15's step-size rules. PRS23 (the default) stalls on a ring of small bodies about a dominant central mass
@@ -58,8 +58,10 @@ def integrate(
     else:
         start = time.perf_counter()
         sim = _simulation(rebound, problem.gm, problem.positions, problem.velocities, problem.n_active)
-        _post_newtonian(sim, problem, integrator)  # refuses the velocity-dependent term under WHFast
+        extras = _reboundx_effects(sim, problem, integrator)  # refuses velocity-dependent terms under WHFast
         settings = _configure_whfast(sim, dt)
+        if extras is not None:
+            settings = {**settings, **extras[1]}
         com = _move_to_com(sim)
         setup_time = time.perf_counter() - start
         times, positions, velocities, wall_time = _run_whfast(sim, problem.times, dt)
@@ -110,7 +112,7 @@ def _run_adaptive(rebound, problem: NBodyProblem, integrator: str, configure):
             v[kick.body] += kick.delta_v
         sim = _simulation(rebound, problem.gm, r, v, problem.n_active)
         sim.t = arc.start
-        extras = _post_newtonian(sim, problem, integrator)  # kept alive while the simulation runs
+        extras = _reboundx_effects(sim, problem, integrator)  # kept alive while the simulation runs
         settings = configure(sim)
         if extras is not None:
             settings = {**settings, **extras[1]}
@@ -131,26 +133,115 @@ def _run_adaptive(rebound, problem: NBodyProblem, integrator: str, configure):
     return reached, positions, velocities, wall_time, setup_time, settings
 
 
-def _post_newtonian(sim, problem: NBodyProblem, integrator: str):
-    """Attach REBOUNDx's "gr" effect (body 0's 1PN field, Anderson et al. 1975) when the problem asks for it;
-    return (the REBOUNDx extras, their settings) or None."""
-    if problem.speed_of_light is None:
+def _reboundx_effects(sim, problem: NBodyProblem, integrator: str):
+    """Attach the REBOUNDx effects the problem asks for: "gr" (body 0's 1PN field, Anderson et al. 1975),
+    "gravitational_harmonics" for ZonalHarmonics, and a force of this module for ExponentialDrag; return (the
+    REBOUNDx extras and what must stay alive with them, their settings) or None."""
+    if problem.speed_of_light is None and not problem.forces:
         return None
-    if integrator == "whfast":
-        raise OrbitDomainError("the post-Newtonian term is velocity dependent: integrate it with ias15 or bs, "
-                               "not whfast")
+    velocity_dependent = problem.speed_of_light is not None or any(
+        isinstance(f, ExponentialDrag) for f in problem.forces)
+    if integrator == "whfast" and velocity_dependent:
+        raise OrbitDomainError("the post-Newtonian term and drag are velocity dependent: integrate them with ias15 "
+                               "or bs, not whfast")
     try:
         import reboundx
     except ImportError:
-        raise OrbitDomainError("the post-Newtonian term needs REBOUNDx: pip install reboundx "
+        raise OrbitDomainError("the post-Newtonian term and the extra forces need REBOUNDx: pip install reboundx "
                                "(it comes with orbits[ephemeris])") from None
     extras = reboundx.Extras(sim)
-    gr = extras.load_force("gr")
-    extras.add_force(gr)
-    gr.params["c"] = problem.speed_of_light
-    sim.particles[0].params["gr_source"] = 1
-    return extras, {"post_newtonian": "REBOUNDx gr, source body 0", "speed_of_light": problem.speed_of_light,
-                    "reboundx": reboundx.__version__}
+    settings, alive = {"reboundx": reboundx.__version__}, [extras]
+    if problem.speed_of_light is not None:
+        gr = extras.load_force("gr")
+        extras.add_force(gr)
+        gr.params["c"] = problem.speed_of_light
+        sim.particles[0].params["gr_source"] = 1
+        settings.update(post_newtonian="REBOUNDx gr, source body 0", speed_of_light=problem.speed_of_light)
+    for force in problem.forces:
+        if isinstance(force, ZonalHarmonics):
+            alive.append(_zonal_harmonics(extras, sim, force, problem.n_active))
+            settings[f"zonal_harmonics[{force.source}]"] = ("REBOUNDx gravitational_harmonics (J2, J4), axis z"
+                                                            + ("; J3 a REBOUNDx force in Python" if force.j3 else ""))
+        else:
+            alive.append(_drag(extras, problem, force))
+            settings[f"drag[{force.source}]"] = "exponential atmosphere, a REBOUNDx force written in Python"
+    return alive, settings
+
+
+def _zonal_harmonics(extras, sim, force: ZonalHarmonics, n_active: int):
+    """REBOUNDx's gravitational_harmonics on the source body (its spin axis z, the effect's default)."""
+    harmonics = extras.load_force("gravitational_harmonics")
+    extras.add_force(harmonics)
+    source = sim.particles[force.source]
+    source.params["J2"] = force.j2
+    source.params["J4"] = force.j4
+    source.params["R_eq"] = force.radius
+    if force.j3 == 0.0:
+        return harmonics
+    return harmonics, _third_zonal(extras, n_active, force)
+
+
+def _third_zonal(extras, n_active: int, force: ZonalHarmonics):
+    """J3, which REBOUNDx's harmonics lack, as a REBOUNDx force in Python (c = z**2 / r**2, d = r_j - r_source):
+    a_xy = (5/2) mu J3 R**3 (7c - 3) z d_xy / r**7, a_z = (1/2) mu J3 R**3 (35 c**2 - 30 c + 3) / r**5, with the
+    reaction -(m_j / m_source) a on the source."""
+    import math
+
+    source, j3r3 = force.source, force.j3 * force.radius**3
+
+    def accelerate(simulation, effect, particles, n):
+        centre = particles[source]
+        mu = simulation.contents.G * centre.m
+        for j in range(n):
+            if j == source:
+                continue
+            p = particles[j]
+            dx, dy, dz = p.x - centre.x, p.y - centre.y, p.z - centre.z
+            r2 = dx * dx + dy * dy + dz * dz
+            r5 = r2 * r2 * math.sqrt(r2)
+            c = dz * dz / r2
+            planar = 2.5 * mu * j3r3 * (7.0 * c - 3.0) * dz / (r5 * r2)
+            ax, ay, az = planar * dx, planar * dy, 0.5 * mu * j3r3 * ((35.0 * c - 30.0) * c + 3.0) / r5
+            p.ax += ax
+            p.ay += ay
+            p.az += az
+            if j < n_active:
+                share = p.m / centre.m
+                centre.ax -= share * ax
+                centre.ay -= share * ay
+                centre.az -= share * az
+
+    third = extras.create_force("third_zonal_harmonic")
+    third.force_type = "pos"
+    third.update_accelerations = accelerate
+    extras.add_force(third)
+    return third, accelerate
+
+
+def _drag(extras, problem: NBodyProblem, force: ExponentialDrag):
+    """A velocity-dependent REBOUNDx force: a = -(1/2) rho B |v| v on each test particle, relative to the source."""
+    import math
+
+    first, source = problem.n_active, force.source
+    reference, base, scale_height = force.reference, force.base, force.scale_height
+
+    def accelerate(simulation, effect, particles, n):
+        centre = particles[source]
+        for j in range(first, n):
+            p = particles[j]
+            dx, dy, dz = p.x - centre.x, p.y - centre.y, p.z - centre.z
+            vx, vy, vz = p.vx - centre.vx, p.vy - centre.vy, p.vz - centre.vz
+            r = math.sqrt(dx * dx + dy * dy + dz * dz)
+            k = -0.5 * reference * math.exp(-(r - base) / scale_height) * math.sqrt(vx * vx + vy * vy + vz * vz)
+            p.ax += k * vx
+            p.ay += k * vy
+            p.az += k * vz
+
+    drag = extras.create_force("exponential_drag")
+    drag.force_type = "vel"
+    drag.update_accelerations = accelerate
+    extras.add_force(drag)
+    return drag, accelerate
 
 
 def _configure_ias15(sim, epsilon: float, adaptive_mode: str = "PRS23") -> dict:
@@ -245,3 +336,14 @@ def _run_whfast(sim, times: np.ndarray, dt: float):
         positions[k], velocities[k] = _snapshot(sim)
         report(n, counts[-1])
     return counts * float(dt), positions, velocities, time.perf_counter() - start
+
+
+def kepler_solver():
+    """rebound's M_to_E as a function of a list of (e, M) pairs returning the list of E (its per-call Python API:
+    the peer of orbits' Kepler solver in the benchmarks)."""
+    import rebound
+
+    def solve(pairs: list) -> list:
+        return [rebound.M_to_E(e, mean) for e, mean in pairs]
+
+    return solve

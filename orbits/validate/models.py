@@ -297,9 +297,25 @@ def builtin_names() -> list[str]:
     return sorted(MODELS)
 
 
+#: model scenes registered by other modules whose rebound run needs REBOUNDx (its effects or forces)
+NEEDS_REBOUNDX: set[str] = set()
+
+
+def register(builders: dict[str, Callable[..., ModelScene]], rules: dict[str, dict[str, Callable[[object], object]]],
+             needs_reboundx: set[str] = frozenset()) -> None:
+    """Add model scenes defined in another module (orbits.validate.perturbed): their builders, the rules of their
+    parameters (as PARAMETER_RULES) and which of them need REBOUNDx."""
+    MODELS.update(builders)
+    PARAMETER_RULES.update(rules)
+    NEEDS_REBOUNDX.update(needs_reboundx)
+
+
 def missing_extra(name: str) -> str | None:
     """Why the built-in model scene `name` cannot run on this install, or None: solar_system needs JPL DE421
-    (skyfield-data and jplephem) and, for rebound's 1PN term, REBOUNDx, all in the extra orbits[ephemeris]."""
+    (skyfield-data and jplephem) and, for rebound's 1PN term, REBOUNDx, all in the extra orbits[ephemeris]; the
+    scenes in NEEDS_REBOUNDX need REBOUNDx."""
+    if name in NEEDS_REBOUNDX and importlib.util.find_spec("reboundx") is None:
+        return "needs REBOUNDx: pip install 'orbits[ephemeris]'"
     if name != "solar_system":
         return None
     from orbits import ephemeris

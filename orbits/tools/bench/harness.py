@@ -95,17 +95,6 @@ def orbits_note(threads):
     return "compiled, 1 thread" if threads == 1 else f"compiled, {threads} threads"
 
 
-@contextlib.contextmanager
-def heyoka_threads(heyoka, threads):
-    """Run heyoka's compiled functions on `threads` threads inside the block."""
-    previous = heyoka.get_nthreads()
-    heyoka.set_nthreads(threads)
-    try:
-        yield
-    finally:
-        heyoka.set_nthreads(previous)
-
-
 # --- plain NumPy baselines --------------------------------------------------------------------------
 
 

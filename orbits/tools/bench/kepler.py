@@ -21,7 +21,6 @@ from orbits.tools.bench.harness import (
     NEWTON_TOL,
     Method,
     cores,
-    heyoka_threads,
     load_methods,
     newton_elliptic,
     newton_hyperbolic,
@@ -30,6 +29,7 @@ from orbits.tools.bench.harness import (
     orbits_threads,
 )
 from orbits.tools.bench.table import RATIO_LEGEND, WIDTH, by_dataset, notes, plain_table, sig, wrap
+from orbits.validate import peers
 
 #: Pairs on which the per-call rebound API is timed (its throughput is per pair, so it scales).
 PER_CALL_SUBSET = 20_000
@@ -183,16 +183,12 @@ def _orbits_method(threads):
 
 
 def _heyoka_method(threads):
-    import heyoka
-
     start = time.perf_counter()
-    e, M = heyoka.make_vars("e", "M")
-    cf = heyoka.cfunc([heyoka.kepE(e, M)], [e, M])
+    kep_e = peers.heyoka_kepler_solver(threads)
     setup = time.perf_counter() - start
 
     def solve(inputs, hyperbolic):
-        with heyoka_threads(heyoka, threads):
-            return cf(inputs)[0]
+        return kep_e(inputs)
 
     name = "heyoka kepE (cfunc)" if threads == 1 else "heyoka kepE (all cores)"
     return Method(
@@ -205,10 +201,10 @@ def _heyoka_method(threads):
 
 
 def _rebound_method():
-    import rebound
+    m_to_e = peers.rebound_kepler_solver()
 
     def solve(pairs, hyperbolic):
-        return [rebound.M_to_E(e, M) for e, M in pairs]
+        return m_to_e(pairs)
 
     return Method(
         "rebound.M_to_E",

@@ -16,7 +16,6 @@ from orbits.tools.bench.harness import (
     Method,
     best_time,
     cores,
-    heyoka_threads,
     load_methods,
     newton_elliptic,
     orbits_name,
@@ -24,6 +23,7 @@ from orbits.tools.bench.harness import (
     orbits_threads,
 )
 from orbits.tools.bench.table import RATIO_LEGEND, WIDTH, by_dataset, notes, plain_table, wrap
+from orbits.validate import peers
 
 MU_EARTH = 3.986004418e14
 #: States on which slow or per-state methods are timed (their throughput is per state, so it scales).
@@ -128,14 +128,8 @@ def _as_states(states):
 
 def _heyoka_propagator(threads):
     """heyoka's lagrange_prop (heyoka >= 7.11) compiled as a cfunc; elliptic only."""
-    import heyoka
-
-    if not hasattr(heyoka.model, "lagrange_prop"):
-        raise ImportError("heyoka.model.lagrange_prop (heyoka >= 7.11)", name="heyoka >= 7.11")
     start = time.perf_counter()
-    variables = heyoka.make_vars("x", "y", "z", "vx", "vy", "vz", "mu", "t")
-    pos, vel = heyoka.model.lagrange_prop(pos0=variables[:3], vel0=variables[3:6], mu=variables[6], tm=variables[7])
-    cf = heyoka.cfunc(list(pos) + list(vel), variables)
+    cf = peers.heyoka_lagrange_propagator(threads)
     setup = time.perf_counter() - start
 
     def prepare(states):
@@ -143,8 +137,7 @@ def _heyoka_propagator(threads):
         return np.ascontiguousarray(np.vstack([states.r0.T, states.v0.T, mu, states.dt]))
 
     def solve(inputs):
-        with heyoka_threads(heyoka, threads):
-            out = cf(inputs)
+        out = cf(inputs)
         return out[:3].T, out[3:].T
 
     name = "heyoka lagrange_prop" if threads == 1 else "heyoka lagrange_prop (all cores)"
