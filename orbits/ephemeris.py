@@ -551,6 +551,11 @@ def _angle_between(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 def where(body: str, when: Any, observer: str = "Earth", *, source: str = "auto", scale: str = "utc") -> Sighting:
     """Where `body` is at `when` as seen from `observer`: see Sighting. The body may not be the Sun or the
     observer itself."""
+    target, seer = _sighting_points(body, observer)
+    return sighting(states([target, seer], when, "Sun", source=source, scale=scale), target, seer)
+
+
+def _sighting_points(body: str, observer: str) -> tuple[str, str]:
     target, seer = point_name(body), point_name(observer)
     if target in ("Sun", seer):
         raise OrbitDomainError(f"where: the body ({target}) must differ from the Sun and from the observer ({seer})")
@@ -558,8 +563,22 @@ def where(body: str, when: Any, observer: str = "Earth", *, source: str = "auto"
         raise OrbitDomainError("where: the observer must not be the Sun (elongation and phase angle are measured "
                                "from the Sun's direction); for heliocentric states use ephemeris.state(body, when, "
                                "center='Sun')")
-    resolved = resolve_source(source)
-    when = epoch(when, scale)
-    read = _read([target, "Sun", seer], when, resolved)
-    return Sighting(_relative(read, target, "Sun", when, resolved), _relative(read, target, seer, when, resolved),
-                    _relative(read, "Sun", seer, when, resolved))
+    return target, seer
+
+
+def sighting(heliocentric: dict[str, BodyState], body: str, observer: str = "Earth") -> Sighting:
+    """The Sighting of `body` from `observer` out of heliocentric states already read (`states(..., center="Sun")`
+    holding both), without reading the ephemeris again: body - observer and Sun - observer."""
+    target, seer = _sighting_points(body, observer)
+    missing = [p for p in (target, seer) if p not in heliocentric]
+    if missing:
+        raise OrbitDomainError(f"sighting: no heliocentric state of {', '.join(missing)} among "
+                               f"{', '.join(heliocentric)}")
+    body_state, seer_state = heliocentric[target], heliocentric[seer]
+    if body_state.center != "Sun" or seer_state.center != "Sun":
+        raise OrbitDomainError("sighting: the states must be about the Sun (ephemeris.states(..., center='Sun'))")
+    when, source = body_state.epoch, body_state.source
+    return Sighting(body_state,
+                    BodyState(target, seer, when, body_state.r_si - seer_state.r_si,
+                              body_state.v_si - seer_state.v_si, source),
+                    BodyState("Sun", seer, when, -seer_state.r_si, -seer_state.v_si, source))

@@ -33,7 +33,7 @@ from orbits.plot.mechanics import (
     rolling_race,
     vertical_circle_forces,
 )
-from orbits.plot.planets import SOLAR_SYSTEM, solar_system, solar_system_part
+from orbits.plot.planets import SOLAR_SYSTEM, solar_system, solar_system_part, solar_system_points
 from orbits.plot.threebody import coorbital_plane, lagrange_departure, lagrange_plane, ring_breakup, ring_snapshots
 from orbits.plot.validation import (
     TRACK_MARKERS,
@@ -46,7 +46,7 @@ from orbits.plot.validation import (
 __all__ = [
     "save",
     "PROJECTIONS", "InsideBodyWarning", "catalogue_body", "orbit_plane", "orbits",
-    "SOLAR_SYSTEM", "solar_system", "solar_system_part",
+    "SOLAR_SYSTEM", "solar_system", "solar_system_part", "solar_system_points",
     "flyby_plane", "collision_note", "binary_plane", "binary_sky", "radial_velocity_curves",
     "scale_factor_curves", "hubble_diagram", "distance_curves", "cosmology_overview",
     "lagrange_plane", "lagrange_departure", "coorbital_plane", "ring_breakup", "ring_snapshots",

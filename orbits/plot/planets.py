@@ -35,6 +35,7 @@ def solar_system(
     highlight: str | None = None,
     observer: str | None = None,
     source: str = "auto",
+    states: dict | None = None,
 ) -> tuple[Any, Any]:
     """Draw the planets (and Pluto for "outer" and "all") on their osculating heliocentric orbits at `epoch`, in
     the ecliptic frame of J2000, each body's position a dot with its name beside it and the Sun at the centre.
@@ -49,6 +50,8 @@ def solar_system(
     observer : with `highlight`, a body from which a dashed line of sight is drawn to it
     source : the ephemeris, "auto", "de421" or "builtin" (astropy's, which has no Pluto: Pluto is then left out
         and the title says so)
+    states : heliocentric BodyStates at `epoch` already read (ephemeris.states(..., center="Sun")) holding every
+        body of `solar_system_points`: nothing is read again
 
     The orbits are those of `Orbit.from_body(name, epoch)` (orbits.ephemeris.osculating) drawn by `orbits` (the
     first time each orbit passes through the body's position); the title gives the date in TDB and the ephemeris
@@ -56,21 +59,21 @@ def solar_system(
     tests/api/test_plot_and_display.py (the dots equal astropy's reading of DE421, rotated to the ecliptic, to
     1e-9 AU).
     """
-    if which not in SOLAR_SYSTEM:
-        raise ValueError(f"which {which!r} is not one of {', '.join(SOLAR_SYSTEM)}")
     when = ephemeris.epoch(epoch)
-    names = list(SOLAR_SYSTEM[which])
     resolved = ephemeris.resolve_source(source)
-    missing = []
-    if resolved == "builtin" and "Pluto" in names:
-        names.remove("Pluto")
-        missing.append("Pluto (not in astropy's built-in ephemeris)")
+    names, missing = _drawn(which, resolved)
     target = None if highlight is None else _DRAWN_AS.get(ephemeris.point_name(highlight),
                                                           ephemeris.point_name(highlight))
     seer = None if target is None or observer is None else ephemeris.point_name(observer)
     sighted = seer is not None and seer != target
     elsewhere = [seer] if sighted and seer not in (*names, "Sun") else []  # an observer not drawn
-    seen = ephemeris.states([*names, *elsewhere], when, "Sun", source=resolved)  # each body read once
+    if states is None:
+        seen = ephemeris.states([*names, *elsewhere], when, "Sun", source=resolved)  # each body read once
+    else:
+        seen = {ephemeris.point_name(name): state for name, state in states.items()}
+        absent = [name for name in (*names, *elsewhere) if name not in seen]
+        if absent:
+            raise ValueError(f"states lacks {', '.join(absent)}: give every body of solar_system_points")
     conics = [Conic.from_state(problem.r, problem.v, problem.mu)
               for problem in (ephemeris.osculating(seen[name]) for name in names)]
     drawn = draw_orbits(*conics, ax=ax, projection=projection, primary="Sun", labels=[seen[n].point for n in names])
@@ -97,6 +100,29 @@ def solar_system(
     notes = "\n".join(drawn.notes)  # a closest approach inside the Sun, if any, stays in the title
     ax.set_title(title + (f"\n{notes}" if notes else ""), fontsize="medium")
     return drawn.figure, ax
+
+
+def _drawn(which: str, resolved: str) -> tuple[list[str], list[str]]:
+    """(the bodies drawn for `which` from the resolved source, what is left out and why)."""
+    if which not in SOLAR_SYSTEM:
+        raise ValueError(f"which {which!r} is not one of {', '.join(SOLAR_SYSTEM)}")
+    names = list(SOLAR_SYSTEM[which])
+    if resolved == "builtin" and "Pluto" in names:
+        return [n for n in names if n != "Pluto"], ["Pluto (not in astropy's built-in ephemeris)"]
+    return names, []
+
+
+def solar_system_points(which: str = "inner", *, highlight: str | None = None, observer: str | None = None,
+                        source: str = "auto") -> list[str]:
+    """The bodies whose heliocentric states `solar_system` reads (the drawn planets and an observer not drawn), so
+    that a caller reading them for itself can pass them in."""
+    names, _ = _drawn(which, ephemeris.resolve_source(source))
+    target = None if highlight is None else _DRAWN_AS.get(ephemeris.point_name(highlight),
+                                                          ephemeris.point_name(highlight))
+    seer = None if target is None or observer is None else ephemeris.point_name(observer)
+    if seer is not None and seer != target and seer not in (*names, "Sun"):
+        names.append(seer)
+    return names
 
 
 def _uncrowded(positions, axes_index, first, spacing=0.04):

@@ -142,13 +142,24 @@ def ephemeris_work_during(call) -> Counter:
     return counts
 
 
+INNER = ("Mercury", "Venus", "Earth", "Mars", "Sun")
+
+
 @pytest.mark.parametrize(("args", "points"), [
     (["where", "Mars", "--epoch", "2026-11-25"], ("Mars", "Sun", "Earth")),
     (["orbit", "Mars", "--epoch", "2026-11-25"], ("Mars", "Sun")),
+    (["where", "Mars", "--epoch", "2026-11-25", "--plot", "{tmp}/x.png"], INNER),
+    (["where", "Mars", "--epoch", "2026-11-25", "--observer", "Jupiter", "--plot", "{tmp}/x.png"],
+     (*INNER, "Jupiter")),
+    (["where", "Jupiter", "--epoch", "2026-11-25", "--plot", "{tmp}/x.png"],
+     (*INNER, "Jupiter", "Saturn", "Uranus", "Neptune", "Pluto")),
 ])
-def test_an_epoch_is_converted_once_and_each_state_read_once(args, points):
-    """The epoch becomes TDB once and is checked against DE421 once; each body's state is read once."""
+def test_an_epoch_is_converted_once_and_each_state_read_once(args, points, tmp_path):
+    """The epoch becomes TDB once and is checked against DE421 once; each body's state is read once, the picture's
+    included (the command reads every body it and its picture need in one call)."""
     pytest.importorskip("jplephem")
+    pytest.importorskip("matplotlib")
+    args = [a.format(tmp=tmp_path) for a in args]
     result = []
     counts = ephemeris_work_during(lambda: result.append(CliRunner().invoke(app, args)))
     assert result[0].exit_code == 0, result[0].output
