@@ -18,7 +18,7 @@ import numpy as np
 from orbits import display, units
 from orbits.constants import Body, body, body_with_gm
 from orbits.core import elements, propagate, twobody
-from orbits.core.errors import OrbitsWarning
+from orbits.core.errors import InsideBodyWarning
 from orbits.plot import frame
 
 #: projection name -> the indices of the axes it shows
@@ -30,10 +30,6 @@ _AXES = "xyz"
 _MARKERS = {"periapsis": "o", "apoapsis": "s", "body now": "."}
 #: the fields of an orbit that the pictures read (those of orbits.Orbit)
 ELEMENTS = ("mu", "p", "e", "inc", "raan", "argp", "nu")
-
-
-class InsideBodyWarning(OrbitsWarning):
-    """A drawn closest approach lies inside the primary (or inside both bodies' radii): a collision."""
 
 
 @dataclass(frozen=True)
