@@ -63,7 +63,9 @@ _HOMES = {
     "OrbitDomainError": "orbits.core.errors",
     "OrbitsError": "orbits.core.errors",
     "OrbitsWarning": "orbits.core.errors",
+    "InsideBodyWarning": "orbits.core.errors",
     "OutputError": "orbits.core.errors",
+    "ParameterError": "orbits.core.errors",
     "SceneError": "orbits.core.errors",
     "UnknownNameError": "orbits.core.errors",
 }

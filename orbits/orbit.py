@@ -21,7 +21,7 @@ import numpy as np
 
 from orbits import display, inputs, units
 from orbits.constants import Body, G, body
-from orbits.core import anomalies, elements, frames, propagate, twobody
+from orbits.core import anomalies, elements, propagate, twobody
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
 
@@ -174,15 +174,9 @@ class Orbit(display.Displayed):
         barycentre), with the body's mass."""
         from orbits import ephemeris
 
-        target = body(seen.body)
-        if target.parent is None or body(target.parent).name != seen.center:
-            raise OrbitDomainError(f"an orbit needs {seen.body}'s state about its parent "
-                                   f"({target.parent or 'none in the catalogue'}), not about {seen.center}")
-        gm = target.barycentre_gm if target.name in ephemeris.SYSTEM_BARYCENTRES else target.gm
-        mu = (body(target.parent).gm + gm) << units.M3_PER_S2
-        r = frames.equatorial_to_ecliptic(seen.r_si) << units.M
-        v = frames.equatorial_to_ecliptic(seen.v_si) << units.M_PER_S
-        return cls.from_vectors(mu, r, v, mass=gm / G << units.KG)
+        problem = ephemeris.osculating(seen)
+        return cls.from_vectors(problem.mu << units.M3_PER_S2, problem.r << units.M, problem.v << units.M_PER_S,
+                                mass=problem.gm / G << units.KG)
 
     # ---- shape ----------------------------------------------------------------------------------
     @property

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from orbits.core import lagrange
-from orbits.core.errors import OrbitsError, SceneError
+from orbits.core.errors import OrbitsError, ParameterError, SceneError
 from orbits.nbody import NBodyProblem
 from orbits.scene import MODEL_KEYS, show, unknown_keys
 from orbits.validate.builders import (
@@ -342,14 +342,6 @@ MAX_OFFSET = 1e-4
 MIN_MASS_RATIO = 1e-7
 #: a smaller offset is lost in the round-off (1e-16) of positions of order 1
 MIN_OFFSET = 1e-14
-
-
-class ParameterError(OrbitsError, ValueError):
-    """A model parameter, or a combination of them (`name` None), that the model cannot run."""
-
-    def __init__(self, name: str | None, message: str):
-        super().__init__(message)
-        self.name = name
 
 
 def _number(value: object) -> float | None:
