@@ -35,3 +35,27 @@ def test_repeatable_options_still_repeat():
     result = runner.invoke(app, ["orbit", "Earth", "--only", "period,speed", "--unit", "period=d", "--unit",
                                  "speed=m/s"])
     assert result.exit_code == 0 and " d " in result.stdout and "m / s" in result.stdout
+
+
+@pytest.mark.parametrize("args, fragment", [
+    (["bench", "kepler", "--repeats", "0"], "'--repeats': 0 is outside [1, 1,000]"),  # was UnboundLocalError
+    (["bench", "kepler", "--easy", "-5"], "'--easy': -5 is outside [1, 10,000,000]"),  # 'negative dimensions ...'
+    (["bench", "kepler", "--easy", "10000000000000"], "'--easy': 10000000000000 is outside"),  # 73 TiB attempted
+    (["bench", "kepler", "--hard", "0"], "'--hard': 0 is outside [1, 10,000,000]"),  # an empty set printed nan
+    (["bench", "kepler", "--reference", "0"], "'--reference': 0 is outside [1, 100,000]"),
+    (["bench", "propagate", "--states", "0"], "'--states': 0 is outside"),
+    (["bench", "api", "--sizes", "1,0"], "--sizes: 0 is outside [1, 10,000,000]"),
+    (["bench", "cli", "--runs", "0"], "'--runs': 0 is outside [1, 1,000]"),
+    (["bench", "precision", "--target", "-1"], "error target = -1.0 is outside the allowed range (0, inf)"),
+    (["bench", "precision", "--target", "nan"], "error target = nan is not finite"),
+])
+def test_benchmark_sizes_and_targets_are_checked_before_any_work(args, fragment):
+    assert fragment in refused(args)
+
+
+def test_the_harness_refuses_to_time_nothing():
+    from orbits import OrbitDomainError
+    from orbits.tools.bench.harness import best_time
+
+    with pytest.raises(OrbitDomainError, match=r"repeats = 0 is outside \[1, 1,000\]"):
+        best_time(lambda: None, 0)
