@@ -1,5 +1,7 @@
 """Contradictory, repeated or inapplicable options are refused in one line (exit 2), never resolved silently."""
 
+import json
+
 import pytest
 from typer.testing import CliRunner
 
@@ -59,3 +61,20 @@ def test_the_harness_refuses_to_time_nothing():
 
     with pytest.raises(OrbitDomainError, match=r"repeats = 0 is outside \[1, 1,000\]"):
         best_time(lambda: None, 0)
+
+
+def test_a_ring_too_large_to_sum_is_refused_with_its_limit():
+    """ring 99999999999999999999999 said only 'Maximum allowed size exceeded'."""
+    assert "n = 99999999999999999999999 is outside [2, 10000000]" in refused(
+        ["ring", "99999999999999999999999", "--m", "1 kg", "--r", "1 km"])
+
+
+def test_a_ring_beyond_the_stability_analysis_says_what_it_left_out():
+    """A ring of n > 4096 dropped its stability rows without a note."""
+    result = runner.invoke(app, ["ring", "5000", "--m", "1 kg", "--r", "1 km"])
+    assert result.exit_code == 0 and "growth_rate and the break-up are not computed" in result.stdout
+    assert "n = 5000 is outside [2, 4096] for the linear-stability analysis" in " ".join(result.stdout.split())
+    data = json.loads(runner.invoke(app, ["ring", "5000", "--m", "1 kg", "--r", "1 km", "--format", "json"]).stdout)
+    assert "growth_rate" not in data and "linear-stability" in data["about"]["not computed"]
+    quiet = runner.invoke(app, ["ring", "7", "--m", "1 kg", "--r", "1 km", "--format", "json"]).stdout
+    assert "about" not in json.loads(quiet) and "growth_rate" in json.loads(quiet)
