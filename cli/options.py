@@ -177,8 +177,10 @@ def _print_warnings(caught, ours):
     for item in caught:
         if issubclass(item.category, ours):
             if str(item.message) not in seen:
+                from orbits.display import printable
+
                 seen.add(str(item.message))
-                print(f"orbits: warning: {item.message}", file=sys.stderr)
+                print(f"orbits: warning: {printable(item.message)}", file=sys.stderr)
         else:
             warnings.warn_explicit(item.message, item.category, item.filename, item.lineno)
 
@@ -212,9 +214,11 @@ def reports_errors(command: Callable[_P, _R]) -> Callable[_P, _R]:
                   f"compute", file=sys.stderr)
             raise typer.Exit(2) from None
         except (OrbitsError, ValueError, TypeError, KeyError, u.UnitsError, typer.BadParameter) as err:
+            from orbits.display import printable
+
             message = err.format_message() if isinstance(err, typer.BadParameter) else (
                 str(err.args[0]) if isinstance(err, KeyError) and err.args else str(err))
-            print(f"orbits: error: {message}", file=sys.stderr)
+            print(f"orbits: error: {printable(message)}", file=sys.stderr)  # one line, whatever a file held
             raise typer.Exit(2) from None
 
     return wrapper

@@ -19,6 +19,7 @@ as -0; non-finite values show as inf, -inf and nan.
 
 import html
 import math
+import unicodedata
 from collections.abc import Mapping
 from typing import Any
 
@@ -106,6 +107,24 @@ def unit_for(q: u.Quantity, name: str = "", system: str = "natural", overrides: 
             raise u.UnitConversionError(f"--unit {name}={overrides[name]}: {name} is in {q.unit}, not {unit}")
         return unit
     return si_unit(q) if system == "si" else natural_unit(q, name)
+
+
+#: Unicode categories that a terminal would act on or hide: controls (ESC, CR, BEL ...), format characters (the
+#: bidirectional overrides, zero-width joiners) and line and paragraph separators
+_UNPRINTABLE = ("Cc", "Cf", "Zl", "Zp")
+
+
+def printable(text: str) -> str:
+    """`text` as it may reach a terminal: every control, format or separator character written as its Python
+    escape ("\\x1b", "\\u202e", "\\n"), so that text read from a file (a scene's name or description) can
+    neither move the cursor nor break a one-line message."""
+    return "".join(ch.encode("unicode_escape").decode("ascii") if unicodedata.category(ch) in _UNPRINTABLE else ch
+                   for ch in str(text))
+
+
+def visible(text: str) -> bool:
+    """Whether `text` has a character that shows: not only spaces, controls or invisible format characters."""
+    return any(not ch.isspace() and unicodedata.category(ch) not in _UNPRINTABLE for ch in text)
 
 
 def number(x: float, digits: int = DIGITS) -> str:

@@ -45,7 +45,7 @@ from typing import Any, NoReturn
 import astropy.units as u
 import numpy as np
 
-from orbits import inputs, nbody
+from orbits import display, inputs, nbody
 from orbits.constants import BODIES
 from orbits.core import elements, twobody
 from orbits.core.errors import OrbitsError, SceneError
@@ -248,7 +248,7 @@ def from_dict(data: dict, source: str = "<scene>") -> Scene:
         raise SceneError(f"{source}: model: a model scene; load it with orbits.validate.scenes.load "
                          f"(`orbits validate` does)")
     unknown_keys(data, KEYS, "", source, {key: where for key, where in _ELSEWHERE.items() if key not in KEYS})
-    name = ctx.string(data, "name")
+    name = ctx.name(data, "name", "name")
     description = data.get("description", "")
     if not isinstance(description, str):
         ctx.fail("description", f"{show(description)} must be a string")
@@ -325,6 +325,13 @@ class _Context:
     def string(self, data: dict, key: str, where: str | None = None) -> str:
         return self.get(data, key, str, where)
 
+    def name(self, data: dict, key: str, where: str) -> str:
+        """A name: a string with a character that shows (an empty or blank name reads as nothing in a report)."""
+        text = self.string(data, key, where)
+        if not display.visible(text):
+            self.fail(where, f"{show(text)} is empty or blank; give a name that shows")
+        return text
+
     def quantity(self, text: str, kind: str, where: str, bare_unit: u.UnitBase | None = None) -> float:
         """The SI value (float) of a quantity string of the given kind (orbits.inputs.KINDS)."""
         with self.field(where), np.errstate(over="ignore"):
@@ -385,7 +392,7 @@ def _bodies(ctx, entries):
         if not isinstance(spec, dict):
             ctx.fail(where, f"{show(spec)} must be a table")
         unknown_keys(spec, BODY_KEYS, where, ctx.source, synonyms=_BODY_SYNONYMS)
-        name = ctx.string(spec, "name", f"{where}.name")
+        name = ctx.name(spec, "name", f"{where}.name")
         if name in names:
             ctx.fail(f"{where}.name", f"{name!r} is used twice")
         test_particle = spec.get("test_particle", False)
