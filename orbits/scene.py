@@ -163,7 +163,7 @@ def read(name_or_path: str | Path) -> tuple[dict, str]:
         raise SceneError(f"{path}: not UTF-8 text (byte 0x{raw[err.start]:02x} at position {err.start}); "
                          f"save the scene as UTF-8 {kind}") from None
     try:
-        data = json.loads(text) if kind == "JSON" else tomllib.loads(text)
+        data = json.loads(text, object_pairs_hook=_unique_keys) if kind == "JSON" else tomllib.loads(text)
     except ValueError as err:  # JSONDecodeError, TOMLDecodeError, or an integer of more than 4300 digits
         raise SceneError(f"{path}: not valid {kind}: {str(err).split(';')[0]}") from None
     except RecursionError:
@@ -171,6 +171,16 @@ def read(name_or_path: str | Path) -> tuple[dict, str]:
     if not isinstance(data, dict):
         raise SceneError(f"{path}: a scene must be a table (JSON object), not {_json_kind(data)}")
     return data, str(path)
+
+
+def _unique_keys(pairs: list[tuple[str, Any]]) -> dict:
+    """A JSON object as a dict, ValueError for a key given twice (json keeps the last silently; TOML refuses it)."""
+    data = {}
+    for key, value in pairs:
+        if key in data:
+            raise ValueError(f"the key {key!r} is given twice in one object")
+        data[key] = value
+    return data
 
 
 def _json_kind(value: object) -> str:

@@ -14,9 +14,10 @@ def command(
     tof: Annotated[str, typer.Option("--tof", help="time of flight, e.g. '200 d'")],
     primary: Annotated[str, typer.Option(help=f"the attracting body: {MASS_HELP}")] = "Sun",
     revolutions: Annotated[int, typer.Option(min=0, help="complete revolutions before arrival")] = 0,
-    branch: Annotated[str, typer.Option(help="left or right: which of the two solutions when revolutions > 0 "
-                                             "(right is lamberthub's low path)")] = "right",
-    retrograde: Annotated[bool, typer.Option("--retrograde", help="clockwise about +z (default: prograde)")] = False,
+    branch: Annotated[str | None, typer.Option(help="left or right: which of the two solutions when revolutions > 0 "
+                                                    "(default right, lamberthub's low path)")] = None,
+    retrograde: Annotated[bool, typer.Option("--retrograde", help="clockwise about +z (default: prograde; not "
+                                                                  "with --normal, which sets the sense)")] = False,
     normal: Annotated[str | None, typer.Option(
         help="the orbit's angular momentum direction 'X,Y,Z' (any unit or none); needed when r1, r2 are opposite"
     )] = None,
@@ -34,9 +35,9 @@ def command(
         inputs.parse_primary(primary),
         revolutions=revolutions,
         branch=branch,
-        prograde=not retrograde,
+        prograde=False if retrograde else None,
         normal=None if normal is None else inputs.parse_direction(normal, "--normal"),
     )
-    shown = f", {revolutions} revolutions ({branch} branch)" if revolutions else ""
+    shown = f", {revolutions} revolutions ({transfer.branch} branch)" if revolutions else ""
     render.emit(f"Lambert transfer about {primary}{shown}", transfer.quantities(inputs.names(only)), fmt.value)
 

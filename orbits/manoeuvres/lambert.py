@@ -25,6 +25,7 @@ from orbits import display, inputs, units
 from orbits.constants import Body
 from orbits.core import elements
 from orbits.core import lambert as lambert_core
+from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
 
 
@@ -128,8 +129,8 @@ def lambert(
     tof: u.Quantity,
     primary: Body | str | u.Quantity = "Sun",
     revolutions: int | np.ndarray = 0,
-    branch: str = "right",
-    prograde: bool = True,
+    branch: str | None = None,
+    prograde: bool | None = None,
     normal: np.ndarray | u.Quantity | None = None,
 ) -> LambertTransfer:
     """Solve Lambert's problem: the conic about `primary` from r1 (length, (..., 3)) to r2 in the time tof (time).
@@ -140,9 +141,11 @@ def lambert(
     tof : Quantity ['time'] > 0, time of flight.
     primary : a catalogue body (or its name), a mass or a GM (Quantity); default the Sun.
     revolutions : int >= 0 (or an array), complete revolutions before arrival.
-    branch : "left" or "right": which of the two solutions when revolutions > 0 (Izzo's branches; "right" is
-        lamberthub's and hapsira's low_path=True).
-    prograde : motion counterclockwise about +z (True) or clockwise; ignored when `normal` is given.
+    branch : "left" or "right": which of the two solutions when revolutions > 0 (Izzo's branches; "right", the
+        default, is lamberthub's and hapsira's low_path=True). Given with no revolution at all, an error: a
+        zero-revolution transfer has one solution.
+    prograde : motion counterclockwise about +z (True, the default) or clockwise (False). Given with `normal`, an
+        error: the normal sets the sense of motion.
     normal : 3-vector (any unit, or plain numbers), optional: the direction the orbit's angular momentum points
         to (its side of the r1, r2 plane). Required when r1 and r2 are opposite (transfer angle exactly pi).
 
@@ -158,6 +161,7 @@ def lambert(
     seconds = inputs.positive(tof, units.S, "time of flight")
     mu = inputs.gravitational_parameter(primary, "primary mass M")
     direction = None if normal is None else np.asarray(getattr(normal, "value", normal), dtype=float)
+    branch, prograde = _sense(revolutions, branch, prograde, normal)
     solution = lambert_core.solve(start, end, seconds, mu, revolutions, branch, prograde, direction)
     shape = solution.x.shape
     vector_shape = (*shape, 3)
@@ -167,3 +171,15 @@ def lambert(
         solution.v1, solution.v2, solution.angle, solution.x, solution.semi_major_axis,
     )
 
+
+def _sense(revolutions, branch, prograde, normal) -> tuple[str, bool]:
+    """(branch, prograde) with their defaults, refusing what cannot apply: a branch when no transfer makes a
+    revolution (it has one solution), and prograde (or retrograde) together with a normal, which sets the sense."""
+    if branch is not None and not np.any(np.asarray(revolutions) > 0):
+        raise OrbitDomainError(f"branch = {branch!r} chooses between the two solutions of a transfer with revolutions "
+                               f"> 0; with revolutions = 0 there is one: leave branch out")
+    if prograde is not None and normal is not None:
+        sense = "prograde" if prograde else "retrograde"
+        raise OrbitDomainError(f"{sense} and a normal both set the sense of motion; give one (the normal's side of "
+                               f"the r1, r2 plane is where the angular momentum points)")
+    return ("right" if branch is None else branch), (True if prograde is None else bool(prograde))

@@ -78,3 +78,42 @@ def test_a_ring_beyond_the_stability_analysis_says_what_it_left_out():
     assert "growth_rate" not in data and "linear-stability" in data["about"]["not computed"]
     quiet = runner.invoke(app, ["ring", "7", "--m", "1 kg", "--r", "1 km", "--format", "json"]).stdout
     assert "about" not in json.loads(quiet) and "growth_rate" in json.loads(quiet)
+
+
+TRANSFER = ["lambert", "--r1", "1,0,0 AU", "--r2", "0,1.5,0 AU", "--tof", "200 d"]
+
+
+@pytest.mark.parametrize("args, fragment", [
+    (TRANSFER + ["--retrograde", "--normal", "0,0,1"], "retrograde and a normal both set the sense of motion"),
+    (TRANSFER + ["--branch", "left"], "branch = 'left' chooses between the two solutions of a transfer with "
+                                      "revolutions > 0; with revolutions = 0 there is one"),
+    (["binary", "--m1", "Sun", "--m2", "Jupiter", "--a", "5.2 AU", "--gamma", "10 km/s"],
+     "--gamma, the systemic velocity, shows only in the radial-velocity curves: give --rv FILE too"),
+])
+def test_an_option_that_cannot_apply_is_refused_not_dropped(args, fragment):
+    """--retrograde with --normal gave the prograde transfer; --branch left without revolutions and --gamma without
+    --rv changed nothing and said nothing."""
+    assert fragment in refused(args)
+
+
+def test_the_library_refuses_the_same_contradictions():
+    import astropy.units as u
+
+    from orbits import OrbitDomainError, lambert
+
+    r1, r2, tof = [1, 0, 0] * u.AU, [0, 1.5, 0] * u.AU, 200 * u.day
+    with pytest.raises(OrbitDomainError, match="prograde and a normal both set the sense"):
+        lambert(r1, r2, tof, prograde=True, normal=[0, 0, 1])
+    with pytest.raises(OrbitDomainError, match="with revolutions = 0 there is one"):
+        lambert(r1, r2, tof, branch="right")
+    assert lambert(r1, r2, tof, normal=[0, 0, -1]).v1[1] < 0  # the normal alone sets the sense: clockwise
+    several = lambert(r1, r2, [200, 2000] * u.day, revolutions=[0, 1], branch="left")  # the branch applies to one
+    assert several.branch == "left" and several.shape == (2,)
+
+
+def test_a_key_given_twice_in_a_json_scene_is_refused_as_in_toml(tmp_path):
+    """A JSON scene with a duplicate key kept the last value; the same file in TOML is an error."""
+    path = tmp_path / "twice.json"
+    path.write_text('{"name": "a", "asks": ["positions"], "name": "b"}')
+    assert "twice.json: not valid JSON: the key 'name' is given twice in one object" in refused(
+        ["validate", str(path)])
