@@ -17,7 +17,7 @@ import numpy as np
 
 from orbits import units
 from orbits.constants import BODIES, STANDARD_GRAVITY, Body, G, body
-from orbits.core import elements
+from orbits.core import elements, kepler
 from orbits.core.checks import check_finite, first_where, require_magnitude, require_positive
 from orbits.core.errors import OrbitDomainError
 
@@ -175,6 +175,30 @@ def angle(value: u.Quantity, name: str) -> np.ndarray:
     return si
 
 
+def periodic_angle(value: u.Quantity, name: str) -> np.ndarray:
+    """float64 array of an angle that counts modulo a full turn (an anomaly, a node, an argument), in rad and
+    reduced to (-pi, pi], with its value kept however large it is given.
+
+    In a unit of which a turn is a whole number (deg, arcmin, arcsec, hourangle) the whole turns come off in that
+    unit, exactly (fmod is exact in float64), before the one rounding of the conversion: 1e15 deg is -80 deg, where
+    converting to rad first left -79.954 deg. In rad the reduction is the exact double-double one of Kepler's
+    equation, up to 2**50 turns (OrbitDomainError beyond, as for the mean anomaly)."""
+    si = angle(value, name)  # the unit and finiteness rules; the value in rad is used only for rad-like units
+    given = np.asarray(value.value, dtype=float)
+    turn = float((1 * u.cycle).to_value(value.unit))
+    if turn == round(turn):
+        reduced = np.fmod(given, turn)
+        reduced = np.where(reduced > 0.5 * turn, reduced - turn, np.where(reduced <= -0.5 * turn, reduced + turn,
+                                                                          reduced))
+        return units.to_si(reduced << value.unit, units.RAD, name)
+    if np.any(np.abs(si) > kepler.MAX_MEAN_ANOMALY):
+        bad = float(si[np.abs(si) > kepler.MAX_MEAN_ANOMALY].flat[0])
+        raise OrbitDomainError(f"{name} = {bad!r} rad is too large for an exact reduction modulo 2 pi; allowed "
+                               f"|{name.split()[-1]}| <= {kepler.MAX_MEAN_ANOMALY:.6g} rad (2**50 turns)")
+    reduced = kepler.reduce_two_pi(si, 0.0)[0]
+    return np.where(reduced <= -np.pi, np.pi, reduced)
+
+
 def position(value: u.Quantity, name: str = "position r") -> np.ndarray:
     """A position (m, (..., 3)) relative to a primary: a finite vector (`vector`) away from the primary's centre."""
     r = vector(value, units.M, name)
@@ -189,9 +213,9 @@ def inclination(value: u.Quantity) -> np.ndarray:
 
 
 def true_anomaly(value: u.Quantity, e: np.ndarray) -> np.ndarray:
-    """True anomaly nu (rad) on a conic of (checked) eccentricity e: finite and, on an open conic, strictly
-    between the asymptotes (1 + e cos nu > 0)."""
-    nu = angle(value, "true anomaly nu")
+    """True anomaly nu (rad, reduced to (-pi, pi]: periodic_angle) on a conic of (checked) eccentricity e: finite
+    and, on an open conic, strictly between the asymptotes (1 + e cos nu > 0)."""
+    nu = periodic_angle(value, "true anomaly nu")
     elements.require_inside_asymptotes(e, nu)
     return nu
 

@@ -89,8 +89,8 @@ class Orbit(display.Displayed):
         size = inputs.semi_latus_rectum(e + 0.0, a=a, p=p, q=q)
         angles = [
             inputs.inclination(inc),
-            inputs.angle(raan, "longitude of the ascending node Omega"),
-            inputs.angle(argp, "argument of periapsis omega"),
+            inputs.periodic_angle(raan, "longitude of the ascending node Omega"),
+            inputs.periodic_angle(argp, "argument of periapsis omega"),
             inputs.true_anomaly(nu, e),
         ]
         mu = inputs.gravitational_parameter(primary, PRIMARY)
