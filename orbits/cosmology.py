@@ -81,9 +81,10 @@ def _derived(name: str, value: float, given: dict) -> float:
     if value < 0:
         shown = ", ".join(f"{key} = {float(units.to_number(v, key))!r}" for key, v in given.items() if v is not None)
         flat = " in a flat universe (Ok0 = 0 unless given)" if given["Ok0"] is None else ""
+        other = "Ol0" if name == "Omega_Lambda" else "Om0"
         raise OrbitDomainError(f"{name} = {value!r} follows from {shown}{flat}, as the densities sum to 1, and a "
-                               f"density cannot be negative: give {'Ol0' if name == 'Omega_Lambda' else 'Om0'} too (the "
-                               f"curvature Ok0 then follows), or densities that leave room for it")
+                               f"density cannot be negative: give {other} too (the curvature Ok0 then follows), or "
+                               f"densities that leave room for it")
     return value
 
 

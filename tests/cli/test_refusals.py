@@ -117,3 +117,12 @@ def test_a_key_given_twice_in_a_json_scene_is_refused_as_in_toml(tmp_path):
     path.write_text('{"name": "a", "asks": ["positions"], "name": "b"}')
     assert "twice.json: not valid JSON: the key 'name' is given twice in one object" in refused(
         ["validate", str(path)])
+
+
+@pytest.mark.parametrize("args, fragment", [
+    (["cosmology", "--Om", "2"], "Omega_Lambda = -1.0 follows from Om0 = 2.0 in a flat universe"),  # blamed Ol
+    (["cosmology", "--t", "1e30 Gyr"], "t = 1e+30 Gyr is so late that the scale factor"),  # blamed z = -1
+    (["cosmology", "--z", "1e300"], "the Hubble parameter H at z = 1e+300 is larger than float64 holds"),
+])
+def test_cosmology_messages_name_what_the_user_gave(args, fragment):
+    assert fragment in refused(args)
