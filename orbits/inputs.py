@@ -70,7 +70,16 @@ def parse_quantity(text: str, kind: str, name: str, bare_unit: u.UnitBase | None
             raise OrbitDomainError(f"{name}: {text!r} must be a plain number")
         raise OrbitDomainError(f"{name}: {text!r} is a {value.unit.physical_type}, not a {kind}")
     check_finite(value.value, name, value.unit.to_string())
+    _require_no_underflow(text.strip().split(" ")[0], value.value, name)
     return value
+
+
+def _require_no_underflow(literal: str, value: float | np.ndarray, name: str) -> None:
+    """OrbitDomainError when a number written nonzero ("1e-330") reads as 0 in float64 (below 5e-324): it would
+    be taken for an exact zero (a position on the primary, a zero mass)."""
+    mantissa = literal.lower().split("e")[0]
+    if np.all(np.asarray(value) == 0) and any(digit in mantissa for digit in "123456789"):
+        raise OrbitDomainError(f"{name}: {literal!r} is below the smallest float64 (5e-324) and would read as 0")
 
 
 def parse_angle(text: str, name: str) -> u.Quantity:
@@ -100,6 +109,8 @@ def parse_vector(text: str, kind: str, name: str) -> u.Quantity:
     if values.shape != (3,):
         raise OrbitDomainError(f"{name}: {text!r} needs three comma-separated components, e.g. '7000,0,0 km'")
     check_finite(values, name, unit_text)
+    for literal, value in zip(numbers.split(","), values):
+        _require_no_underflow(literal.strip(), value, name)
     if not unit_text.strip():
         raise OrbitDomainError(f"{name}: {text!r} has no unit; write e.g. '{text.strip()} {_kind(kind)[1]}'")
     return parse_quantity(f"1 {unit_text}", kind, name) * values
@@ -227,7 +238,7 @@ def vector(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
     check_finite(si, name, unit.to_string())
     if si.shape[-1:] != (3,):
         raise OrbitDomainError(f"{name} must have a last axis of length 3; got shape {si.shape}")
-    length = np.linalg.norm(si, axis=-1)
+    length = np.hypot(np.hypot(si[..., 0], si[..., 1]), si[..., 2])  # no underflow: |(1e-297, 0, 0)| is not 0
     require_magnitude(length[length > 0], f"|{name}|", unit.to_string())
     return si
 

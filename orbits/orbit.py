@@ -22,6 +22,7 @@ import numpy as np
 from orbits import display, inputs, units
 from orbits.constants import Body, G, body
 from orbits.core import anomalies, elements, propagate, twobody
+from orbits.core.checks import broadcast_shape
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
 
@@ -40,14 +41,9 @@ def _shape(x):
 
 def _check_shapes(**arrays):
     """Raise OrbitDomainError naming the arguments whose shapes do not broadcast together."""
-    shapes = {_shape(x) for x in arrays.values()} - {()}
-    if len(shapes) <= 1:  # scalars and one shape: nothing to check, so np.broadcast_shapes is skipped
-        return
-    try:
-        np.broadcast_shapes(*shapes)
-    except ValueError:
-        listing = ", ".join(f"{name} {_shape(x)}" for name, x in arrays.items())
-        raise OrbitDomainError(f"argument shapes do not broadcast together: {listing}") from None
+    shapes = {name: _shape(x) for name, x in arrays.items()}
+    if len(set(shapes.values()) - {()}) > 1:  # scalars and one shape: nothing to check
+        broadcast_shape(**shapes)
 
 
 @dataclass(frozen=True, eq=False)

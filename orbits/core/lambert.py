@@ -58,7 +58,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from orbits.core import _fast
-from orbits.core.checks import check_finite, require_positive
+from orbits.core.checks import broadcast, broadcast_shape, check_finite, require_positive
 from orbits.core.errors import ConvergenceError, DegenerateOrbitError, OrbitDomainError
 from orbits.core.series import factorial_series, horner
 
@@ -140,7 +140,7 @@ def geometry(r1: ArrayLike, r2: ArrayLike, prograde: bool = True, normal: ArrayL
 
     Raises DegenerateOrbitError for collinear r1 and r2 without a usable `normal`, and for the same direction.
     """
-    r1, r2 = np.broadcast_arrays(_position(r1, "r1"), _position(r2, "r2"))
+    r1, r2 = broadcast(r1=_position(r1, "r1"), r2=_position(r2, "r2"))
     n1, n2 = _norm(r1), _norm(r2)
     require_positive(n1, "|r1|", "m")
     require_positive(n2, "|r2|", "m")
@@ -439,8 +439,8 @@ def solve(r1: ArrayLike, r2: ArrayLike, tof: ArrayLike, mu: ArrayLike, revolutio
     require_positive(mu, "gravitational parameter mu", "m3/s2")
     revolutions = _revolutions(revolutions)
     r1, r2 = _position(r1, "r1"), _position(r2, "r2")
-    shape = np.broadcast_shapes(r1.shape[:-1], r2.shape[:-1], tof.shape, mu.shape, revolutions.shape,
-                                () if normal is None else np.shape(normal)[:-1])
+    shape = broadcast_shape(r1=r1.shape[:-1], r2=r2.shape[:-1], tof=tof.shape, mu=mu.shape,
+                            revolutions=revolutions.shape, normal=() if normal is None else np.shape(normal)[:-1])
     if _fast.use(int(np.prod(shape))):
         solution = _compiled(r1, r2, tof, mu, revolutions, branch, prograde, normal, shape)
         if solution is not None:

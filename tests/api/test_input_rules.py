@@ -13,6 +13,7 @@ from astropy.utils.masked import Masked
 from typer.testing import CliRunner
 
 from orbits import Binary, Flyby, Orbit, OrbitDomainError, Ring, UnknownNameError, body
+from orbits.core import anomalies, elements, kepler, propagate
 from orbits.io import check_target, write_atomic
 from orbits_cli.main import app
 
@@ -161,3 +162,31 @@ def test_the_mean_and_true_anomalies_agree_and_e_lies_in_its_documented_range():
     assert back["mean_anomaly"].to_value(u.deg) == pytest.approx(-80, abs=1e-12)
     hyperbolic = anomalies(2.0, mean_anomaly=1e5 * u.deg)  # a hyperbola's mean anomaly counts no turns
     assert hyperbolic["mean_anomaly"].to_value(u.deg) == pytest.approx(1e5, rel=1e-15)
+
+
+@pytest.mark.parametrize("call, named", [
+    (lambda: __import__("orbits").lambert([[1, 0, 0], [1, 0, 0]] * u.AU, [[0, 1.5, 0], [0, 1, 0], [0, 2, 0]] * u.AU,
+                                          200 * u.day), "r1 (2,), r2 (3,)"),
+    (lambda: __import__("orbits").lambert([1, 0, 0] * u.AU, [0, 1.5, 0] * u.AU, [200, 300, 400] * u.day,
+                                          revolutions=[0, 1]), "tof (3,), mu (), revolutions (2,)"),
+    (lambda: kepler.eccentric_anomaly(np.array([1.0, 2.0]), np.array([0.1, 0.2, 0.3])), "M (2,), e (3,)"),
+    (lambda: propagate.propagate(np.ones((2, 3)), np.ones((2, 3)), 1.0, np.ones(3)), "r0, v0 and mu (2,), dt (3,)"),
+    (lambda: elements.elements_to_state(np.ones(2), np.zeros(3), 0, 0, 0, 0, 1.0), "p (2,), e (3,)"),
+    (lambda: anomalies.true_from_eccentric(np.ones(2), np.zeros(3)), "E (2,), e (3,)"),
+])
+def test_a_broadcast_mismatch_names_the_arguments(call, named):
+    """lambert and the core said only NumPy's "arg 0 with shape (2,) and arg 1 with shape (3,)"."""
+    with pytest.raises(OrbitDomainError, match="argument shapes do not broadcast together: .*" + re.escape(named)):
+        call()
+
+
+@pytest.mark.parametrize("args, fragment", [
+    (["orbit", "--primary", "Earth", "--r", "1e-300,0,0 km", "--v", "0,7,0 km/s"],
+     "|position r| = 1e-297 m is outside the range orbits computes in"),  # 'radial' or 'coincides with the primary'
+    (["orbit", "--primary", "Earth", "--r", "1e-330,0,0 km", "--v", "0,7,0 km/s"],
+     "--r: '1e-330' is below the smallest float64 (5e-324) and would read as 0"),
+    (["orbit", "--primary", "Earth", "--a", "1e-400 km"], "--a: '1e-400' is below the smallest float64"),
+])
+def test_a_tiny_position_is_named_for_what_it_is(args, fragment):
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 2 and fragment in result.stderr and len(result.stderr.splitlines()) == 1
