@@ -126,3 +126,18 @@ def test_a_key_given_twice_in_a_json_scene_is_refused_as_in_toml(tmp_path):
 ])
 def test_cosmology_messages_name_what_the_user_gave(args, fragment):
     assert fragment in refused(args)
+
+
+def test_a_one_dimensional_collision_of_equal_velocities_is_refused_as_in_two():
+    """A 1-D collide with equal velocities reported a collision that 2-D refused."""
+    line = refused(["collide", "--m1", "1 kg", "--v1", "2 m/s", "--m2", "1 kg", "--v2", "2 m/s"])
+    plane = refused(["collide", "--m1", "1 kg", "--v1", "2,0 m/s", "--m2", "1 kg", "--v2", "2,0 m/s"])
+    assert line == plane and "the bodies do not approach, so they never collide" in line
+
+
+def test_a_synchronous_orbit_inside_the_body_is_said():
+    """escape geo Earth --period '1 min' returned an orbit inside the Earth with no warning."""
+    result = runner.invoke(app, ["escape", "geo", "Earth", "--period", "1 min"])
+    assert result.exit_code == 0 and "orbit_radius" in result.stdout
+    assert result.stderr.strip() == ("orbits: warning: the synchronous orbit radius r = 331.2533 km lies inside the "
+                                     "body (radius 6378.1 km): no orbit of this period exists above its surface")
