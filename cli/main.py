@@ -33,6 +33,7 @@ from orbits_cli.commands import (
     where,
 )
 from orbits_cli.options import displays, reports_errors
+from orbits_cli.pages import document
 
 
 class OneLineErrors(TyperGroup):
@@ -94,3 +95,4 @@ bench_app.command("lambert")(reports_errors(bench.lambert))
 bench_app.command("ephemeris")(reports_errors(bench.ephemeris))
 bench_app.command("all")(reports_errors(bench.all_))
 bench_app.command("precision")(reports_errors(precision.command))
+document(app)
