@@ -31,52 +31,45 @@ import math
 
 import numpy as np
 
-from orbits.core import kepler
 from orbits.core._fast import jit
 from orbits.core._fast_math import _cbrt, _cbrt_approx, _cbrt_normal, _exp, _horner, _log_approx, _two_product, _two_sum
+from orbits.core._kepler_shared import (
+    COSH_MINUS_ONE,
+    FIXED_PASS_ACCEPT,
+    HYPERBOLIC_FIXED_STEPS,
+    INVERSE_TWO_PI,
+    LOG_FORM_LIMIT,
+    MARKLEY_SCALE,
+    MAX_MEAN_ANOMALY,
+    ONE_MINUS_COS,
+    SERIES_LIMIT,
+    SINH_MINUS_X,
+    TINY_MEAN_ANOMALY,
+    TWO_PI_1,
+    TWO_PI_2,
+    TWO_PI_3,
+    X_MINUS_SIN,
+)
 from orbits.core._roots import MAX_ITERATIONS
 
-_TWO_PI_1, _TWO_PI_2, _TWO_PI_3 = kepler.TWO_PI_1, kepler.TWO_PI_2, kepler.TWO_PI_3
-_MAX_M = kepler.MAX_MEAN_ANOMALY
-_TINY = kepler._TINY_MEAN_ANOMALY
-_SERIES_LIMIT = kepler._SERIES_LIMIT
-_LOG_FORM_LIMIT = kepler._LOG_FORM_LIMIT
 _PI_1 = 3.141592653589793  # pi = _PI_1 + _PI_2 to 2**-106
 _PI_2 = 1.2246467991473532e-16
-_ACCEPT = kepler.FIXED_PASS_ACCEPT  # relative Newton step below which pass 1 accepts an element
-assert kepler.HYPERBOLIC_FIXED_STEPS == 4, "_hyperbolic_fixed writes its four steps out"
-_MARKLEY_SCALE = kepler._MARKLEY_SCALE
-_INVERSE_TWO_PI = kepler._INVERSE_TWO_PI
+assert HYPERBOLIC_FIXED_STEPS == 4, "_hyperbolic_fixed writes its four steps out"
 _INVALID = 1 << 32
-
-
-def _alternating_series(first):
-    """Coefficients, highest first, of sum_k (-1)**k x**(2k) / (2k + first)!, k = 0..13."""
-    coefficients, factorial = [], float(math.factorial(first))
-    for k in range(14):
-        coefficients.append((-1.0) ** k / factorial)
-        factorial *= (2 * k + first + 1) * (2 * k + first + 2)
-    return tuple(coefficients[::-1])
-
-
-_X_MINUS_SIN = _alternating_series(3)  # (x - sin x) / x**3
-_ONE_MINUS_COS = _alternating_series(2)  # (1 - cos x) / x**2
-_SINH_MINUS_X = tuple(float(c) for c in kepler._SINH_MINUS_X)  # (sinh x - x) / x**3, highest first
-_COSH_MINUS_ONE = tuple(abs(c) for c in _ONE_MINUS_COS)  # (cosh x - 1) / x**2
 
 
 @jit(inline=True)
 def _reduce(M, M_lo):
     """(hi, lo) = M + M_lo - 2 pi round(M / 2 pi) in [-pi, pi] as a double-double (kepler.reduce_two_pi)."""
-    k = np.rint(M * _INVERSE_TWO_PI)
-    p1, e1 = _two_product(k, _TWO_PI_1)
-    p2, e2 = _two_product(k, _TWO_PI_2)
+    k = np.rint(M * INVERSE_TWO_PI)
+    p1, e1 = _two_product(k, TWO_PI_1)
+    p2, e2 = _two_product(k, TWO_PI_2)
     hi, lo = _two_sum(M - p1, -e1)
     hi, t = _two_sum(hi, -p2)
-    lo = lo + t - e2 - k * _TWO_PI_3 + M_lo
+    lo = lo + t - e2 - k * TWO_PI_3 + M_lo
     hi, lo = _two_sum(hi, lo)
     shift = -1.0 if hi > np.pi else (1.0 if hi < -np.pi else 0.0)
-    hi, t = _two_sum(hi + shift * _TWO_PI_1, shift * _TWO_PI_2)
+    hi, t = _two_sum(hi + shift * TWO_PI_1, shift * TWO_PI_2)
     return _two_sum(hi, lo + t)
 
 
@@ -86,8 +79,8 @@ def _trig(x):
     reflect = x >= 2.0
     z = (_PI_1 - x) + _PI_2 if reflect else x  # pi - x, exact to rounding of the final sum
     z2 = z * z
-    z_minus_sin = z2 * z * _horner(_X_MINUS_SIN, z2)
-    one_minus_cos = z2 * _horner(_ONE_MINUS_COS, z2)
+    z_minus_sin = z2 * z * _horner(X_MINUS_SIN, z2)
+    one_minus_cos = z2 * _horner(ONE_MINUS_COS, z2)
     sin = z - z_minus_sin
     x_minus_sin = x - sin if reflect else z_minus_sin
     return sin, x_minus_sin, (2.0 - one_minus_cos if reflect else one_minus_cos)
@@ -104,7 +97,7 @@ def _elliptic_residual(x, m, m_lo, e, one_minus_e):
 def _markley_starter(m, e):
     """kepler.markley_starter: Markley's (1995, Celest. Mech. 63, 101) starter for E in [0, pi] from m in
     [0, pi], written with two divisions."""
-    alpha = (3.0 * np.pi**2 + 1.6 * np.pi * (np.pi - m) / (1.0 + e)) * _MARKLEY_SCALE
+    alpha = (3.0 * np.pi**2 + 1.6 * np.pi * (np.pi - m) / (1.0 + e)) * MARKLEY_SCALE
     d = 3.0 * (1.0 - e) + alpha * e
     q = 2.0 * alpha * d * (1.0 - e) - m * m
     r = 3.0 * alpha * d * (d - 1.0 + e) * m + m * m * m
@@ -117,7 +110,7 @@ def _markley_starter(m, e):
 @jit(inline=True)
 def _elliptic_fixed(M, e):
     """(E or NaN if not certified, 1 if (M, e) is outside the domain else 0): pass 1, branch free."""
-    invalid = not (abs(M) <= _MAX_M and 0.0 <= e < 1.0)
+    invalid = not (abs(M) <= MAX_MEAN_ANOMALY and 0.0 <= e < 1.0)
     e = e + 0.0
     hi, lo = _reduce(M, 0.0)
     sign = -1.0 if (hi < 0.0 or (hi == 0.0 and math.copysign(1.0, M) < 0.0)) else 1.0
@@ -130,8 +123,8 @@ def _elliptic_fixed(M, e):
     f, df, _ = _elliptic_residual(x, m, m_lo, e, one_minus_e)
     step = f / df
     x = min(max(x - step, m), upper)
-    x = x if abs(step) <= _ACCEPT * x else np.nan
-    x = m / one_minus_e if (m < _TINY and e > 0.0) else x
+    x = x if abs(step) <= FIXED_PASS_ACCEPT * x else np.nan
+    x = m / one_minus_e if (m < TINY_MEAN_ANOMALY and e > 0.0) else x
     x = m if e == 0.0 else x
     return sign * x, invalid
 
@@ -157,11 +150,11 @@ def _hyperbolic_trig(x):
     """(sinh x, sinh x - x, cosh x - 1) for x >= 0, free of cancellation and branch free: series below 2,
     one exp (orbits.core._fast_math) above."""
     x2 = x * x
-    series_sinh_minus_x = _horner(_SINH_MINUS_X, x2) * x2 * x
-    series_cosh_minus_one = _horner(_COSH_MINUS_ONE, x2) * x2
+    series_sinh_minus_x = _horner(SINH_MINUS_X, x2) * x2 * x
+    series_cosh_minus_one = _horner(COSH_MINUS_ONE, x2) * x2
     exp = _exp(x)
     sinh = 0.5 * (exp - 1.0 / exp)
-    if x < _SERIES_LIMIT:
+    if x < SERIES_LIMIT:
         return x + series_sinh_minus_x, series_sinh_minus_x, series_cosh_minus_one
     return sinh, sinh - x, 0.5 * (exp + 1.0 / exp) - 1.0
 
@@ -246,11 +239,11 @@ def _hyperbolic_one(M, e):
     if M == 0.0:
         return 0.0
     em1 = e - 1.0
-    if M < _TINY:
+    if M < TINY_MEAN_ANOMALY:
         return M / em1
     lower = math.asinh(M / e)
     upper_log = lower + math.log(e) - math.log(em1)
-    if lower > _LOG_FORM_LIMIT:
+    if lower > LOG_FORM_LIMIT:
         return _halley(_HYPERBOLIC_LOG, lower, lower, upper_log, M, math.log(0.5 * e), e, em1)
     hi = max(min(min(_cubic_root(em1, e / 6.0, M), M / em1), upper_log), lower)
     start = lower if lower > 3.0 else hi
@@ -299,9 +292,9 @@ def _hyperbolic_fixed(M, e):
     f, df, _ = _residual(_HYPERBOLIC_SERIES, x, M, 0.0, e, em1)
     step = f / df
     polished = x - step if (np.isfinite(x - step) and f != 0) else x
-    certified = done and abs(step) <= 2.0**-40 * x and lower <= _LOG_FORM_LIMIT
+    certified = done and abs(step) <= 2.0**-40 * x and lower <= LOG_FORM_LIMIT
     H = polished if certified else np.nan
-    H = M / em1 if M < _TINY else H
+    H = M / em1 if M < TINY_MEAN_ANOMALY else H
     return 0.0 if M == 0.0 else H
 
 

@@ -31,7 +31,6 @@ import math
 
 import numpy as np
 
-from orbits.core import kepler
 from orbits.core._fast import jit
 from orbits.core._fast_kepler import _INVALID, _halley_step, _markley_starter, _reduce, _trig
 from orbits.core._fast_math import (
@@ -45,23 +44,19 @@ from orbits.core._fast_math import (
     _two_product,
     _two_sum,
 )
-from orbits.core._roots import MAX_ITERATIONS
-from orbits.core.kepler import MAX_MEAN_ANOMALY, TWO_PI_1, TWO_PI_2
-from orbits.core.propagate import (
+from orbits.core._kepler_shared import MAX_MEAN_ANOMALY, SINH_MINUS_X, TWO_PI_1, TWO_PI_2, X_MINUS_SIN
+from orbits.core._propagate_shared import (
     BRACKET_DOUBLINGS,
     BRACKET_WIDTH,
+    C2_SERIES,
+    C3_SERIES,
     ELLIPTIC_ERROR,
     ELLIPTIC_STEP,
     FIXED_STEPS,
     SERIES_LIMIT,
     SMALLEST_MEAN_MOTION_SQUARED,
 )
-from orbits.core.propagate import C2_SERIES as _C2_SERIES
-from orbits.core.propagate import C3_SERIES as _C3_SERIES
-
-_X_MINUS_SIN = tuple(float(c) for c in kepler._X_MINUS_SIN)  # (x - sin x) / x**3 in powers of x**2
-_SINH_MINUS_X = tuple(float(c) for c in kepler._SINH_MINUS_X)
-
+from orbits.core._roots import MAX_ITERATIONS
 
 # --- double-double arithmetic (orbits.core._dd), on scalars ---------------------------------------
 
@@ -154,17 +149,17 @@ def _stumpff(z):
     """propagate.stumpff, branch free: series for |z| <= 1, else sin and cos (z > 1) or exp (z < -1) of
     s = sqrt(|z|) from orbits.core._fast_math, in the same formulas; overflows to inf beyond z = -5e5.
     Returns (c0, c1, c2, c3, exp sqrt(max(-z, 1)), its inverse): the hyperbolic terms reuse the exponential."""
-    c2_series, c3_series = _horner(_C2_SERIES, z), _horner(_C3_SERIES, z)
+    c2_series, c3_series = _horner(C2_SERIES, z), _horner(C3_SERIES, z)
     s = math.sqrt(max(z, 1.0))
     sin, cos = _sin_cos(s)
     one_minus_cos = sin * sin / (1.0 + cos) if cos > 0.0 else 1.0 - cos
-    s_minus_sin = s * s * s * _horner(_X_MINUS_SIN, z) if s < SERIES_LIMIT else s - sin
+    s_minus_sin = s * s * s * _horner(X_MINUS_SIN, z) if s < SERIES_LIMIT else s - sin
     t = math.sqrt(max(-z, 1.0))
     exp = _exp(t)
     inverse = 1.0 / exp
     sinh, cosh = 0.5 * (exp - inverse), 0.5 * (exp + inverse)
     cosh_minus_one = sinh * ((1.0 - inverse) / (1.0 + inverse))
-    sinh_minus_t = t * t * t * _horner(_SINH_MINUS_X, -z) if t < SERIES_LIMIT else sinh - t
+    sinh_minus_t = t * t * t * _horner(SINH_MINUS_X, -z) if t < SERIES_LIMIT else sinh - t
     if abs(z) <= 1.0:
         return 1.0 - z * c2_series, 1.0 - z * c3_series, c2_series, c3_series, exp, inverse
     if z > 0.0:

@@ -32,36 +32,27 @@ from numpy.typing import ArrayLike
 
 from orbits.core import _fast
 from orbits.core._dd import two_product, two_sum
+from orbits.core._kepler_shared import (
+    FIXED_PASS_ACCEPT,
+    HYPERBOLIC_FIXED_STEPS,
+    INVERSE_TWO_PI,
+    LOG_FORM_LIMIT,
+    MARKLEY_SCALE,
+    MAX_MEAN_ANOMALY,
+    SERIES_LIMIT,
+    SINH_MINUS_X,
+    TINY_MEAN_ANOMALY,
+    TWO_PI_1,
+    TWO_PI_2,
+    TWO_PI_3,
+    X_MINUS_SIN,
+)
 from orbits.core._roots import halley_in_bracket, halley_step
 from orbits.core.checks import check_eccentricity, check_finite
 from orbits.core.errors import OrbitDomainError
-from orbits.core.series import factorial_series, horner
+from orbits.core.series import horner
 
-# 2 pi as an unevaluated sum of three doubles (checked against mpmath in the tests).
-TWO_PI_1 = 6.283185307179586
-TWO_PI_2 = 2.4492935982947064e-16
-TWO_PI_3 = -5.989539619436679e-33
-
-#: The fixed first pass of the elliptic solver certifies E when its Newton step is below this, relative.
-FIXED_PASS_ACCEPT = 2.0**-30
-
-#: Safeguarded Halley steps of the hyperbolic solver's fixed first pass (1 to 4, mean 2.1, on the benchmark's set).
-HYPERBOLIC_FIXED_STEPS = 4
-
-#: Largest |M| (rad) reduced exactly: 2**50 revolutions.
-MAX_MEAN_ANOMALY = 2.0**50 * TWO_PI_1
-
-_SERIES_LIMIT = 2.0  # |x| below which x - sin x and sinh x - x come from their series
-_LOG_FORM_LIMIT = 20.0  # H above which the hyperbolic equation is solved in logarithmic form
 _OTHER_CONICS = "; use eccentric_anomaly for e < 1, parabolic_anomaly (Barker) for e = 1, hyperbolic_anomaly for e > 1"
-_TINY_MEAN_ANOMALY = 1e-280  # below this, E = M / (1 - e) and H = M / (e - 1) are exact roots
-_MARKLEY_SCALE = 1.0 / (np.pi**2 - 6.0)
-_INVERSE_TWO_PI = 1.0 / TWO_PI_1
-
-
-#: x**3 times these series in x**2 are x - sin x and sinh x - x (14 terms: below 2**-53 relative for |x| < 2)
-_X_MINUS_SIN = factorial_series(3, -1.0, 14)
-_SINH_MINUS_X = factorial_series(3, 1.0, 14)
 
 
 def _series(x, coefficients):
@@ -73,16 +64,16 @@ def _series(x, coefficients):
 def x_minus_sin(x: ArrayLike) -> np.ndarray:
     """x - sin x without cancellation (series for |x| < 2), float64 arrays."""
     x = np.asarray(x, dtype=float)
-    return np.where(np.abs(x) < _SERIES_LIMIT, _series(x, _X_MINUS_SIN), x - np.sin(x))
+    return np.where(np.abs(x) < SERIES_LIMIT, _series(x, X_MINUS_SIN), x - np.sin(x))
 
 
 def sinh_minus_x(x: ArrayLike) -> np.ndarray:
     """sinh x - x without cancellation (series for |x| < 2), float64 arrays."""
     x = np.asarray(x, dtype=float)
-    small = np.abs(x) < _SERIES_LIMIT
+    small = np.abs(x) < SERIES_LIMIT
     with np.errstate(over="ignore"):
         large = np.sinh(np.where(small, 0.0, x)) - x
-    return np.where(small, _series(x, _SINH_MINUS_X), large)
+    return np.where(small, _series(x, SINH_MINUS_X), large)
 
 
 def reduce_mean_anomaly(M: ArrayLike) -> tuple[float | np.ndarray, float | np.ndarray]:
@@ -106,7 +97,7 @@ def reduce_two_pi(M: ArrayLike, M_lo: ArrayLike) -> tuple[float | np.ndarray, fl
     """(hi, lo) = M + M_lo - 2 pi k in [-pi, pi] as a double-double, k = round(M / 2 pi), for a double-double
     M + M_lo (|M_lo| <= ulp(M)) with |M| <= MAX_MEAN_ANOMALY (unchecked): 2 pi in three parts and exact
     products (two_product), so the result keeps about 2**-100 of |M|."""
-    k = np.rint(M * _INVERSE_TWO_PI)  # a multiplication (the kernels' divisions cost); k off by one at +-pi is
+    k = np.rint(M * INVERSE_TWO_PI)  # a multiplication (the kernels' divisions cost); k off by one at +-pi is
     p1, e1 = two_product(k, TWO_PI_1)  # shifted back below
     p2, e2 = two_product(k, TWO_PI_2)
     hi = M - p1  # exact (Sterbenz) since p1 is within a factor 2 of M whenever k != 0
@@ -126,7 +117,7 @@ def markley_starter(m: ArrayLike, e: ArrayLike) -> np.ndarray:
     (Markley) on e <= 0.99, so one Halley step and one Newton step reach the root (the compiled elliptic
     solver's pass 1, and the elliptic pass of orbits.core.propagate). Written with two divisions, as the
     kernels (orbits/core/_fast_kepler.py) compute it."""
-    alpha = (3.0 * np.pi**2 + 1.6 * np.pi * (np.pi - m) / (1.0 + e)) * _MARKLEY_SCALE
+    alpha = (3.0 * np.pi**2 + 1.6 * np.pi * (np.pi - m) / (1.0 + e)) * MARKLEY_SCALE
     d = 3.0 * (1.0 - e) + alpha * e
     q = 2.0 * alpha * d * (1.0 - e) - m * m
     r = 3.0 * alpha * d * (d - 1.0 + e) * m + m * m * m
@@ -194,7 +185,7 @@ def _solve_elliptic_positive(m_hi, m_lo, e):
     safeguarded iteration on those it does not certify (as the compiled solver)."""
     one_minus_e = 1.0 - e
     E = np.where(e == 0.0, m_hi, 0.0)
-    tiny = (m_hi < _TINY_MEAN_ANOMALY) & (e > 0.0)
+    tiny = (m_hi < TINY_MEAN_ANOMALY) & (e > 0.0)
     E = np.where(tiny, m_hi / one_minus_e, E)
     solve = (e > 0.0) & ~tiny & (m_hi > 0.0)
     if not np.any(solve):
@@ -267,10 +258,10 @@ def _solve_hyperbolic_positive(M, e):
     form) on what it does not certify (as the compiled solver)."""
     shape, M, e = M.shape, M.reshape(-1), e.reshape(-1)
     H = np.zeros_like(M)
-    tiny = (M < _TINY_MEAN_ANOMALY) & (M > 0)
+    tiny = (M < TINY_MEAN_ANOMALY) & (M > 0)
     H[tiny] = M[tiny] / (e[tiny] - 1.0)
     lower = np.arcsinh(M / e)
-    log_form = lower > _LOG_FORM_LIMIT
+    log_form = lower > LOG_FORM_LIMIT
     series = (M > 0) & ~tiny & ~log_form
     if np.any(series):
         H[series], certified = _hyperbolic_fixed_pass(M[series], e[series])

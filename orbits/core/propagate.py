@@ -56,45 +56,24 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from orbits.core import _dd, _fast
+from orbits.core._kepler_shared import MAX_MEAN_ANOMALY, SINH_MINUS_X, TWO_PI_1, TWO_PI_2, X_MINUS_SIN
+from orbits.core._propagate_shared import (
+    BRACKET_DOUBLINGS,
+    BRACKET_WIDTH,
+    C2_SERIES,
+    C3_SERIES,
+    ELLIPTIC_ERROR,
+    ELLIPTIC_STEP,
+    FIXED_STEPS,
+    SERIES_LIMIT,
+    SMALLEST_MEAN_MOTION_SQUARED,
+)
 from orbits.core._roots import halley_in_bracket
 from orbits.core.checks import check_finite
 from orbits.core.elements import check_state
 from orbits.core.errors import DegenerateOrbitError
-from orbits.core.kepler import (
-    _SINH_MINUS_X,
-    _X_MINUS_SIN,
-    MAX_MEAN_ANOMALY,
-    TWO_PI_1,
-    TWO_PI_2,
-    markley_starter,
-    reduce_two_pi,
-    x_minus_sin,
-)
-from orbits.core.series import factorial_series, horner
-
-#: c_k(z) = sum_j (-z)**j / (2j + k)! for k = 2, 3, to 12 terms (|z| <= 1)
-C2_SERIES, C3_SERIES = factorial_series(2, -1.0, 12), factorial_series(3, -1.0, 12)
-
-#: Below this s = sqrt(|z|), s - sin s and sinh s - s come from their series s**3 P(z) (they cancel above 1/2).
-SERIES_LIMIT = 2.0
-
-#: Halley steps of pass 1 (then certified): the starter needs 2.5-3 on average and at most 5 on the benchmark's
-#: mixed states (orbits/core/_fast_propagate.py).
-FIXED_STEPS = 5
-
-#: Doublings of hi = tau / r0 that pass 2 may take to bracket the root (F grows at least linearly in chi).
-BRACKET_DOUBLINGS = 2100
-
-#: The elliptic pass certifies x when the Newton step d is below 2**-26 x and its own error, |F''| d**2 / (2 F'),
-#: below 2**-56 x.
-ELLIPTIC_STEP, ELLIPTIC_ERROR = 2.0**-26, 2.0**-55
-
-#: The bracket [m - 2 e, m + 2 e] of x, widened for the rounding of e.
-BRACKET_WIDTH = 2.0 * (1.0 + 2.0**-20)
-
-#: Smallest n**2 (1/s**2) the elliptic pass takes: below it (a ~ 1e96 m about the Sun) n**2 nears the subnormal
-#: range, and such states go to the universal passes.
-SMALLEST_MEAN_MOTION_SQUARED = 1e-280
+from orbits.core.kepler import markley_starter, reduce_two_pi, x_minus_sin
+from orbits.core.series import horner
 
 
 def stumpff(z: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -113,7 +92,7 @@ def stumpff(z: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarra
     s = np.sqrt(zp)
     sin, cos = np.sin(s), np.cos(s)
     one_minus_cos = np.where(cos > 0.0, sin * sin / (1.0 + np.maximum(cos, 0.0)), 1.0 - cos)
-    s_minus_sin = np.where(s < SERIES_LIMIT, s * s * s * horner(_X_MINUS_SIN, zp), s - sin)
+    s_minus_sin = np.where(s < SERIES_LIMIT, s * s * s * horner(X_MINUS_SIN, zp), s - sin)
     c0[pos], c1[pos], c2[pos], c3[pos] = cos, sin / s, one_minus_cos / zp, s_minus_sin / (s * zp)
     zn = -z[neg]
     t = np.sqrt(zn)
@@ -122,7 +101,7 @@ def stumpff(z: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarra
         inverse = 1.0 / exp
         sinh, cosh = 0.5 * (exp - inverse), 0.5 * (exp + inverse)
         cosh_minus_one = sinh * ((1.0 - inverse) / (1.0 + inverse))
-        sinh_minus_t = np.where(t < SERIES_LIMIT, t * t * t * horner(_SINH_MINUS_X, zn), sinh - t)
+        sinh_minus_t = np.where(t < SERIES_LIMIT, t * t * t * horner(SINH_MINUS_X, zn), sinh - t)
         c0[neg], c1[neg], c2[neg], c3[neg] = cosh, sinh / t, cosh_minus_one / zn, sinh_minus_t / (t * zn)
     return c0, c1, c2, c3
 
