@@ -5,26 +5,25 @@ Every kernel has the signature kernel(start, stop, inputs..., out) and returns
 ``invalid * 2**32 + unconverged``: invalid counts inputs outside the domain (the caller then raises the
 NumPy checks' error message), unconverged counts solves that hit the iteration cap (ConvergenceError).
 
-Elliptic solver, in two passes over the batch:
-1. A fixed, branch-free pipeline that LLVM vectorises (AVX2 or AVX-512): exact reduction of M modulo 2 pi,
-   Markley's (1995) starter (|error| <= 2.7e-4 relative on e <= 0.99), one Halley step, one Newton step.
-   sin, x - sin x and 1 - cos x come from Taylor polynomials on [0, 2] and, past x = 2, on pi - x, so
-   the residual (1 - e) x - M + e (x - sin x) is free of cancellation and no libm call blocks the
-   vectoriser. The result is accepted when the last Newton step d satisfies |d| <= 2**-30 x: on
-   [0, pi] the residual is convex with (x f''/ 2 f') <= 1, so the step then leaves an error below
-   2**-58 x before rounding. Elements that fail the test are marked NaN.
-2. The marked elements run the safeguarded Halley iteration of orbits.core._roots from the cubic
-   starter (none of the benchmark's easy, hard or hyperbolic pairs needed it; tests call it directly).
-Measured on the benchmark's 1e6 easy pairs, one thread: 56 M solves/s (84 M/s for pass 1 without the
-reduction of M), against 2.9 M/s for the NumPy implementation and 37-40 M/s for heyoka's kepE cfunc;
-worst error 1.7 ulp over 2.8e4 mixed pairs against mpmath.
-Measured along the way: without numba-level inlining of the helpers LLVM does not vectorise and pass 1
-runs at 3.4 M/s; a loop over the Halley steps, or a chain of ifs for the quadrant of sin and cos,
-stops the vectoriser too (hence the written-out steps and the arithmetic selections).
+Elliptic solver (kepler._elliptic_single_pass), in blocks of _BLOCK elements, each in two vectorised stages
+(AVX2 or AVX-512) whose short dependency chains the CPU overlaps:
+1. Exact reduction of M modulo 2 pi and Markley's (1995) starter, without contraction (the reduction's
+   double-double parts stay exact); the starter's cube root to 2e-5 (_cbrt_rough), below its own 2.8e-4.
+2. With fused multiply-adds: one evaluation of sin x, x - sin x and 1 - cos x from Taylor polynomials on
+   [0, 2] and, past x = 2, on pi - x (no libm call, which would block the vectoriser), and one sixth-order step.
+   Elements whose Newton step exceeds SINGLE_PASS_ACCEPT x are marked NaN.
+Then the safeguarded Halley iteration of orbits.core._roots from the cubic starter on the marked elements
+(none of 1.6e6 random pairs over every e < 1 needed it; tests call it directly). Every loop runs over views with
+range(n): LLVM then vectorises it behind a run-time alias check that distinct arrays pass whatever their
+addresses (a range(start, stop) loop over the whole arrays fell back to scalar code when the output began less
+than 32 bytes after an input). Throughput against heyoka's kepE is in the README's Benchmarks section.
+Measured along the way: without numba-level inlining of the helpers LLVM does not vectorise, and a chain of ifs
+for the quadrant of sin and cos stops the vectoriser too (hence the arithmetic selections); moving the starter
+into the second stage cost a quarter of the speed.
 
-The hyperbolic solver has the same two passes (pass 1: four safeguarded Halley steps on the series
-form, own exp; 26 M/s on the hyperbolic set against 7 M/s in NumPy and 5 M/s for a scalar port using
-libm). Barker's equation is a branch-free closed form (180 M/s against 40 M/s in NumPy).
+The hyperbolic solver has two passes too (the first: four safeguarded Halley steps on the series form, with
+its own exp, vectorised; a port with libm calls ran five times slower). Barker's equation is a branch-free closed
+form.
 """
 
 import math
@@ -32,17 +31,19 @@ import math
 import numpy as np
 
 from orbits.core._fast import jit
-from orbits.core._fast_math import _cbrt, _cbrt_approx, _cbrt_normal, _exp, _horner, _log_approx, _two_product, _two_sum
+from orbits.core._fast_math import _cbrt, _cbrt_normal, _cbrt_rough, _exp, _horner, _log_approx, _two_product, _two_sum
 from orbits.core._kepler_shared import (
     COSH_MINUS_ONE,
-    FIXED_PASS_ACCEPT,
     HYPERBOLIC_FIXED_STEPS,
     INVERSE_TWO_PI,
     LOG_FORM_LIMIT,
     MARKLEY_SCALE,
     MAX_MEAN_ANOMALY,
     ONE_MINUS_COS,
+    PI_1,
+    PI_2,
     SERIES_LIMIT,
+    SINGLE_PASS_ACCEPT,
     SINH_MINUS_X,
     TINY_MEAN_ANOMALY,
     TWO_PI_1,
@@ -52,8 +53,6 @@ from orbits.core._kepler_shared import (
 )
 from orbits.core._roots import MAX_ITERATIONS
 
-_PI_1 = 3.141592653589793  # pi = _PI_1 + _PI_2 to 2**-106
-_PI_2 = 1.2246467991473532e-16
 assert HYPERBOLIC_FIXED_STEPS == 4, "_hyperbolic_fixed writes its four steps out"
 _INVALID = 1 << 32
 
@@ -77,7 +76,7 @@ def _reduce(M, M_lo):
 def _trig(x):
     """(sin x, x - sin x, 1 - cos x) for x in [0, pi], each free of cancellation, no libm call."""
     reflect = x >= 2.0
-    z = (_PI_1 - x) + _PI_2 if reflect else x  # pi - x, exact to rounding of the final sum
+    z = (PI_1 - x) + PI_2 if reflect else x  # pi - x, exact to rounding of the final sum
     z2 = z * z
     z_minus_sin = z2 * z * _horner(X_MINUS_SIN, z2)
     one_minus_cos = z2 * _horner(ONE_MINUS_COS, z2)
@@ -101,32 +100,10 @@ def _markley_starter(m, e):
     d = 3.0 * (1.0 - e) + alpha * e
     q = 2.0 * alpha * d * (1.0 - e) - m * m
     r = 3.0 * alpha * d * (d - 1.0 + e) * m + m * m * m
-    w = _cbrt_approx(abs(r) + math.sqrt(q * q * q + r * r))
+    w = _cbrt_rough(abs(r) + math.sqrt(q * q * q + r * r))
     w = w * w
     denominator = w * w + w * q + q * q
     return (2.0 * r * w + m * denominator) / (denominator * d)
-
-
-@jit(inline=True)
-def _elliptic_fixed(M, e):
-    """(E or NaN if not certified, 1 if (M, e) is outside the domain else 0): pass 1, branch free."""
-    invalid = not (abs(M) <= MAX_MEAN_ANOMALY and 0.0 <= e < 1.0)
-    e = e + 0.0
-    hi, lo = _reduce(M, 0.0)
-    sign = -1.0 if (hi < 0.0 or (hi == 0.0 and math.copysign(1.0, M) < 0.0)) else 1.0
-    m, m_lo = abs(hi), sign * lo
-    one_minus_e = 1.0 - e
-    upper = min(min(m + e, np.pi), m / one_minus_e)
-    x = min(max(_markley_starter(m, e), m), upper)
-    f, df, d2f = _elliptic_residual(x, m, m_lo, e, one_minus_e)
-    x = min(max(x - 2.0 * f * df / (2.0 * df * df - f * d2f), m), upper)
-    f, df, _ = _elliptic_residual(x, m, m_lo, e, one_minus_e)
-    step = f / df
-    x = min(max(x - step, m), upper)
-    x = x if abs(step) <= FIXED_PASS_ACCEPT * x else np.nan
-    x = m / one_minus_e if (m < TINY_MEAN_ANOMALY and e > 0.0) else x
-    x = m if e == 0.0 else x
-    return sign * x, invalid
 
 
 @jit(inline=True)
@@ -216,17 +193,77 @@ def _elliptic_safeguarded(M, e):
     return sign * _halley(_ELLIPTIC, start, m, upper, m, m_lo, e, one_minus_e)
 
 
+@jit(inline=True)
+def _sixth_order_step(f, f1, s, c, sign):
+    """kepler.sixth_order_step: (the root offset of the Taylor polynomial of order five, the Newton step)."""
+    inverse = 1.0 / f1
+    t = -f * inverse
+    a2, a3 = (0.5 * inverse) * s, (inverse * (1.0 / 6.0)) * c
+    a4, a5 = (sign * (1.0 / 12.0)) * a2, (sign * 0.05) * a3
+    a2_squared = a2 * a2
+    b3 = 2.0 * a2_squared - a3
+    b4 = a2 * (5.0 * a3 - 5.0 * a2_squared) - a4
+    b5 = a2_squared * (14.0 * a2_squared - 21.0 * a3) + (6.0 * a2 * a4 + 3.0 * a3 * a3) - a5
+    return t * (1.0 + t * (-a2 + t * (b3 + t * (b4 + t * b5)))), t
+
+
+@jit
+def _elliptic_reduce_block(M, e, m, m_lo, sign, start):
+    """Stage 1 of the single pass on a block (vectorised, without contraction: the reduction's double-double
+    parts must stay exact): m + m_lo = |M reduced| in [0, pi], its sign and Markley's starter. Returns how many
+    (M, e) are outside the domain."""
+    invalid = 0
+    for j in range(M.size):
+        M_j, e_j = M[j], e[j]
+        invalid += not (abs(M_j) <= MAX_MEAN_ANOMALY and 0.0 <= e_j < 1.0)
+        hi, lo = _reduce(M_j, 0.0)
+        s = -1.0 if (hi < 0.0 or (hi == 0.0 and math.copysign(1.0, M_j) < 0.0)) else 1.0
+        m_j = abs(hi)
+        m[j], m_lo[j], sign[j] = m_j, s * lo, s
+        start[j] = _markley_starter(m_j, e_j + 0.0)
+    return invalid
+
+
+@jit(contract=True)
+def _elliptic_solve_block(e, m, m_lo, sign, start, out):
+    """Stage 2 (vectorised, with fused multiply-adds): one trigonometric evaluation at the starter and the
+    sixth-order step (kepler._elliptic_single_pass); NaN where the step is not certified."""
+    for j in range(out.size):
+        e_j, m_j = e[j] + 0.0, m[j]
+        one_minus_e = 1.0 - e_j
+        upper = min(m_j + e_j, np.pi)  # E - M = e sin E is in [0, e]
+        x = min(max(start[j], m_j), upper)
+        sin, x_minus_sin, one_minus_cos = _trig(x)
+        f = ((one_minus_e * x - m_j) + e_j * x_minus_sin) - m_lo[j]
+        f1 = one_minus_e + e_j * one_minus_cos
+        step, t = _sixth_order_step(f, f1, e_j * sin, e_j * (1.0 - one_minus_cos), -1.0)
+        x = min(max(x + step, m_j), upper) if abs(t) <= SINGLE_PASS_ACCEPT * x else np.nan
+        x = m_j / one_minus_e if (m_j < TINY_MEAN_ANOMALY and e_j > 0.0) else x
+        x = m_j if e_j == 0.0 else x
+        out[j] = sign[j] * x
+
+
+_BLOCK = 1024  # elements per block: the stages' scratch rows stay in the L1 cache
+
+
 @jit
 def elliptic(start, stop, M, e, out):
-    """out[i] = E(M[i], e[i]) for start <= i < stop; returns invalid * 2**32 + unconverged."""
+    """out[i] = E(M[i], e[i]) for start <= i < stop; returns invalid * 2**32 + unconverged. The single pass in two
+    stages per block of _BLOCK elements, then the safeguarded iteration on the elements it leaves NaN. Loops run
+    over views with range(n), which LLVM vectorises with a run-time alias check whatever the arrays' layout."""
+    M, e, out = M[start:stop], e[start:stop], out[start:stop]
+    m, m_lo, sign, starter = np.empty(_BLOCK), np.empty(_BLOCK), np.empty(_BLOCK), np.empty(_BLOCK)
     invalid = 0
-    for i in range(start, stop):
-        out[i], bad = _elliptic_fixed(M[i], e[i])
-        invalid += bad
+    for first in range(0, out.size, _BLOCK):
+        last = min(first + _BLOCK, out.size)
+        size = last - first
+        invalid += _elliptic_reduce_block(M[first:last], e[first:last], m[:size], m_lo[:size], sign[:size],
+                                          starter[:size])
+        _elliptic_solve_block(e[first:last], m[:size], m_lo[:size], sign[:size], starter[:size], out[first:last])
     if invalid:
         return invalid * _INVALID
     unconverged = 0
-    for i in range(start, stop):
+    for i in range(out.size):
         if np.isnan(out[i]):
             out[i] = _elliptic_safeguarded(M[i], e[i])
             unconverged += np.isnan(out[i])
@@ -301,16 +338,19 @@ def _hyperbolic_fixed(M, e):
 @jit
 def hyperbolic(start, stop, M, e, out):
     """out[i] = H(M[i], e[i]); returns invalid * 2**32 + unconverged. Pass 1 (_hyperbolic_fixed) runs
-    on every element, vectorised; pass 2 (the safeguarded iteration) on those it leaves NaN."""
+    on every element, vectorised (over views, with range(n)); pass 2 (the safeguarded iteration) on those it
+    leaves NaN."""
+    M, e, out = M[start:stop], e[start:stop], out[start:stop]
     invalid = 0
-    for i in range(start, stop):
-        invalid += not (np.isfinite(M[i]) and 1.0 < e[i] < np.inf)
-        H = _hyperbolic_fixed(abs(M[i]), e[i])
-        out[i] = -H if math.copysign(1.0, M[i]) < 0.0 else H
+    for i in range(out.size):
+        M_i, e_i = M[i], e[i]
+        invalid += not (np.isfinite(M_i) and 1.0 < e_i < np.inf)
+        H = _hyperbolic_fixed(abs(M_i), e_i)
+        out[i] = -H if math.copysign(1.0, M_i) < 0.0 else H
     if invalid:
         return invalid * _INVALID
     unconverged = 0
-    for i in range(start, stop):
+    for i in range(out.size):
         if np.isnan(out[i]):
             H = _hyperbolic_one(abs(M[i]), e[i])
             out[i] = -H if math.copysign(1.0, M[i]) < 0.0 else H
@@ -338,9 +378,11 @@ def _barker_one(w):
 
 @jit
 def parabolic(start, stop, W, out):
-    """out[i] = D(W[i]), Barker's equation; returns invalid * 2**32."""
+    """out[i] = D(W[i]), Barker's equation; returns invalid * 2**32 (vectorised over views, with range(n))."""
+    W, out = W[start:stop], out[start:stop]
     invalid = 0
-    for i in range(start, stop):
-        invalid += not np.isfinite(W[i])
-        out[i] = math.copysign(_barker_one(abs(W[i])), W[i])
+    for i in range(out.size):
+        W_i = W[i]
+        invalid += not np.isfinite(W_i)
+        out[i] = math.copysign(_barker_one(abs(W_i)), W_i)
     return invalid * _INVALID

@@ -12,8 +12,13 @@ TWO_PI_2 = 2.4492935982947064e-16
 TWO_PI_3 = -5.989539619436679e-33
 INVERSE_TWO_PI = 1.0 / TWO_PI_1
 
-#: The fixed first pass of the elliptic solver certifies E when its Newton step is below this, relative.
-FIXED_PASS_ACCEPT = 2.0**-30
+#: pi = PI_1 + PI_2 to 2**-106
+PI_1 = 3.141592653589793
+PI_2 = 1.2246467991473532e-16
+
+#: The elliptic single pass certifies E when its Newton step is below this, relative (Markley's starter is within
+#: 2.8e-4 = 2**-11.8; the sixth-order step then leaves below 132 (2**-11)**6 < 2**-58).
+SINGLE_PASS_ACCEPT = 2.0**-11
 
 #: Safeguarded Halley steps of the hyperbolic solver's fixed first pass (1 to 4, mean 2.1, on the benchmark's set).
 HYPERBOLIC_FIXED_STEPS = 4
