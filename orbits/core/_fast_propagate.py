@@ -119,8 +119,8 @@ def _dd_dot(ax, ay, az, bx, by, bz):
 
 @jit(inline=True)
 def _reduce_by_periods(rx, ry, rz, vx, vy, vz, mu, dt):
-    """(dt - k P with k = round(dt / P) on ellipses, dt on open orbits; alpha = 2 / r - v**2 / mu [1/m]),
-    both from double-double arithmetic (propagate._reduce_by_periods)."""
+    """(dt - k P with k = round(dt / P) on ellipses, dt on open orbits; alpha = 2 / r - v**2 / mu [1/m]; k; P),
+    from double-double arithmetic (propagate._reduce_by_periods)."""
     r2_hi, r2_lo = _dd_dot(rx, ry, rz, rx, ry, rz)
     r_hi, r_lo = _dd_sqrt(r2_hi, r2_lo)
     v2_hi, v2_lo = _dd_dot(vx, vy, vz, vx, vy, vz)
@@ -138,7 +138,7 @@ def _reduce_by_periods(rx, ry, rz, vx, vy, vz, mu, dt):
     turns = np.rint(dt / p_hi)
     q_hi, q_lo = _two_product(turns, p_hi)
     hi, lo = _dd_add(dt, 0.0, -q_hi, -(q_lo + turns * p_lo))
-    return (hi + lo if bound else dt), alpha
+    return (hi + lo if bound else dt), alpha, (turns if bound else 0.0), (p_hi if bound else np.nan)
 
 
 # --- Stumpff functions and the universal Kepler equation -----------------------------------------
@@ -318,8 +318,8 @@ def _fixed_step(x, lo, hi, tau, r0, sigma0, alpha, grow, decay):
 @jit(inline=True)
 def _scaled(rx, ry, rz, vx, vy, vz, mu, dt):
     """The scaled problem (|r0| = 1, mu = 1, dt reduced and made positive by time reversal):
-    (length, speed, back, x, y, z, u, v, w, tau, r0, sigma0, alpha, reduced dt)."""
-    dt, alpha_si = _reduce_by_periods(rx, ry, rz, vx, vy, vz, mu, dt)
+    (length, speed, back, x, y, z, u, v, w, tau, r0, sigma0, alpha, reduced dt, periods taken off, period)."""
+    dt, alpha_si, turns, period = _reduce_by_periods(rx, ry, rz, vx, vy, vz, mu, dt)
     length = math.sqrt(rx * rx + ry * ry + rz * rz)
     speed = math.sqrt(mu / length)
     x, y, z = rx / length, ry / length, rz / length
@@ -329,7 +329,7 @@ def _scaled(rx, ry, rz, vx, vy, vz, mu, dt):
     alpha = alpha_si * length  # not 2 / r0 - |w|**2, whose cancellation near e = 1 costs digits
     back = -1.0 if tau < 0.0 else 1.0
     u, v, w, tau = back * u, back * v, back * w, abs(tau)
-    return length, speed, back, x, y, z, u, v, w, tau, r0, x * u + y * v + z * w, alpha, dt
+    return length, speed, back, x, y, z, u, v, w, tau, r0, x * u + y * v + z * w, alpha, dt, turns, period
 
 
 @jit(inline=True)
@@ -358,7 +358,7 @@ def _valid(rx, ry, rz, vx, vy, vz, mu, dt):
 @jit(inline=True)
 def _state_at(chi, scaled):
     """(r, v) as six floats from the Lagrange f and g at chi, as propagate._lagrange; NaN where chi is NaN."""
-    length, speed, back, x, y, z, u, v, w, tau, r0, sigma0, alpha, dt = scaled
+    length, speed, back, x, y, z, u, v, w, tau, r0, sigma0, alpha, dt, _, _ = scaled
     grow, decay = _coefficients(scaled)
     g0, g1, g2, g3, e_sinh, e_cosh = _g_functions(chi, alpha, grow, decay)
     inverse, _, inverse_15 = _inverse_powers(alpha)

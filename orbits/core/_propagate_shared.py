@@ -26,3 +26,8 @@ BRACKET_WIDTH = 2.0 * (1.0 + 2.0**-20)
 #: Smallest n**2 (1/s**2) the elliptic pass takes: below it (a ~ 1e96 m about the Sun) n**2 nears the subnormal
 #: range, and such states go to the universal passes.
 SMALLEST_MEAN_MOTION_SQUARED = 1e-280
+
+#: c_k(z) for k = 4, 5 from their series (12 terms, below 1e-20 relative) for |z| <= C45_SERIES_LIMIT, from
+#: c_k = (1 / k! - c_(k-2)) / z beyond, which there cancels by less than 2 bits (the state-transition matrix).
+C4_SERIES, C5_SERIES = factorial_series(4, -1.0, 12), factorial_series(5, -1.0, 12)
+C45_SERIES_LIMIT = 4.0
