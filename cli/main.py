@@ -22,6 +22,7 @@ from orbits_cli.commands import (
     lambert,
     orbit,
     pendulum,
+    perturb,
     porkchop,
     precision,
     projectile,
@@ -76,6 +77,7 @@ app.command("ring")(reports_errors(displays(ring.command)))
 app.add_typer(escape.app, name="escape")
 app.command("rocket")(reports_errors(displays(rocket.command)))
 app.add_typer(transfer.app, name="transfer")
+app.add_typer(perturb.app, name="perturb")
 app.command("where")(reports_errors(displays(where.command)))
 app.command("lambert")(reports_errors(displays(lambert.command)))
 app.command("porkchop")(reports_errors(displays(porkchop.command)))

@@ -7,7 +7,9 @@
 
 The public entry points are `load` (a scene of either kind, by name or file), `builtin_names`, `validate` and
 `validate_scene`, `available` (is a backend installed) and the report records. The adapters (_rebound, _heyoka)
-are the only modules that import rebound and heyoka, inside their integrate functions.
+are the only modules that import rebound and heyoka, inside the functions that use them: every integration, the
+scenes', the impulsive manoeuvres' and the three-body runs', goes through `backends.integrate`, and `peers` hands
+the benchmarks the libraries' own closed-form functions.
 """
 
 from orbits.validate.backends import BACKENDS, available
