@@ -272,7 +272,7 @@ def format_propagate(rows: Sequence[PropagateRow]) -> str:
         f"M/s: millions of states propagated per second. {RATIO_LEGEND} |dr|/r, |dv|/v: max |dr|/r and max |dv|/v, "
         "the worst relative position and velocity errors against mpmath. NaN: non-finite results."
     )
-    return "\n".join([machine(), ""] + lines + [""] + wrap(legend, WIDTH) + notes(texts))
+    return "\n".join(lines + [""] + wrap(legend, WIDTH) + notes(texts) + ["", f"Machine: {machine()}"])
 
 
 def _propagation_stats(row):

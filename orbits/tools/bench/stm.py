@@ -132,7 +132,7 @@ def bench_stm(n: int = 100_000, n_ref: int = 20, seed: int = 0, repeats: int = 3
 
 def format_stm(rows: Sequence[StmRow]) -> str:
     """Plain-text table of bench_stm (80 columns): a section per set, microseconds per state, the ratio to orbits
-    on one thread (above 1: slower than orbits), worst error; the machine on the first line."""
+    on one thread (above 1: slower than orbits), worst error; the machine on the last line."""
     reference = {r.dataset: r.us_per_state for r in rows if r.method == "orbits" and r.status == "ok"}
     table, texts = [], {}
     for dataset in dict.fromkeys(r.dataset for r in rows):
@@ -145,7 +145,7 @@ def format_stm(rows: Sequence[StmRow]) -> str:
                 continue
             ratio = row.us_per_state / reference[dataset] if dataset in reference else math.nan
             table.append([label, sig(row.us_per_state), sig(ratio), f"{row.max_rel_error:.1e}"])
-    lines = [machine(), ""] + plain_table(["method", "us/state", "x orbits", "rel err"], table)
+    lines = plain_table(["method", "us/state", "x orbits", "rel err"], table)
     legend = ("us/state: microseconds per state (best of the repeats). x orbits: time per state over orbits' on one "
               "thread. rel err: worst |Phi - Phi_ref| / |Phi_ref| against 50-digit mpmath central differences.")
-    return "\n".join(lines + [""] + wrap(legend, WIDTH) + notes(texts))
+    return "\n".join(lines + [""] + wrap(legend, WIDTH) + notes(texts) + ["", f"Machine: {machine()}"])
