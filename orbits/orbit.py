@@ -21,7 +21,7 @@ import numpy as np
 
 from orbits import display, inputs, units
 from orbits.constants import Body, G, body
-from orbits.core import anomalies, elements, propagate, twobody
+from orbits.core import anomalies, elements, propagate, transition, twobody
 from orbits.core.checks import broadcast_shape
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
@@ -385,11 +385,18 @@ class Orbit(display.Displayed):
         m = self._require_mass("Laplace-Runge-Lenz vector")
         return elements.laplace_runge_lenz_vector(*self._state, self.mu, m) << (units.KG**2 * units.M3_PER_S2)
 
-    def propagate(self, dt: u.Quantity) -> tuple[u.Quantity, u.Quantity]:
-        """State vectors (r, v) a time dt (time Quantity, broadcasting) later, on the same Kepler orbit."""
+    def propagate(self, dt: u.Quantity, stm: bool = False) -> tuple[u.Quantity, ...]:
+        """State vectors (r, v) a time dt (time Quantity, broadcasting) later, on the same Kepler orbit.
+
+        With stm=True also the state-transition matrix Phi = d(r, v) / d(r0, v0), a float array of shape
+        (..., 6, 6) in SI units (blocks: 1, s, 1/s, 1), so that a covariance P0 of (r0 [m], v0 [m/s]) becomes
+        Phi P0 Phi^T (orbits.core.transition.propagate_covariance); within 1e-13 of its norm.
+        """
         dt_si = units.to_si(dt, units.S, "time step dt")
         r, v = propagate.propagate(*self._state, self.mu, dt_si)
-        return r << units.M, v << units.M_PER_S
+        if not stm:
+            return r << units.M, v << units.M_PER_S
+        return r << units.M, v << units.M_PER_S, transition.transition_matrix(*self._state, self.mu, dt_si)
 
     def at(self, dt: u.Quantity) -> "Orbit":
         """The Orbit reached a time dt later (same elements, new true anomaly)."""

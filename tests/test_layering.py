@@ -80,7 +80,7 @@ CORE_MODULES = [
     "anomalies", "binary", "checks", "elements", "errors", "escape", "flyby", "friedmann", "kepler", "lagrange",
     "propagate", "quadrature", "rings", "series", "sphere", "twobody", "_dd", "_roots", "frames", "rocket",
     "manoeuvres", "assist", "collisions", "rotation", "projectile", "oscillations",
-    "lambert",
+    "lambert", "transition",
 ]
 
 

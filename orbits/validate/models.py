@@ -216,6 +216,8 @@ def _ring_builder(n):
     def build(outputs=400):
         return _ring(n, outputs)
 
+    build.__doc__ = (f"A ring of {n} equal masses on one circle, perturbed by float64 round-off: it breaks up at the "
+                     f"rate of its fastest unstable mode.")
     return build
 
 
@@ -296,6 +298,12 @@ MODELS = {
 def builtin_names() -> list[str]:
     """Names of the registered model scenes."""
     return sorted(MODELS)
+
+
+def summary(name: str) -> str:
+    """The model scene's one-line summary: its builder's first sentence (nothing is built)."""
+    doc = " ".join((MODELS[name].__doc__ or "").split())
+    return doc.split(". ")[0].rstrip(".") + "." if doc else ""
 
 
 #: model scenes registered by other modules whose rebound run needs REBOUNDx (its effects or forces)

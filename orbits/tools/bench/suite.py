@@ -9,6 +9,7 @@ from orbits.tools.bench.ephemeris import bench_ephemeris, format_ephemeris
 from orbits.tools.bench.kepler import bench_kepler, format_rows
 from orbits.tools.bench.lambert import bench_lambert, format_lambert
 from orbits.tools.bench.propagate import bench_propagate, format_propagate
+from orbits.tools.bench.stm import bench_stm, format_stm
 from orbits.tools.bench.table import rows_to_json
 from orbits.tools.bench.validate import bench_validate, format_validate
 
@@ -16,6 +17,7 @@ from orbits.tools.bench.validate import bench_validate, format_validate
 BENCHMARKS = {
     "kepler": (bench_kepler, format_rows),
     "propagate": (bench_propagate, format_propagate),
+    "stm": (bench_stm, format_stm),
     "lambert": (bench_lambert, format_lambert),
     "ephemeris": (bench_ephemeris, format_ephemeris),
     "api": (bench_api, format_api),
@@ -24,9 +26,11 @@ BENCHMARKS = {
 }
 
 
-def bench_all(**options: dict[str, Any]) -> dict[str, list[Any]]:
-    """{name: rows} of every benchmark; options maps a benchmark name to its keyword arguments."""
-    return {name: run(**options.get(name, {})) for name, (run, _) in BENCHMARKS.items()}
+def bench_all(names: Sequence[str] | None = None, **options: dict[str, Any]) -> dict[str, list[Any]]:
+    """{name: rows} of every benchmark (or those in `names`, in the suite's order); options maps a benchmark name
+    to its keyword arguments."""
+    return {name: run(**options.get(name, {})) for name, (run, _) in BENCHMARKS.items()
+            if names is None or name in names}
 
 
 def format_report(report: Mapping[str, Sequence[Any]]) -> str:
