@@ -445,14 +445,24 @@ def solve(r1: ArrayLike, r2: ArrayLike, tof: ArrayLike, mu: ArrayLike, revolutio
     return _velocities(geo, shape, x, y, lam, k, sigma, rho, gamma, s)
 
 
+#: the most complete revolutions a transfer may make: 2**50, as many turns as an angle is reduced exactly over
+MAX_REVOLUTIONS = 2**50
+
+
 def _revolutions(revolutions):
-    """The revolution counts as an integer array, each a whole number >= 0."""
+    """The revolution counts as an integer array, each a whole number in [0, MAX_REVOLUTIONS]."""
+    if isinstance(revolutions, int) and not isinstance(revolutions, bool) and revolutions > MAX_REVOLUTIONS:
+        raise OrbitDomainError(f"revolutions N = {revolutions} is outside [0, 2**50]: a transfer of more turns "
+                               f"cannot place its end point in float64")
     n = np.asarray(revolutions)
     whole = np.issubdtype(n.dtype, np.integer) or (
         np.issubdtype(n.dtype, np.floating) and np.all(np.isfinite(n)) and np.all(n == np.round(n)))
     if not whole or np.any(n < 0):
         bad = n.flat[0] if not whole and n.size else n[n < 0].flat[0] if n.size else n
         raise OrbitDomainError(f"revolutions N = {bad!r} must be a whole number >= 0")
+    if np.any(n > MAX_REVOLUTIONS):
+        raise OrbitDomainError(f"revolutions N = {n[n > MAX_REVOLUTIONS].flat[0]!r} is outside [0, 2**50]: a "
+                               f"transfer of more turns cannot place its end point in float64")
     return n.astype(np.int64)
 
 

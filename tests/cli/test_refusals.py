@@ -87,6 +87,8 @@ TRANSFER = ["lambert", "--r1", "1,0,0 AU", "--r2", "0,1.5,0 AU", "--tof", "200 d
     (TRANSFER + ["--retrograde", "--normal", "0,0,1"], "retrograde and a normal both set the sense of motion"),
     (TRANSFER + ["--branch", "left"], "branch = 'left' chooses between the two solutions of a transfer with "
                                       "revolutions > 0; with revolutions = 0 there is one"),
+    (TRANSFER + ["--revolutions", "99999999999999999999"], "revolutions N = 99999999999999999999 is outside "
+                                                           "[0, 2**50]"),  # 'must be a whole number >= 0'
     (["binary", "--m1", "Sun", "--m2", "Jupiter", "--a", "5.2 AU", "--gamma", "10 km/s"],
      "--gamma, the systemic velocity, shows only in the radial-velocity curves: give --rv FILE too"),
 ])
