@@ -41,7 +41,7 @@ def _is_rule(code) -> bool:
     if code.co_name == "<module>":
         return False
     if module.endswith("orbits/core/checks.py"):  # but broadcast(_shape), which every core function calls to broadcast
-        return not code.co_name.startswith("broadcast")  # its arguments (it only names them when they do not fit)
+        return not code.co_name.startswith(("broadcast", "<"))  # its arguments (naming them when they do not fit)
     if module.endswith("orbits/inputs.py"):
         return not code.co_name.startswith(("parse_", "_")) and code.co_name not in ("names", "find_body",
                                                                                     "named_body")
