@@ -271,7 +271,7 @@ def from_dict(data: dict, source: str = "<scene>") -> Scene:
     bodies = _bodies(ctx, ctx.get(data, "bodies", list))
     times = _times(ctx, ctx.get(data, "time", dict), bodies)
     given = next(key for key in ("times", "span", "periods") if key in data["time"])
-    with ctx.field(f"time.{given}"):  # elements or vectors alike: the fastest orbit of a pair sets how long a run may be
+    with ctx.field(f"time.{given}"):  # elements or vectors alike: the fastest pair sets how long a run may be
         gm = np.array([b.gm for b in bodies])
         nbody.check_span(float(times[-1]), gm, np.array([b.position for b in bodies]),
                          np.array([b.velocity for b in bodies]), int(np.count_nonzero(gm)), [b.name for b in bodies],
