@@ -63,6 +63,7 @@ _HOMES = {
     "OrbitDomainError": "orbits.core.errors",
     "OrbitsError": "orbits.core.errors",
     "OrbitsWarning": "orbits.core.errors",
+    "InsideBodyWarning": "orbits.core.errors",
     "SceneError": "orbits.core.errors",
     "UnknownNameError": "orbits.core.errors",
 }

@@ -38,3 +38,8 @@ class UnknownNameError(OrbitDomainError, KeyError):
 class OrbitsWarning(UserWarning):
     """Base class of the warnings orbits gives on purpose: the answer stands, but something about it needs saying
     (a picture whose closest approach lies inside a body). The command line prints each as one line."""
+
+
+class InsideBodyWarning(OrbitsWarning):
+    """A conic's closest approach lies inside a catalogue body (or, for two bodies meeting, inside their radii
+    added): the orbit passes through the body, or the two collide. The conic is still computed."""

@@ -218,3 +218,24 @@ def test_quantities_tables():
 
 def test_module_examples_run():
     assert doctest.testmod(orbits.flyby).failed == 0
+
+
+def test_a_flyby_inside_the_bodies_is_a_collision_said_once():
+    """Flyby.between adds the two catalogue radii, Flyby.past takes the primary's; the relative Orbit does not say
+    it a second time."""
+    import warnings
+
+    from orbits import InsideBodyWarning
+
+    with warnings.catch_warnings(record=True) as said:
+        warnings.simplefilter("always")
+        crash = Flyby.between("Sun", "Jupiter", 1 * u.km / u.s, b=1 * u.AU)
+        crash.orbit
+    assert [str(w.message) for w in said] == [
+        "Flyby: closest approach 84235.41 km is inside the Sun and Jupiter (radii added: 767192 km): they collide"]
+    assert issubclass(said[0].category, InsideBodyWarning)
+    with pytest.warns(InsideBodyWarning, match="inside Jupiter"):
+        Flyby.past("Jupiter", 5.6 * u.km / u.s, periapsis=50_000 * u.km)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        Flyby.past("Jupiter", 5.6 * u.km / u.s, periapsis=200_000 * u.km).orbit
