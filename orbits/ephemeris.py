@@ -73,6 +73,9 @@ _CHAINS = {
 }
 #: bodies whose DE421 point is the barycentre of the planet and its moons, not the planet's centre
 SYSTEM_BARYCENTRES = ("Jupiter", "Saturn", "Uranus", "Neptune", "Pluto")
+#: bodies outside DE421 whose heliocentric state is their published osculating orbit (orbits.catalogue_orbits)
+#: carried to the epoch by two-body propagation about the Sun, the accuracy its MeanElements states
+PROPAGATED = ("Ceres", "Vesta")
 _ALIASES = {"ssb": "solar system barycentre", "solar system barycenter": "solar system barycentre",
             "barycentre": "solar system barycentre", "barycenter": "solar system barycentre",
             "emb": "Earth-Moon barycentre", "earth-moon barycenter": "Earth-Moon barycentre"}
@@ -112,6 +115,9 @@ def point_name(name: str) -> str:
     if key in _ALIASES:
         return _ALIASES[key]
     for known in _CHAINS:
+        if known.lower() == key:
+            return known
+    for known in PROPAGATED:
         if known.lower() == key:
             return known
     catalogued = " (it is in the catalogue, but not in the ephemeris)" if key in (b.lower() for b in BODIES) else ""
@@ -288,11 +294,35 @@ def barycentric(point: str, when: Time, source: str = "auto") -> tuple[np.ndarra
 def _read(points: Sequence[str], when: Time, source: str) -> dict[str, tuple[np.ndarray, np.ndarray]]:
     """Barycentric (r, v) of each distinct point at one epoch from the resolved `source`: the epoch checked against
     the source's span once, each point read once."""
+    wanted = list(dict.fromkeys(points))
+    read_from_source = [p for p in dict.fromkeys([*wanted, *(["Sun"] if set(wanted) & set(PROPAGATED) else [])])
+                        if p not in PROPAGATED]
     if source == "de421":
         jd1, jd2 = tdb_julian_dates(when)
         _require_de421_span(jd1, jd2)
-        return {point: _de421_from_ssb(point, jd1, jd2) for point in dict.fromkeys(points)}
-    return {point: _builtin_from_ssb(point, when) for point in dict.fromkeys(points)}
+        read = {point: _de421_from_ssb(point, jd1, jd2) for point in read_from_source}
+    else:
+        read = {point: _builtin_from_ssb(point, when) for point in read_from_source}
+    for point in set(wanted) & set(PROPAGATED):
+        r, v = _propagated_heliocentric(point, when)
+        read[point] = (read["Sun"][0] + r, read["Sun"][1] + v)
+    return read
+
+
+def _propagated_heliocentric(name: str, when: Time) -> tuple[np.ndarray, np.ndarray]:
+    """ICRF heliocentric (r, v) (m, m/s) of a PROPAGATED body: its osculating orbit (orbits.catalogue_orbits)
+    carried from its epoch to `when` by Kepler's equation (orbits.core.propagate)."""
+    from orbits.catalogue_orbits import JPL_SUN_GM, mean_elements
+    from orbits.core import anomalies, elements, frames, propagate
+
+    el = mean_elements(name)
+    nu = anomalies.true_from_mean(el.mean_anomaly, el.e)
+    r0, v0 = elements.elements_to_state(el.a * (1 - el.e) * (1 + el.e), el.e, el.inc, el.raan, el.argp, nu,
+                                        JPL_SUN_GM)
+    jd1, jd2 = tdb_julian_dates(when)
+    dt = ((jd1 - el.epoch) + jd2) * 86_400.0
+    r, v = propagate.propagate(r0, v0, JPL_SUN_GM, dt)
+    return frames.ecliptic_to_equatorial(r), frames.ecliptic_to_equatorial(v)
 
 
 def _relative(read: dict, target: str, origin: str, when: Time, source: str) -> "BodyState":
@@ -300,7 +330,16 @@ def _relative(read: dict, target: str, origin: str, when: Time, source: str) -> 
     r, v = read[target]
     if origin != "solar system barycentre":
         r, v = r - read[origin][0], v - read[origin][1]
-    return BodyState(target, origin, when, r, v, DE421 if source == "de421" else BUILTIN)
+    named = DE421 if source == "de421" else BUILTIN
+    propagated = [p for p in (target, origin) if p in PROPAGATED]
+    if not propagated:
+        return BodyState(target, origin, when, r, v, named)
+    from orbits.catalogue_orbits import mean_elements
+
+    orbits_used = [mean_elements(p) for p in propagated]
+    about = "; ".join(f"{p} by two-body propagation of {el.source}" for p, el in zip(propagated, orbits_used))
+    accuracy = "; ".join(f"{p} {el.accuracy}" for p, el in zip(propagated, orbits_used))
+    return BodyState(target, origin, when, r, v, f"{about}; other bodies: {named}", accuracy)
 
 
 def _resolve(source: str) -> str:
@@ -323,6 +362,8 @@ class BodyState(display.Displayed):
     r_si: np.ndarray
     v_si: np.ndarray
     source: str
+    #: the accuracy of a state that is not the ephemeris' own (a PROPAGATED body), said by its orbit's source
+    stated_accuracy: str = ""
 
     @property
     def r(self) -> u.Quantity:
@@ -366,7 +407,10 @@ class BodyState(display.Displayed):
 
     @property
     def accuracy(self) -> str:
-        """The source's accuracy against DE421 for this body and centre (exact for DE421 itself)."""
+        """The source's accuracy against DE421 for this body and centre (exact for DE421 itself), or what the
+        published orbit of a PROPAGATED body states."""
+        if self.stated_accuracy:
+            return self.stated_accuracy
         if self.source == DE421:
             return "DE421 as read by jplephem (astropy reading the same kernel agrees to 1 mm)"
         jd1, jd2 = tdb_julian_dates(self.epoch)
@@ -421,7 +465,8 @@ def state(body: str, when: Any, center: str = "Sun", *, source: str = "auto", sc
 
     Parameters
     ----------
-    body, center : a planet, "Sun", "Moon", "Earth-Moon barycentre" or "solar system barycentre" (any case).
+    body, center : a planet, "Sun", "Moon", "Earth-Moon barycentre" or "solar system barycentre" (any case), or
+        Ceres or Vesta (PROPAGATED: their published osculating orbit carried to the epoch, with its accuracy).
     when : astropy Time (any scale, any shape) or ISO string(s) in `scale` (default UTC).
     source : "auto" (DE421 when installed, else the built-in), "de421" or "builtin".
 

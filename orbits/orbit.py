@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any
 import astropy.units as u
 import numpy as np
 
-from orbits import display, inputs, units
+from orbits import catalogue_orbits, display, inputs, units
 from orbits.constants import Body, G, body
 from orbits.core import anomalies, elements, frames, propagate, twobody
 from orbits.core.errors import OrbitDomainError
@@ -55,7 +55,9 @@ class Orbit(display.Displayed):
     """Kepler orbit(s) about a fixed primary; fields are float64 SI arrays that broadcast together.
 
     Build it with Orbit.from_elements, Orbit.from_vectors or Orbit.circular rather than directly.
-    `mass` (kg) is the orbiting body's mass, needed only for U, K, E, L and the LRL vector.
+    `mass` (kg) is the orbiting body's mass, needed only for U, K, E, L and the LRL vector. An orbit about a
+    catalogue body (its GM exactly) whose periapsis lies inside the body's equatorial radius gives an
+    InsideBodyWarning, whichever constructor built it: it passes through the body.
     """
 
     mu: np.ndarray
@@ -66,6 +68,9 @@ class Orbit(display.Displayed):
     argp: np.ndarray
     nu: np.ndarray
     mass: np.ndarray | None = None
+
+    def __post_init__(self):
+        inputs.warn_if_inside(self.p / (1.0 + self.e), [inputs.exact_body(self.mu)], type(self).__name__)
 
     # ---- constructors -------------------------------------------------------------------------
     @classmethod
@@ -133,8 +138,10 @@ class Orbit(display.Displayed):
     def from_body(cls, name: str, epoch: Any = None, *, source: str = "auto", scale: str = "utc") -> "Orbit":
         """The catalogue body's orbit about its parent, with the body's mass, in the ecliptic frame of J2000.
 
-        Without `epoch`: the J2000 mean orbit of the catalogue (orbits.constants; Standish's mean elements for
-        the planets), its mean anomaly turned into the true anomaly with Kepler's equation. With `epoch` (astropy
+        Without `epoch`: the published orbit of orbits.catalogue_orbits.mean_elements at its own epoch (Standish's
+        J2000 mean elements for the planets, JPL's osculating elements for Ceres and Vesta, JPL's satellite mean
+        elements for the moons, turned to the ecliptic of J2000), its mean anomaly turned into the true anomaly
+        with Kepler's equation. With `epoch` (astropy
         Time or ISO string, see orbits.ephemeris): the osculating two-body orbit through the ephemeris state
         relative to the parent (the Sun for a planet, the Earth for the Moon), mu = G (M_parent + M_body).
         DE421 gives Jupiter-Pluto as system barycentres, and Standish's mean elements are those of the
@@ -144,20 +151,17 @@ class Orbit(display.Displayed):
         target = body(name)
         if epoch is not None:
             return cls._osculating(target, epoch, source, scale)
-        if target.orbit is None:
-            raise OrbitDomainError(f"{target.name} has no mean orbit in the catalogue; give an epoch (planets, Pluto "
-                                   f"and the Moon) or its elements")
-        el = target.orbit
-        return cls.from_elements(
-            el.primary,
-            a=el.a << units.M,
-            e=el.e,
-            inc=el.inc << units.RAD,
-            raan=el.raan << units.RAD,
-            argp=el.argp << units.RAD,
-            nu=anomalies.true_from_mean(el.mean_anomaly, el.e) << units.RAD,
-            mass=target.barycentre_gm / G << units.KG,
-        )
+        el = catalogue_orbits.mean_elements(target.name)
+        mass = target.barycentre_gm / G << units.KG
+        nu = anomalies.true_from_mean(el.mean_anomaly, el.e)
+        if el.pole is None:
+            return cls.from_elements(el.primary, a=el.a << units.M, e=el.e, inc=el.inc << units.RAD,
+                                     raan=el.raan << units.RAD, argp=el.argp << units.RAD, nu=nu << units.RAD,
+                                     mass=mass)
+        mu = body(el.primary).gm + target.gm  # a moon's orbit about its planet: the two masses
+        r, v = elements.elements_to_state(el.a * (1 - el.e) * (1 + el.e), el.e, el.inc, el.raan, el.argp, nu, mu)
+        return cls.from_vectors(mu << units.M3_PER_S2, catalogue_orbits.reference_to_ecliptic(r, el.pole) << units.M,
+                                catalogue_orbits.reference_to_ecliptic(v, el.pole) << units.M_PER_S, mass=mass)
 
     @classmethod
     def _osculating(cls, target: Body, epoch: Any, source: str, scale: str) -> "Orbit":

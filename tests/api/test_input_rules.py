@@ -102,3 +102,12 @@ def test_the_command_line_refuses_them_in_one_line(args, fragment):
     result = CliRunner().invoke(app, args)
     assert result.exit_code == 2, result.output
     assert fragment in result.stderr and len(result.stderr.strip().splitlines()) == 1
+
+
+def test_a_body_name_where_a_quantity_belongs_is_named_as_a_body():
+    from orbits.inputs import parse_quantity
+
+    with pytest.raises(OrbitDomainError, match="--r1: 'Earth' is a body, not a length"):
+        parse_quantity("Earth", "length", "--r1")
+    with pytest.raises(OrbitDomainError, match="cannot read 'Eartth' as a quantity"):
+        parse_quantity("Eartth", "length", "--r1")
