@@ -95,7 +95,7 @@ def command(
     if inc is None and set(asked) & set(NEEDS_INCLINATION):
         raise typer.BadParameter(f"{', '.join(n for n in asked if n in NEEDS_INCLINATION)}: needs the inclination "
                                  f"to the sky (sin i): give --inc (90: edge-on, 0: face-on)")
-    if inc is None:
+    if inc is None and only is None:
         about = {"inclination": UNKNOWN_INCLINATION}
         title += f"; {UNKNOWN_INCLINATION}"
     render.emit(title, result.quantities(inputs.names(only)), fmt.value, groups=groups, about=about)

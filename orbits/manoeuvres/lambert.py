@@ -193,8 +193,8 @@ class LambertTransfer(display.Displayed):
         if np.any(self.revolutions > 0):
             parts.insert(-1, f"N = {display.values_text(self.revolutions)} ({self.branch})")
         if self.departure is not None:
-            parts[-1] = f"{self.departure.body} {ephemeris.tdb_iso(self.departure.epoch)[:10]} -> {self.arrival.body} " \
-                        f"{ephemeris.tdb_iso(self.arrival.epoch)[:10]}, about the Sun"
+            start, end = (f"{s.body} {ephemeris.tdb_iso(s.epoch)[:10]}" for s in (self.departure, self.arrival))
+            parts[-1] = f"{start} -> {end}, about the Sun"
             parts.insert(0, "C3 = " + display.summary(self.c3, digits=4))
         return display.one_line("LambertTransfer", *parts)
 

@@ -303,6 +303,6 @@ def test_hohmann_between_the_mean_orbits_of_two_bodies():
     venus = Hohmann.between_bodies("Earth", "Venus")
     assert -60 < venus.phase_angle.to_value(u.deg) < -50  # inward: Venus trails by 54 deg
     with pytest.raises(OrbitDomainError, match="the synodic period needs two different radii"):
-        Hohmann.between("Earth", 7000 * u.km, 7000 * u.km).synodic_period
+        _ = Hohmann.between("Earth", 7000 * u.km, 7000 * u.km).synodic_period
     with pytest.raises(OrbitDomainError, match="Moon orbits Earth and Mars orbits Sun"):
         Hohmann.between_bodies("Moon", "Mars")

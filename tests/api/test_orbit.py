@@ -56,11 +56,11 @@ def test_from_vectors_round_trip_and_propagate():
 
 
 def test_arrays_of_orbits_broadcast():
-    orbits = Orbit.from_elements("Earth", a=[7000, 8000, 9000] * u.km, e=np.array([[0.0], [0.5]]))
+    orbits = Orbit.from_elements("Earth", a=[14000, 16000, 18000] * u.km, e=np.array([[0.0], [0.5]]))
     assert orbits.shape == (2, 3)
     assert orbits.period.shape == (2, 3)
     assert orbits.r.shape == (2, 3, 3)
-    single = Orbit.from_elements("Earth", a=8000 * u.km, e=0.5)
+    single = Orbit.from_elements("Earth", a=16000 * u.km, e=0.5)
     assert orbits.period[1, 1] == single.period
 
 
@@ -75,7 +75,7 @@ def test_energy_needs_the_mass_and_then_matches_the_notes():
 
 
 def test_quantities_table_and_only():
-    orbit = Orbit.from_elements("Earth", a=7000 * u.km, e=0.1)
+    orbit = Orbit.from_elements("Earth", a=8000 * u.km, e=0.1)
     everything = orbit.quantities()
     assert "period" in everything and "energy" not in everything  # no mass given: left out
     assert list(orbit.quantities(["period", "eccentricity"])) == ["period", "eccentricity"]

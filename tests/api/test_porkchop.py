@@ -248,7 +248,8 @@ def test_dates_are_on_the_grid(chart):
 
 def test_a_least_value_on_the_grid_edge_is_flagged():
     """Launches ending 2026-10-15, before the 2026 window's least C3 (2026-10-31): the least C3 on the grid is its
-    last launch date (2026-10-01), flagged; the arrival window around 2027-08-20 holds the least C3 inside, not on its edge."""
+    last launch date (2026-10-01), flagged; the arrival window around 2027-08-20 holds it inside, not on its
+    edge."""
     early = Porkchop.between("Earth", "Mars", ("2026-09-01", "2026-10-15"), ("2027-06-01", "2027-11-01"),
                              step=15 * u.day)
     best = early.minimum_c3

@@ -86,7 +86,7 @@ def test_flyby_inside_the_sun_warns_and_draws_a_4_au_picture(tmp_path):
     result = runner.invoke(app, [*args, "--plot", str(picture)])
     assert result.exit_code == 0, result.output
     assert result.stderr.strip().splitlines() == [
-        "orbits: warning: closest approach 8.424e4 km is inside the radii of Sun and Jupiter added (7.672e5 km): "
+        "orbits: warning: Flyby: closest approach 84235.41 km is inside the Sun and Jupiter (radii added: 767192 km): "
         "they collide"
     ]
     assert picture.stat().st_size > 10_000
