@@ -22,6 +22,7 @@ import numpy as np
 from orbits import catalogue_orbits, display, inputs, units
 from orbits.constants import Body, G, body
 from orbits.core import anomalies, elements, frames, propagate, twobody
+from orbits.core.checks import first_where
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
 
@@ -283,13 +284,18 @@ class Orbit(display.Displayed):
         return twobody.covertex_speed(self.p, self.e, self.mu) << units.M_PER_S
 
     def speed_at(self, r: u.Quantity) -> u.Quantity:
-        """Vis-viva speed sqrt(mu (2/r - 1/a)) (m/s) at distance r (length) from the star."""
+        """Vis-viva speed sqrt(mu (2/r - 1/a)) (m/s) at distance r (length) from the star, where the body gets:
+        q <= r <= Q on an ellipse, r >= q on an open orbit (the apsides included)."""
         r_si = inputs.positive(r, units.M, "distance r")
-        with np.errstate(invalid="ignore"):
-            v = twobody.speed_at_radius(r_si, self.p, self.e, self.mu)
-        if not np.isfinite(v).all():
-            raise OrbitDomainError("distance r lies beyond the apoapsis of this orbit: the body never gets there")
-        return v << units.M_PER_S
+        q = twobody.periapsis_distance(self.p, self.e)
+        with np.errstate(divide="ignore"):
+            far = np.where(self.e < 1.0, self.p / (1.0 - self.e), np.inf)
+        outside = (r_si < q) | (r_si > far)
+        if np.any(outside):
+            bad, low, high = first_where(outside, r_si, q, far)
+            raise OrbitDomainError(f"distance r = {bad!r} m is outside [{low!r}, {high!r}] m, from the periapsis "
+                                   f"to the apoapsis of this orbit: the body never gets there")
+        return twobody.speed_at_radius(r_si, self.p, self.e, self.mu) << units.M_PER_S
 
     # ---- dynamics (XXI.ii-iv) -------------------------------------------------------------------
     @cached_property
@@ -328,6 +334,38 @@ class Orbit(display.Displayed):
         """K = m v**2 / 2 = G M m (1/r - 1/(2a)) (J) at the current position."""
         m = self._require_mass("kinetic energy K")
         return 0.5 * m * self.speed.to_value(units.M_PER_S) ** 2 << units.J
+
+    def potential_energy_at(self, r: u.Quantity) -> u.Quantity:
+        """U(r) = -G M m / r (J) at distance r (length) from the star, for the orbiting body of mass m."""
+        m = self._require_mass("potential energy U(r)")
+        return twobody.potential_energy(inputs.positive(r, units.M, "distance r"), self.mu, m) << units.J
+
+    def kinetic_energy_at(self, r: u.Quantity) -> u.Quantity:
+        """K(r) = E - U(r) = m v(r)**2 / 2 (J) at distance r (length), where the body gets (see speed_at)."""
+        m = self._require_mass("kinetic energy K(r)")
+        return 0.5 * m * self.speed_at(r).to_value(units.M_PER_S) ** 2 << units.J
+
+    @cached_property
+    def laplace_runge_lenz_magnitude(self) -> u.Quantity:
+        """|A| = m**2 mu e = m k e (kg2 m3/s2), k = G M m: the length of the Laplace-Runge-Lenz vector."""
+        m = self._require_mass("the Laplace-Runge-Lenz vector")
+        return m * m * self.mu * self.e << (units.KG**2 * units.M3_PER_S2)
+
+    @cached_property
+    def laplace_runge_lenz_along_r(self) -> u.Quantity:
+        """A . r = L**2 - m k r = m**2 (h**2 - mu r) (kg2 m4/s2) at the current position: the conic's equation
+        r = (L**2 / m k) / (1 + e cos nu) in one dot product."""
+        m = self._require_mass("the Laplace-Runge-Lenz vector")
+        h2 = self.mu * self.p
+        return m * m * (h2 - self.mu * self.radius.to_value(units.M)) << (units.KG**2 * units.M**4 / units.S**2)
+
+    def area_swept(self, t1: u.Quantity, t2: u.Quantity) -> u.Quantity:
+        """A = (h / 2)(t2 - t1) (m2): the area the radius vector sweeps from time t1 to t2 (time Quantities after
+        the current position, broadcasting), Kepler's second law; negative when t2 < t1. Over one period of an
+        ellipse it is pi a b."""
+        start = units.to_si(t1, units.S, "time t1")
+        end = units.to_si(t2, units.S, "time t2")
+        return twobody.areal_velocity(self.p, self.mu) * (end - start) << units.M**2
 
     # ---- time (XXI.iii, XXI.vii) ----------------------------------------------------------------
     @cached_property
@@ -493,6 +531,8 @@ QUANTITY_NAMES = [
     "angular_momentum",
     "potential_energy",
     "kinetic_energy",
+    "laplace_runge_lenz_magnitude",
+    "laplace_runge_lenz_along_r",
     "period",
     "mean_motion",
     "covertex_times",
