@@ -21,7 +21,7 @@ import numpy as np
 
 from orbits import catalogue_orbits, display, inputs, units
 from orbits.constants import Body, G, body
-from orbits.core import anomalies, elements, frames, propagate, twobody
+from orbits.core import anomalies, elements, propagate, transition, twobody
 from orbits.core.checks import first_where
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
@@ -179,15 +179,9 @@ class Orbit(display.Displayed):
         barycentre), with the body's mass."""
         from orbits import ephemeris
 
-        target = body(seen.body)
-        if target.parent is None or body(target.parent).name != seen.center:
-            raise OrbitDomainError(f"an orbit needs {seen.body}'s state about its parent "
-                                   f"({target.parent or 'none in the catalogue'}), not about {seen.center}")
-        gm = target.barycentre_gm if target.name in ephemeris.SYSTEM_BARYCENTRES else target.gm
-        mu = (body(target.parent).gm + gm) << units.M3_PER_S2
-        r = frames.equatorial_to_ecliptic(seen.r_si) << units.M
-        v = frames.equatorial_to_ecliptic(seen.v_si) << units.M_PER_S
-        return cls.from_vectors(mu, r, v, mass=gm / G << units.KG)
+        problem = ephemeris.osculating(seen)
+        return cls.from_vectors(problem.mu << units.M3_PER_S2, problem.r << units.M, problem.v << units.M_PER_S,
+                                mass=problem.gm / G << units.KG)
 
     # ---- shape ----------------------------------------------------------------------------------
     @property
@@ -437,11 +431,18 @@ class Orbit(display.Displayed):
         m = self._require_mass("Laplace-Runge-Lenz vector")
         return elements.laplace_runge_lenz_vector(*self._state, self.mu, m) << (units.KG**2 * units.M3_PER_S2)
 
-    def propagate(self, dt: u.Quantity) -> tuple[u.Quantity, u.Quantity]:
-        """State vectors (r, v) a time dt (time Quantity, broadcasting) later, on the same Kepler orbit."""
+    def propagate(self, dt: u.Quantity, stm: bool = False) -> tuple[u.Quantity, ...]:
+        """State vectors (r, v) a time dt (time Quantity, broadcasting) later, on the same Kepler orbit.
+
+        With stm=True also the state-transition matrix Phi = d(r, v) / d(r0, v0), a float array of shape
+        (..., 6, 6) in SI units (blocks: 1, s, 1/s, 1), so that a covariance P0 of (r0 [m], v0 [m/s]) becomes
+        Phi P0 Phi^T (orbits.core.transition.propagate_covariance); within 1e-13 of its norm.
+        """
         dt_si = units.to_si(dt, units.S, "time step dt")
         r, v = propagate.propagate(*self._state, self.mu, dt_si)
-        return r << units.M, v << units.M_PER_S
+        if not stm:
+            return r << units.M, v << units.M_PER_S
+        return r << units.M, v << units.M_PER_S, transition.transition_matrix(*self._state, self.mu, dt_si)
 
     def at(self, dt: u.Quantity) -> "Orbit":
         """The Orbit reached a time dt later (same elements, new true anomaly)."""

@@ -41,8 +41,13 @@ def row(rows, method, dataset):
     return found
 
 
+LAYOUTS = ["easy, adjacent", "easy, offset 8 B", "easy, padded 64 B"]
+
+
 def test_one_row_per_method_and_dataset(rows):
-    assert [(r.dataset, r.method) for r in rows] == [(d, m) for d in DATASETS for m in METHODS]
+    """Every method on every set, then orbits on the easy set with its arrays end to end in one buffer."""
+    assert [(r.dataset, r.method) for r in rows] == ([(d, m) for d in DATASETS for m in METHODS]
+                                                     + [(layout, "orbits") for layout in LAYOUTS])
     for r in rows:
         assert r.status in ("ok", "skipped", "raised")
         if r.status == "ok":
@@ -187,7 +192,7 @@ def test_kepler_table_gives_ratios_to_orbits(rows):
     table = kepler.format_rows(rows)
     assert "ratio" in table.splitlines()[0] and "ratio: throughput over that of orbits" in " ".join(table.split())
     orbits = [line.split() for line in table_rows(table) if line.startswith("orbits [")]
-    assert len(orbits) == len(DATASETS) and all(cells[3] == "1.00" for cells in orbits)
+    assert len(orbits) == len(DATASETS) + len(LAYOUTS) and all(cells[3] == "1.00" for cells in orbits)
 
 
 # --- propagation, API, CLI, validation -------------------------------------------------------------

@@ -5,7 +5,8 @@ probe wraps to record importer -> imported), never by reading source text.
 Layers, bottom up; a module may import its own layer and the layers below it:
     0 core         orbits.core.*: float64 NumPy; numpy, the standard library and (in the _fast kernels) numba
     1 base         units, constants, catalogue_orbits, inputs (the input rules), nbody, io, tables, display, system
-    2 domain       orbit, kepler, binary, flyby, escape, lagrange, rings, cosmology, scene, predict, plot
+    2 domain       orbit, kepler, binary, flyby, escape, lagrange, rings, cosmology, scene, predict, and the
+                   pictures orbits.plot.* (one module per subject over the shared orbits.plot.frame)
     3 validation   orbits.validate.*
     4 tools        orbits.tools.* (benchmarks, precision sweeps, the mpmath reference, Dask)
     5 interfaces   orbits_cli.*, which calls the public library only: never orbits.core nor a private module
@@ -79,7 +80,7 @@ CORE_MODULES = [
     "anomalies", "binary", "checks", "elements", "errors", "escape", "flyby", "friedmann", "kepler", "lagrange",
     "propagate", "quadrature", "rings", "series", "sphere", "twobody", "_dd", "_roots", "frames", "rocket",
     "manoeuvres", "assist", "collisions", "rotation", "projectile", "oscillations",
-    "lambert",
+    "lambert", "transition",
 ]
 
 
@@ -157,7 +158,7 @@ runs = [
     ["lagrange", "Earth", "Moon"],
     ["ring", "3", "--m", "1 kg", "--r", "1 m"],
     ["escape", "cosmic"],
-    ["where", "Mars", "--epoch", "2026-11-25"],
+    ["where", "Mars", "--epoch", "2026-11-25", "--plot", os.path.join(out, "w.png")],
     ["orbit", "Mars", "--epoch", "2026-11-25 TDB"],
     ["escape", "geo", "Earth"],
     ["rocket", "--m0", "100 t", "--mf", "40 t", "--isp", "300 s", "--thrust", "2 MN"],
@@ -176,6 +177,10 @@ runs = [
 for args in runs:
     result = CliRunner().invoke(app, args)
     assert result.exit_code == 0, (args, result.output)
+
+import astropy.units as u
+
+orbits.Orbit.circular("Earth", 7000 * u.km).plot()  # the picture a domain object draws of itself
 print(json.dumps(sorted(edges)))
 """
 
@@ -190,8 +195,61 @@ def edges():
 def test_the_probe_sees_the_imports_inside_functions(edges):
     """The record is not vacuous: the lazy imports inside commands and adapters are there."""
     assert ("orbits_cli.commands.validate", "orbits.validate") in edges
+    assert ("orbits.orbit", "orbits.plot") in edges  # Orbit.plot draws through the pictures
     assert ("orbits.validate._rebound", "rebound") in edges and ("orbits.validate._heyoka", "heyoka") in edges
     assert any(src.startswith("orbits.core") and dst.startswith("orbits.core") for src, dst in edges)
+
+
+def import_cycles(edges):
+    """The strongly connected components of more than one module in the graph importer -> imported among our own
+    modules (orbits.* and orbits_cli.*, the facade `orbits` aside), each sorted: every one holds an import cycle."""
+    graph = {}
+    for src, dst in edges:
+        if src != dst and all(name.startswith(("orbits.", "orbits_cli")) for name in (src, dst)):
+            graph.setdefault(src, set()).add(dst)
+    index, low, stack, on_stack, components = {}, {}, [], set(), []
+
+    def visit(node):  # Tarjan's algorithm
+        index[node] = low[node] = len(index)
+        stack.append(node)
+        on_stack.add(node)
+        for nxt in graph.get(node, ()):
+            if nxt not in index:
+                visit(nxt)
+                low[node] = min(low[node], low[nxt])
+            elif nxt in on_stack:
+                low[node] = min(low[node], index[nxt])
+        if low[node] == index[node]:
+            component = []
+            while not component or component[-1] != node:
+                component.append(stack.pop())
+                on_stack.discard(component[-1])
+            if len(component) > 1:
+                components.append(sorted(component))
+
+    for node in sorted(graph):
+        if node not in index:
+            visit(node)
+    return sorted(components)
+
+
+def test_import_cycles_are_found():
+    """The cycle finder is not vacuous: a -> b -> c -> a is one cycle, d -> a outside it; the facade is no node."""
+    edges = [("orbits.a", "orbits.b"), ("orbits.b", "orbits.c"), ("orbits.c", "orbits.a"), ("orbits.d", "orbits.a"),
+             ("orbits.e", "orbits"), ("orbits", "orbits.e")]
+    assert import_cycles(edges) == [["orbits.a", "orbits.b", "orbits.c"]]
+
+
+def test_no_module_imports_itself_back(edges):
+    """No import cycle between our modules at run time, function-local imports included: a module never needs,
+    directly or through others, a module that needs it (e.g. a picture importing the object that draws itself)."""
+    assert import_cycles(edges) == []
+
+
+def test_the_picture_frame_imports_no_picture(edges):
+    """orbits.plot.frame is what every picture builds on: it imports no other module of orbits.plot."""
+    assert [(src, dst) for src, dst in edges if src == "orbits.plot.frame" and dst.startswith("orbits.plot")] == []
+    assert ("orbits.plot.conics", "orbits.plot.frame") in edges
 
 
 def test_imports_flow_one_way(edges):

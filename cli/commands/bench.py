@@ -52,6 +52,21 @@ def propagate(
     _emit(rows_to_json(rows), format_propagate(rows), fmt, output)
 
 
+def stm(
+    states: Annotated[int, typer.Option(help="states per set (elliptic, mixed conics)")] = 100_000,
+    reference: Annotated[int, typer.Option(help="states per set checked against mpmath")] = 20,
+    repeats: RepeatsOption = 3,
+    output: OutputOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """State-transition matrix d(r, v)/d(r0, v0): time per state and worst error of orbits and pykep."""
+    from orbits.tools.bench.stm import bench_stm, format_stm
+    from orbits.tools.bench.table import rows_to_json
+
+    rows = bench_stm(n=states, n_ref=reference, repeats=repeats)
+    _emit(rows_to_json(rows), format_stm(rows), fmt, output)
+
+
 def api(
     sizes: Annotated[str, typer.Option(help="comma-separated batch sizes (1 = scalars)")] = "1,100000,1000000",
     repeats: RepeatsOption = 5,
@@ -142,6 +157,7 @@ def all_(
         options = {
             "kepler": {"n_easy": 100_000, "n_hard": 10_000, "n_hyp": 10_000, "n_ref": 200},
             "propagate": {"n": 100_000, "n_ref": 50},
+            "stm": {"n": 10_000, "n_ref": 5},
             "lambert": {"n": 100_000, "n_ref": 50},
             "ephemeris": {"n": 10_000},
             "api": {"sizes": (1, 100_000)},

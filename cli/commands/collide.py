@@ -42,7 +42,7 @@ def command(
         result = Collision.oblique(masses[0], first, masses[1], second, restitution, normal=line)
         title = "Oblique collision"
     if plot:
-        from orbits.mechanics.plots import collision_velocities
+        from orbits.plot import collision_velocities
 
         save_plot(lambda: collision_velocities(result), plot)
     render.emit(f"{title} (e = {restitution:g})", result.quantities(inputs.names(only)), fmt.value)

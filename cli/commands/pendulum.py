@@ -35,7 +35,7 @@ def command(
             raise typer.BadParameter("--rod and --mass go with --bottom-speed (the vertical circle)")
         result = Pendulum.simple(size, inputs.parse_angle(amplitude, "--amplitude"), gravity)
         if plot:
-            from orbits.mechanics.plots import pendulum_periods
+            from orbits.plot import pendulum_periods
 
             save_plot(lambda: pendulum_periods(result), plot)
         render.emit(f"Pendulum of length {length}", result.quantities(inputs.names(only)), fmt.value)
@@ -46,7 +46,7 @@ def command(
     if plot:
         if circle.mass is None:
             raise typer.BadParameter("--plot of a vertical circle draws the normal force: give --mass")
-        from orbits.mechanics.plots import vertical_circle_forces
+        from orbits.plot import vertical_circle_forces
 
         save_plot(lambda: vertical_circle_forces({f"u = {bottom_speed}": circle}), plot)
     render.emit(f"Vertical circle of radius {length}: {circle.regime}", circle.quantities(inputs.names(only)),

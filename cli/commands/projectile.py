@@ -61,7 +61,7 @@ def command(
         raise typer.BadParameter(f"{', '.join(given) or '--rate and --terminal-speed'}: need --drag linear (--rate) "
                                  f"or --drag quadratic")
     if plot:
-        from orbits.mechanics.plots import projectile_paths
+        from orbits.plot import projectile_paths
 
         save_plot(lambda: projectile_paths({TITLES[drag]: shot}), plot)
     render.emit(f"Projectile, {TITLES[drag]}", shot.quantities(inputs.names(only)), fmt.value)

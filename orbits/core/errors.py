@@ -26,6 +26,14 @@ class SceneError(OrbitsError, ValueError):
     """A scene file or dictionary is invalid; the message names the source, the field and what is allowed."""
 
 
+class ParameterError(OrbitsError, ValueError):
+    """A model scene's parameter, or a combination of them (`name` None), that the model cannot run."""
+
+    def __init__(self, name: str | None, message: str):
+        super().__init__(message)
+        self.name = name
+
+
 class UnknownNameError(OrbitDomainError, KeyError):
     """A name (a body, a quantity, a Lagrange point) that is not one of those known; the message lists them.
 
@@ -41,5 +49,5 @@ class OrbitsWarning(UserWarning):
 
 
 class InsideBodyWarning(OrbitsWarning):
-    """A conic's closest approach lies inside a catalogue body (or, for two bodies meeting, inside their radii
-    added): the orbit passes through the body, or the two collide. The conic is still computed."""
+    """A closest approach lies inside a catalogue body (or inside both bodies' radii, for two bodies meeting): the
+    orbit passes through the body, or the two collide. The two-body answer is still computed."""

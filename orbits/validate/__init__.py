@@ -15,7 +15,7 @@ the benchmarks the libraries' own closed-form functions.
 from orbits.validate.backends import BACKENDS, available
 from orbits.validate.plan import Measurement
 from orbits.validate.run import Check, SceneReport, ValidationReport, validate, validate_scene
-from orbits.validate.scenes import builtin_names, load, unavailable_builtins
+from orbits.validate.scenes import builtin_names, load, summaries, unavailable_builtins
 
 __all__ = ["BACKENDS", "Check", "Measurement", "SceneReport", "ValidationReport", "available", "builtin_names",
-           "load", "unavailable_builtins", "validate", "validate_scene"]
+           "load", "summaries", "unavailable_builtins", "validate", "validate_scene"]

@@ -30,6 +30,13 @@ def builtin_names() -> list[str]:
     return data_scenes.builtin_names() + models.builtin_names()
 
 
+def summaries() -> dict[str, str]:
+    """{name: one line} of every built-in scene, in the order `orbits validate` runs them: a data scene's
+    description, a model scene's builder's first sentence (nothing is integrated or built)."""
+    lines = {name: str(data_scenes.read(name)[0].get("description", "")) for name in data_scenes.builtin_names()}
+    return {**lines, **{name: models.summary(name) for name in models.builtin_names()}}
+
+
 def unavailable_builtins() -> dict[str, str]:
     """{name: reason} of the built-in scenes this install cannot run (an optional extra missing)."""
     return {name: reason for name in models.builtin_names() if (reason := models.missing_extra(name))}

@@ -202,7 +202,7 @@ def test_pictures_draw_what_the_objects_compute(tmp_path):
 
     matplotlib.use("Agg")
     from orbits import Rolling
-    from orbits.mechanics import plots
+    from orbits import plot as plots
     from orbits.plot import save
 
     hit = Collision.head_on(2 * u.kg, 3 * u.m / u.s, 1 * u.kg, -1 * u.m / u.s, 0.5)

@@ -142,14 +142,40 @@ def ephemeris_work_during(call) -> Counter:
     return counts
 
 
+INNER = ("Mercury", "Venus", "Earth", "Mars", "Sun")
+
+
 @pytest.mark.parametrize(("args", "points"), [
     (["where", "Mars", "--epoch", "2026-11-25"], ("Mars", "Sun", "Earth")),
     (["orbit", "Mars", "--epoch", "2026-11-25"], ("Mars", "Sun")),
+    (["where", "Mars", "--epoch", "2026-11-25", "--plot", "{tmp}/x.png"], INNER),
+    (["where", "Mars", "--epoch", "2026-11-25", "--observer", "Jupiter", "--plot", "{tmp}/x.png"],
+     (*INNER, "Jupiter")),
+    (["where", "Jupiter", "--epoch", "2026-11-25", "--plot", "{tmp}/x.png"],
+     (*INNER, "Jupiter", "Saturn", "Uranus", "Neptune", "Pluto")),
 ])
-def test_an_epoch_is_converted_once_and_each_state_read_once(args, points):
-    """The epoch becomes TDB once and is checked against DE421 once; each body's state is read once."""
+def test_an_epoch_is_converted_once_and_each_state_read_once(args, points, tmp_path):
+    """The epoch becomes TDB once and is checked against DE421 once; each body's state is read once, the picture's
+    included (the command reads every body it and its picture need in one call)."""
     pytest.importorskip("jplephem")
+    pytest.importorskip("matplotlib")
+    args = [a.format(tmp=tmp_path) for a in args]
     result = []
     counts = ephemeris_work_during(lambda: result.append(CliRunner().invoke(app, args)))
     assert result[0].exit_code == 0, result[0].output
+    assert counts == Counter({"to TDB": 1, "span check": 1, **{f"read {p}": 1 for p in points}}), counts
+
+
+def test_the_solar_system_picture_reads_each_body_once():
+    """orbits.plot.solar_system converts its epoch to TDB once, holds it against DE421's span once and reads each
+    planet it draws, the Sun and an observer it does not draw (Jupiter, for the line of sight) once each."""
+    pytest.importorskip("jplephem")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from orbits.plot import solar_system
+
+    counts = ephemeris_work_during(lambda: solar_system("2026-11-25", which="inner", highlight="Mars",
+                                                       observer="Jupiter"))
+    points = ("Mercury", "Venus", "Earth", "Mars", "Jupiter", "Sun")
     assert counts == Counter({"to TDB": 1, "span check": 1, **{f"read {p}": 1 for p in points}}), counts

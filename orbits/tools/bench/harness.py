@@ -120,3 +120,30 @@ def newton_hyperbolic(e, M):
             if np.all(np.abs(step) <= NEWTON_TOL):
                 break
     return H
+
+
+# --- the machine ------------------------------------------------------------------------------------
+
+
+def machine() -> str:
+    """One line naming this machine's CPU and its widest vector unit, read from the machine itself
+    (/proc/cpuinfo on Linux, the platform module elsewhere), e.g. "AMD EPYC, 2 cores, AVX-512 (512-bit vectors)"."""
+    import os
+    import platform
+
+    name, flags = platform.processor() or platform.machine(), set()
+    try:
+        with open("/proc/cpuinfo", encoding="ascii", errors="replace") as info:
+            for line in info:
+                key, _, value = line.partition(":")
+                if key.strip() == "model name" and name in ("", platform.machine(), platform.processor()):
+                    name = value.strip()
+                elif key.strip() == "flags":
+                    flags = set(value.split())
+    except OSError:
+        pass
+    vectors = next((f"{label} ({bits}-bit vectors)" for flag, label, bits in
+                    (("avx512f", "AVX-512", 512), ("avx2", "AVX2", 256), ("avx", "AVX", 256), ("sse2", "SSE2", 128))
+                    if flag in flags), "vector width unknown")
+    count = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
+    return f"{name}, {count} cores, {vectors}"

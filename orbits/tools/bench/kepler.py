@@ -8,6 +8,7 @@ kernels split over orbits.core._fast.num_threads(). rebound is timed through its
 measures the Python call overhead as much as the solver.
 """
 
+import dataclasses
 import math
 import time
 from collections.abc import Sequence
@@ -20,8 +21,10 @@ from orbits.tools.bench.harness import (
     NEWTON_MAX_ITER,
     NEWTON_TOL,
     Method,
+    best_time,
     cores,
     load_methods,
+    machine,
     newton_elliptic,
     newton_hyperbolic,
     orbits_name,
@@ -328,6 +331,37 @@ def bench_kepler(
         for name, method, note in methods:
             row = _skipped(name, data, note) if method is None else _measure(method, data, refs, repeats)
             rows.append(row)
+        if data.name == "easy":
+            layout_refs = refs
+    orbits = next((row for row in rows if row.method == "orbits"), None)
+    if orbits is None:  # a benchmark of other methods only
+        return rows
+    if orbits.status == "skipped":
+        return rows + [dataclasses.replace(orbits, dataset=f"easy, {name}") for name, _ in _LAYOUTS]
+    return rows + _layout_rows(datasets[0], layout_refs, repeats)
+
+
+#: (name, element offset of the output after the inputs in one buffer): the output right after an input
+#: (consecutive allocations often lie so), one element further, and 64 bytes apart
+_LAYOUTS = (("adjacent", 0), ("offset 8 B", 1), ("padded 64 B", 8))
+
+
+def _layout_rows(data, refs, repeats):
+    """orbits on one thread on the easy set with M, e and the output laid end to end in one buffer, as
+    _LAYOUTS: the kernels loop over views, so the speed should not depend on where the arrays lie."""
+    from orbits.core import _fast_kepler
+
+    n = len(data.e)
+    rows = []
+    for name, offset in _LAYOUTS:
+        buffer = np.empty(3 * n + 8)
+        M, e, out = buffer[:n], buffer[n:2 * n], buffer[2 * n + offset:3 * n + offset]
+        M[:], e[:] = data.M, data.e
+        with orbits_threads(1):
+            seconds, _ = best_time(lambda M=M, e=e, out=out: _fast_kepler.elliptic(0, n, M, e, out), repeats)
+        max_rel, max_ulp = _worst_errors(out[: len(refs)], refs, True)
+        rows.append(BenchRow("orbits", f"easy, {name}", n, seconds, n / seconds, max_rel, max_ulp,
+                             int(np.count_nonzero(~np.isfinite(out))), "ok", "the kernel called directly, 1 thread"))
     return rows
 
 
@@ -350,7 +384,7 @@ def format_rows(rows: Sequence[BenchRow]) -> str:
         f"M/s: millions of pairs solved per second. {RATIO_LEGEND} rel err, ulp: worst relative and ulp errors "
         "against mpmath. NaN: non-finite results."
     )
-    return "\n".join(lines + [""] + wrap(legend, WIDTH) + notes(texts))
+    return "\n".join(lines + [""] + wrap(legend, WIDTH) + notes(texts) + ["", f"Machine: {machine()}"])
 
 
 def _kepler_stats(row):

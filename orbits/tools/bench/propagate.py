@@ -17,6 +17,7 @@ from orbits.tools.bench.harness import (
     best_time,
     cores,
     load_methods,
+    machine,
     newton_elliptic,
     orbits_name,
     orbits_note,
@@ -271,7 +272,7 @@ def format_propagate(rows: Sequence[PropagateRow]) -> str:
         f"M/s: millions of states propagated per second. {RATIO_LEGEND} |dr|/r, |dv|/v: max |dr|/r and max |dv|/v, "
         "the worst relative position and velocity errors against mpmath. NaN: non-finite results."
     )
-    return "\n".join(lines + [""] + wrap(legend, WIDTH) + notes(texts))
+    return "\n".join(lines + [""] + wrap(legend, WIDTH) + notes(texts) + ["", f"Machine: {machine()}"])
 
 
 def _propagation_stats(row):

@@ -9,6 +9,7 @@ from orbits.tools.bench.ephemeris import bench_ephemeris, format_ephemeris
 from orbits.tools.bench.kepler import bench_kepler, format_rows
 from orbits.tools.bench.lambert import bench_lambert, format_lambert
 from orbits.tools.bench.propagate import bench_propagate, format_propagate
+from orbits.tools.bench.stm import bench_stm, format_stm
 from orbits.tools.bench.table import rows_to_json
 from orbits.tools.bench.validate import bench_validate, format_validate
 
@@ -16,6 +17,7 @@ from orbits.tools.bench.validate import bench_validate, format_validate
 BENCHMARKS = {
     "kepler": (bench_kepler, format_rows),
     "propagate": (bench_propagate, format_propagate),
+    "stm": (bench_stm, format_stm),
     "lambert": (bench_lambert, format_lambert),
     "ephemeris": (bench_ephemeris, format_ephemeris),
     "api": (bench_api, format_api),
