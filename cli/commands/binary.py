@@ -67,9 +67,7 @@ def command(
 ) -> None:
     """Masses, relative orbit, each star's orbit about the centre of mass, energy and angular momentum (XXII), and,
     given --inc (the tilt to the sky), the radial-velocity semi-amplitudes and mass function. With --K: from a
-    measured radial-velocity curve to the mass function and the companion's (minimum) mass.
-
-    Example: orbits binary --m1 "1 solMass" --m2 "1 jupiterMass" --period "4.23 d" --inc 90"""
+    measured radial-velocity curve to the mass function and the companion's (minimum) mass."""
     from orbits import inputs
     from orbits_cli import render
 

@@ -35,10 +35,8 @@ def command(
     fmt: FormatOption = Format.table,
 ) -> None:
     """Velocities, transfer angle and elements of the conic from r1 to r2 in the time of flight (Izzo's method);
-    between bodies (--from, --to, --depart, --arrive) also the launch energy C3 and v_inf at both ends.
-
-    Examples: orbits lambert --r1 '1,0,0 AU' --r2 '0,1.5,0 AU' --tof '200 d';
-    orbits lambert --from Earth --to Mars --depart 2026-11-26 --arrive 2027-08-15"""
+    between bodies (--from, --to, --depart, --arrive: positions from the ephemeris, exactly as orbits porkchop
+    computes a cell) also the launch energy C3 and v_inf at both ends."""
     from orbits import inputs, lambert
     from orbits_cli import render
 

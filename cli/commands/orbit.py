@@ -55,10 +55,9 @@ def command(
     plot: PlotOption = None,
 ) -> None:
     """Every section XXI quantity of an orbit, from elements, a state vector, or a named body; with --at-r the speed,
-    U and K at a distance, with --area-between the area swept between two times.
-
-    Examples: orbits orbit Mars; orbits orbit Ceres --epoch 2026-01-01; orbits orbit --primary Earth --a '8000 km'
-    --e 0.1 --mass '1000 kg' --at-r '7500 km' --area-between '0 h,1 h'"""
+    U and K at a distance, with --area-between the area swept between two times. A body without an ephemeris
+    (Ceres, Vesta) is carried to --epoch from its published orbit by two-body propagation, and the title says how
+    well."""
     from orbits import inputs
     from orbits_cli import render
 

@@ -54,10 +54,8 @@ def hohmann(
     fmt: FormatOption = Format.table,
 ) -> None:
     """Hohmann transfer: two tangential burns and half an ellipse, optionally turning the plane; the synodic period
-    and the phase angle the target must lead by at departure.
-
-    Examples: orbits transfer hohmann --r1 '6678 km' --r2 '42164 km';
-    orbits transfer hohmann --from Earth --to Mars (their mean orbits about the Sun, as circles of radius a)"""
+    and the phase angle the target must lead by at departure. With --from and --to: between two bodies' mean
+    orbits about their common primary, each taken as the circle of radius its semi-major axis."""
     from orbits import Hohmann, body, inputs
 
     turn = inputs.parse_angle(inc, "--inc")
