@@ -40,7 +40,7 @@ import numpy as np
 PARALLEL_MIN = 1 << 15
 
 #: Modules of orbits/core whose constants and helpers the kernels (orbits/core/_fast*.py) compile in.
-_KERNEL_DEPENDENCIES = ("kepler.py", "propagate.py", "_roots.py", "series.py")
+_KERNEL_DEPENDENCIES = ("kepler.py", "propagate.py", "_roots.py", "series.py", "dop853.py")
 
 #: Kepler and propagation batches from this size on start the compiled kernels by themselves ("auto" mode); smaller
 #: ones, such as a calculator query, take the NumPy implementation (the same algorithm and accuracy:

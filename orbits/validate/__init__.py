@@ -10,6 +10,7 @@ The public entry points are `load` (a scene of either kind, by name or file), `b
 are the only modules that import rebound and heyoka, inside their integrate functions.
 """
 
+from orbits.validate import periodic as _periodic  # noqa: F401  (registers the periodic-orbit model scenes)
 from orbits.validate.backends import BACKENDS, available
 from orbits.validate.plan import Measurement
 from orbits.validate.run import Check, SceneReport, ValidationReport, validate, validate_scene

@@ -1,0 +1,196 @@
+"""Continuation along a family of symmetric periodic orbits, and the stability indices that mark its bifurcations.
+
+A family is a curve of solutions u = (kept components, tau) of the half-period map F(u) = 0 (orbits.core.shooting).
+
+Natural-parameter continuation steps one component of u through given values, predicting each member by linear
+extrapolation from the last two and correcting with that component held; it cannot pass a turning point of that
+component, and says so. Pseudo-arclength continuation follows the curve itself: from a member u_k with unit tangent
+t_k (the null vector of dF/du, oriented as the previous one), the prediction u_k + ds t_k is corrected with the
+condition t_k . (u - u_k - ds t_k) = 0. A step whose correction fails is halved, down to MIN_STEP; easy steps
+(at most EASY_ITERATIONS Newton iterations) grow by half, up to the largest step given.
+
+Stability. The monodromy matrix M has the eigenvalues 1, 1 (the orbit itself and the family) and two reciprocal
+pairs (lambda_i, 1 / lambda_i). The stability indices nu_i = lambda_i + 1 / lambda_i follow from traces, free of
+the defective eigenvalue 1: with s = tr M - 2 = nu_1 + nu_2 and p = nu_1 nu_2 = (s**2 - tr M**2 - 2) / 2, they are the
+roots of nu**2 - s nu + p = 0 (complex in a complex quadruplet). The orbit is linearly stable when both are real
+with |nu| <= 2. A new family branches off where an index crosses 2 (a pair of eigenvalues meets at 1: the halo and
+vertical families leave the planar Lyapunov family there) and period-doubles where one crosses -2; between two
+members the sign of (nu_1 - 2)(nu_2 - 2) = p - 2 s + 4, or (nu_1 + 2)(nu_2 + 2) = p + 2 s + 4, changes.
+"""
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from orbits.core import shooting
+from orbits.core.errors import ConvergenceError, OrbitDomainError
+
+MIN_STEP = 1e-7
+EASY_ITERATIONS = 4
+#: iterations of the root search for a member with a given monitored value, and its relative tolerance
+SEARCH_ITERATIONS = 60
+SEARCH_TOLERANCE = 1e-13
+
+
+def stability_indices(monodromy) -> np.ndarray:
+    """(nu_1, nu_2) of a monodromy matrix (complex; real pairs and unit-circle pairs give real nu), the larger |nu|
+    first, from the traces of M and M**2 (module docstring)."""
+    m = np.asarray(monodromy, dtype=float)
+    s = np.trace(m) - 2.0
+    p = 0.5 * (s * s - np.trace(m @ m) - 2.0)
+    root = np.sqrt(complex(s * s - 4.0 * p))
+    first = 0.5 * (s + root) if s.real >= 0.0 else 0.5 * (s - root)
+    second = p / first if first != 0.0 else 0.5 * (s - root)
+    pair = np.array([first, second])
+    return pair[np.argsort(-np.abs(pair))]
+
+
+def tangent_bifurcation_function(monodromy) -> float:
+    """(nu_1 - 2)(nu_2 - 2) = p - 2 s + 4 (real): it changes sign where a family branches off."""
+    m = np.asarray(monodromy, dtype=float)
+    s = np.trace(m) - 2.0
+    return float(0.5 * (s * s - np.trace(m @ m) - 2.0) - 2.0 * s + 4.0)
+
+
+def period_doubling_function(monodromy) -> float:
+    """(nu_1 + 2)(nu_2 + 2) = p + 2 s + 4 (real): it changes sign where a period-doubling family branches off."""
+    m = np.asarray(monodromy, dtype=float)
+    s = np.trace(m) - 2.0
+    return float(0.5 * (s * s - np.trace(m @ m) - 2.0) + 2.0 * s + 4.0)
+
+
+def tangent(jacobian, previous=None) -> np.ndarray:
+    """Unit null vector of dF/du (m, m + 1), oriented along `previous` (a vector of m + 1 components) when given."""
+    _, _, vt = np.linalg.svd(jacobian)
+    t = vt[-1]
+    if previous is not None and float(t @ previous) < 0.0:
+        t = -t
+    return t
+
+
+def crossing_jacobian(hmap: shooting.HalfPeriodMap, crossing: shooting.Crossing) -> np.ndarray:
+    """dF/du at a corrected crossing, from its stored end state and transition matrix."""
+    from orbits.core import cr3bp
+
+    kept, rev = list(hmap.symmetry.kept), list(hmap.symmetry.reversed)
+    return np.column_stack([crossing.transition[np.ix_(rev, kept)], cr3bp.field(crossing.end, hmap.mu)[rev]])
+
+
+@dataclass(frozen=True, eq=False)
+class Branch:
+    """Members of a family in order, their tangents, and why the continuation stopped (None: it was told to)."""
+
+    members: list
+    tangents: list
+    stop: str | None
+
+
+def _arclength_step(hmap, member, direction, ds):
+    """The member at arclength ds along `direction` from `member` (ConvergenceError if the corrector fails)."""
+    predicted = member.u + ds * direction
+
+    def condition(u):
+        return float(direction @ (u - predicted)), direction
+
+    return hmap.correct(predicted, condition)
+
+
+def pseudo_arclength(hmap: shooting.HalfPeriodMap, first: shooting.Crossing, direction, step: float, count: int,
+                     stop: Callable[[shooting.Crossing], str | None] | None = None,
+                     max_step: float | None = None, until: Callable | None = None) -> Branch:
+    """Up to `count` members from `first` (included), leaving it along `direction` (a vector of u's size whose sign
+    picks the way along the family), first step `step`.
+
+    Stops early when stop(member) returns a reason (the member is not kept), when until(previous, member) is true
+    (the member is kept: a monitored quantity was passed), or when steps shrink below MIN_STEP."""
+    max_step = abs(step) * 8.0 if max_step is None else max_step
+    members = [first]
+    t = tangent(crossing_jacobian(hmap, first), np.asarray(direction, dtype=float))
+    tangents = [t]
+    ds = abs(step)
+    while len(members) < count:
+        try:
+            member = _arclength_step(hmap, members[-1], t, ds)
+        except ConvergenceError:
+            ds *= 0.5
+            if ds < MIN_STEP:
+                return Branch(members, tangents, _stuck(members[-1]))
+            continue
+        reason = stop(member) if stop is not None else None
+        if reason is not None:
+            return Branch(members, tangents, reason)
+        new_t = tangent(crossing_jacobian(hmap, member), t)
+        if float(new_t @ t) < 0.5:  # the tangent turned by more than 60 degrees: too long a step for this bend
+            ds *= 0.5
+            if ds < MIN_STEP:
+                return Branch(members, tangents, _stuck(members[-1]))
+            continue
+        members.append(member)
+        tangents.append(new_t)
+        t = new_t
+        if member.iterations <= EASY_ITERATIONS:
+            ds = min(1.5 * ds, max_step)
+        if until is not None and until(members[-2], member):
+            return Branch(members, tangents, None)
+    return Branch(members, tangents, None)
+
+
+def _stuck(member):
+    return (f"the corrector cannot pass the member with half period {member.u[-1]:.6g} (a sharp turn or the end "
+            f"of the family)")
+
+
+def natural_parameter(hmap: shooting.HalfPeriodMap, first: shooting.Crossing, index: int, values,
+                      stop: Callable[[shooting.Crossing], str | None] | None = None) -> Branch:
+    """Members with u[index] stepped through `values` from `first`, each predicted by extrapolation from the last two
+    (the first from the family's tangent) and corrected with u[index] held. Stops at a value the corrector cannot
+    reach (a turning point in that component) or where stop(member) gives a reason."""
+    members = [first]
+    t = tangent(crossing_jacobian(hmap, first))
+    for value in values:
+        last = members[-1]
+        if len(members) >= 2:
+            previous = members[-2]
+            span = last.u[index] - previous.u[index]
+            slope = (last.u - previous.u) / span if span != 0.0 else t / t[index]
+        else:
+            slope = t / t[index] if t[index] != 0.0 else None
+        if slope is None or not np.all(np.isfinite(slope)):
+            return Branch(members, [], f"the family does not move in u[{index}] here: it cannot be its parameter")
+        guess = last.u + (value - last.u[index]) * slope
+        try:
+            member = hmap.correct(guess, shooting.fixed_component(index, value))
+        except ConvergenceError:
+            return Branch(members, [], f"no member with u[{index}] = {value:.9g} near the last one: the family turns "
+                                       f"back in this parameter (use pseudo-arclength continuation)")
+        reason = stop(member) if stop is not None else None
+        if reason is not None:
+            return Branch(members, [], reason)
+        members.append(member)
+    return Branch(members, [], None)
+
+
+def locate(hmap: shooting.HalfPeriodMap, member: shooting.Crossing, direction, span: float,
+           monitor: Callable[[shooting.Crossing], float], target: float,
+           bracket: tuple[float, float]) -> shooting.Crossing:
+    """The member between `member` (s = 0) and arclength `span` along unit `direction` where monitor = target, given
+    the monitor's values at both ends (`bracket`, of opposite signs after subtracting target): regula falsi with the
+    Illinois modification on s, each trial corrected onto the family at its arclength."""
+    a, b = 0.0, float(span)
+    fa, fb = bracket[0] - target, bracket[1] - target
+    if fa * fb > 0.0:
+        raise OrbitDomainError("the monitored quantity does not cross the target between these members")
+    best = member
+    for _ in range(SEARCH_ITERATIONS):
+        s = b - fb * (b - a) / (fb - fa)
+        best = _arclength_step(hmap, member, direction, s)
+        value = monitor(best) - target
+        if abs(value) <= SEARCH_TOLERANCE * max(1.0, abs(target)) or abs(b - a) <= 1e-15 * max(1.0, abs(span)):
+            return best
+        if value * fb < 0.0:
+            a, fa = b, fb
+        else:
+            fa *= 0.5
+        b, fb = s, value
+    return best
