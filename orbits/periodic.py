@@ -48,7 +48,7 @@ _LABEL = {"ax": "Ax", "ay": "Ay", "az": "Az", "period": "T", "jacobi": "C", "clo
 DEFAULT_POINT = {"lyapunov": "L1", "halo": "L2", "vertical": "L1", "dro": None, "nrho": "L2"}
 #: a family table's largest number of members, and the steps of the walk that finds its extent
 MAX_MEMBERS = 1000
-MAX_WALK = 600
+MAX_WALK = 300
 
 
 @dataclass(frozen=True)
@@ -172,19 +172,28 @@ class _Finder:
         self.stop = self.measures.collision_stop(self.binary.radii)
         self.hmap, self.first, self.direction = families.first_member(self.flow, core, point, northern)
 
-    def search(self, name: str, value: float) -> shooting.Crossing:
+    def trace(self, name: str | None, value, count: int = families.MAX_MEMBERS):
+        """(the followed members, the last one): the member with target `name` = value (its Quantity, checked
+        here), or the last before the family ends."""
+        if name is None:
+            return families.trace(self.hmap, self.measures, self.first, self.direction, stop=self.stop, count=count)
+        target = _target(self.binary, self.system, name, value)
         try:
-            return families.search(self.hmap, self.measures, self.first, self.direction, _METRIC[name], value,
-                                   self.stop)
+            return families.trace(self.hmap, self.measures, self.first, self.direction, _METRIC[name], target,
+                                  self.stop, count)
         except families.BeyondFamily as err:
             raise OrbitDomainError(self._beyond(name, value, err)) from None
 
     def _beyond(self, name, value, err):
+        """The one-line message of a target the family does not reach, in the target's natural unit."""
         metric = _METRIC[name]
-        scale = {"period": 1.0 / self.binary.n * u.s, "jacobi": self.binary.speed**2 * units.M_PER_S**2}.get(
-            metric, self.binary.r * u.m)
-        shown = [display.quantity_text(x * scale, metric) for x in (value, err.low, err.high)]
-        what = f"{_LABEL[name]} = {shown[0]}"
+        if metric == "jacobi":
+            shown = [display.number(x) for x in (err.target, err.low, err.high)]
+            what = f"C = {shown[0]} (units of (n r)**2)"
+        else:
+            scale = 1.0 / self.binary.n * u.s if metric == "period" else self.binary.r * u.m
+            shown = [display.quantity_text(x * scale, metric) for x in (err.target, err.low, err.high)]
+            what = f"the {value} resonance (T = {shown[0]})" if name == "resonance" else f"{_LABEL[name]} = {shown[0]}"
         return (f"{what} is beyond the {self.describe()} family: its members reach {shown[1]} to {shown[2]} "
                 f"({err.reason})")
 
@@ -276,8 +285,7 @@ class PeriodicOrbit(display.Displayed):
     def _member(cls, system, family, point, branch, **targets) -> "PeriodicOrbit":
         name, value = _request(targets)
         finder = _Finder(system, family, point, branch)
-        member = finder.search(name, _target(finder.binary, system, name, value))
-        return finder.orbit(member, (name, value))
+        return finder.orbit(finder.trace(name, value)[1], (name, value))
 
     @classmethod
     def from_state(cls, system: RestrictedThreeBody, r: u.Quantity, v: u.Quantity, period: u.Quantity,
@@ -488,3 +496,113 @@ QUANTITY_NAMES = ["position", "velocity", "period", "jacobi_constant", "dimensio
                   "dimensionless_jacobi_constant", "ax", "ay", "az", "closest_approach_primary",
                   "closest_approach_secondary", "eigenvalues", "stability_indices", "e_folding_time",
                   "richardson_period"]
+
+
+SPACINGS = ("arclength", "period", "jacobi")
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class PeriodicFamily(display.Displayed):
+    """Members of a family of periodic orbits of one binary, from its first member (the smallest, near its point or
+    close about the secondary) to a requested member or to where the family ends, with why it ends there.
+
+    Build it with PeriodicFamily.of. `bifurcations` lists (kind, PeriodicOrbit) where a stability index crosses 2
+    (another family branches off) or -2 (a period-doubling family does), found along the followed family."""
+
+    system: RestrictedThreeBody
+    family: str
+    point: str | None
+    branch: str | None
+    members: tuple
+    end: str
+    _finder: object = field(repr=False)
+    _followed: object = field(repr=False)
+
+    @classmethod
+    def of(cls, system: RestrictedThreeBody, family: str, point: str | None = None, *, branch: str | None = None,
+           members: int = 20, spacing: str = "arclength", **until) -> "PeriodicFamily":
+        """`members` (2 .. MAX_MEMBERS) orbits of `family` ("lyapunov", "halo", "vertical", "dro" or "nrho") about
+        `point` (the family's usual one by default), spread evenly in `spacing`: "arclength" along the family
+        (pseudo-arclength continuation), or "period" or "jacobi" (natural-parameter continuation in that quantity,
+        which stops at a turning point). The last member is the one with the given target (one of TARGETS, as
+        PeriodicOrbit's constructors take them), or else the last before the family reaches a primary's surface or
+        MAX_WALK continuation steps."""
+        if not (isinstance(members, int) and not isinstance(members, bool) and 2 <= members <= MAX_MEMBERS):
+            raise OrbitDomainError(f"members = {members!r} must be an integer in [2, {MAX_MEMBERS}]")
+        if spacing not in SPACINGS:
+            raise OrbitDomainError(f"spacing = {spacing!r}; choose from {', '.join(SPACINGS)}")
+        point = DEFAULT_POINT.get(family) if point is None else point
+        if branch is None and family in ("halo", "nrho"):
+            branch = "southern" if family == "nrho" else "northern"
+        finder = _Finder(system, family, point, branch)
+        given = [(k, v) for k, v in until.items() if v is not None]
+        if len(given) > 1:
+            raise OrbitDomainError(f"give at most one target to end the family ({', '.join(k for k, _ in given)} "
+                                   f"given)")
+        request = given[0] if given else None
+        followed, last = finder.trace(*(request or (None, None)), count=MAX_WALK)
+        crossings = _spaced(finder, followed, last, members, spacing)
+        end = f"the member with {_LABEL[request[0]]} = {_shown(request)}" if request else (
+            followed.stop or f"{MAX_WALK} continuation steps")
+        return cls(system, family, point, finder.branch, tuple(finder.orbit(c) for c in crossings), end, finder,
+                   followed)
+
+    @cached_property
+    def bifurcations(self) -> list:
+        """[(kind, PeriodicOrbit)]: "tangent" where a stability index crosses 2, "period doubling" where one crosses
+        -2, located between the followed members by regula falsi on (nu_1 -/+ 2)(nu_2 -/+ 2)."""
+        found = families.bifurcations(self._finder.hmap, self._followed)
+        return [(kind, self._finder.orbit(member)) for kind, member in found]
+
+    def _stack(self, name) -> u.Quantity:
+        return u.Quantity([member._lookup(name) for member in self.members])
+
+    def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
+        """{name: Quantity} over the members (a leading axis of len(members)) of FAMILY_NAMES (or `only` those);
+        stability indices as (re, im) pairs."""
+        return quantity_table(self._stack, FAMILY_NAMES, only)
+
+    def __len__(self) -> int:
+        return len(self.members)
+
+    def __repr__(self) -> str:
+        """E.g. "PeriodicFamily(Earth-Moon L2 southern halo, 20 members, T = 5.95..14.83 d, to ...)"."""
+        periods = u.Quantity([m.period for m in self.members])
+        return display.one_line("PeriodicFamily", self.members[0].describe(), f"{len(self.members)} members",
+                                "T = " + display.summary(periods), f"to {self.end}")
+
+
+FAMILY_NAMES = ["period", "jacobi_constant", "dimensionless_jacobi_constant", "dimensionless_state", "ax", "ay",
+                "az", "closest_approach_primary", "closest_approach_secondary", "stability_indices"]
+
+
+def _shown(request) -> str:
+    name, value = request
+    return str(value) if name == "resonance" else display.summary(value) if isinstance(value, u.Quantity) else \
+        display.number(float(value))
+
+
+def _spaced(finder, followed, last, count, spacing) -> list:
+    """`count` crossings from the followed family's first member to `last`, evenly spaced in `spacing`."""
+    if spacing == "arclength":
+        return families.resample(finder.hmap, followed, last, count)
+    first = followed.members[0]
+    mu = finder.binary.mu
+    if spacing == "period":
+        def measure(u):
+            return 2.0 * u[-1]
+
+        def hold(value):
+            return shooting.fixed_component(-1, 0.5 * value)
+    else:
+        def measure(u):
+            return float(cr3bp.jacobi_constant(finder.hmap.state(u), mu))
+
+        def hold(value):
+            return shooting.fixed_jacobi(finder.hmap, value)
+    values = np.linspace(measure(first.u), measure(last.u), count)[1:]
+    walked = continuation.natural_parameter(finder.hmap, first, values, measure, hold, finder.stop)
+    if walked.stop is not None:
+        raise OrbitDomainError(f"the {finder.describe()} family cannot be spaced evenly in {spacing}: "
+                               f"{walked.stop}")
+    return walked.members

@@ -6,8 +6,11 @@ Natural-parameter continuation steps one component of u through given values, pr
 extrapolation from the last two and correcting with that component held; it cannot pass a turning point of that
 component, and says so. Pseudo-arclength continuation follows the curve itself: from a member u_k with unit tangent
 t_k (the null vector of dF/du, oriented as the previous one), the prediction u_k + ds t_k is corrected with the
-condition t_k . (u - u_k - ds t_k) = 0. A step whose correction fails is halved, down to MIN_STEP; easy steps
-(at most EASY_ITERATIONS Newton iterations) grow by half, up to the largest step given.
+condition t_k . (u - u_k - ds t_k) = 0. A step whose correction fails, moves the prediction by more than JUMP ds
+(a jump to another family) or turns the tangent by more than 60 degrees is halved, down to MIN_STEP; easy steps
+(at most EASY_ITERATIONS Newton iterations) grow by half, up to the largest step given. The continuation also
+stops where the family closes on itself (a step passes its first member, or that member's mirror image in the
+binary's plane z = 0, which is a symmetry of the problem: a vertical family returns to its start that way).
 
 Stability. The monodromy matrix M has the eigenvalues 1, 1 (the orbit itself and the family) and two reciprocal
 pairs (lambda_i, 1 / lambda_i). The stability indices nu_i = lambda_i + 1 / lambda_i follow from traces, free of
@@ -26,8 +29,10 @@ import numpy as np
 from orbits.core import shooting
 from orbits.core.errors import ConvergenceError, OrbitDomainError
 
-MIN_STEP = 1e-7
+MIN_STEP = 1e-5
 EASY_ITERATIONS = 4
+#: a correction that moves the prediction by more than this many steps has left the family: the step is retried
+JUMP = 0.5
 #: iterations of the root search for a member with a given monitored value, and its relative tolerance
 SEARCH_ITERATIONS = 60
 SEARCH_TOLERANCE = 1e-13
@@ -69,14 +74,6 @@ def tangent(jacobian, previous=None) -> np.ndarray:
     return t
 
 
-def crossing_jacobian(hmap: shooting.HalfPeriodMap, crossing: shooting.Crossing) -> np.ndarray:
-    """dF/du at a corrected crossing, from its stored end state and transition matrix."""
-    from orbits.core import cr3bp
-
-    kept, rev = list(hmap.symmetry.kept), list(hmap.symmetry.reversed)
-    return np.column_stack([crossing.transition[np.ix_(rev, kept)], cr3bp.field(crossing.end, hmap.mu)[rev]])
-
-
 @dataclass(frozen=True, eq=False)
 class Branch:
     """Members of a family in order, their tangents, and why the continuation stopped (None: it was told to)."""
@@ -86,8 +83,9 @@ class Branch:
     stop: str | None
 
 
-def _arclength_step(hmap, member, direction, ds):
-    """The member at arclength ds along `direction` from `member` (ConvergenceError if the corrector fails)."""
+def step_along(hmap: shooting.HalfPeriodMap, member: shooting.Crossing, direction, ds: float) -> shooting.Crossing:
+    """The member at arclength ds along unit `direction` from `member`: the prediction member.u + ds direction corrected
+    on the plane through it normal to `direction` (ConvergenceError if the corrector fails)."""
     predicted = member.u + ds * direction
 
     def condition(u):
@@ -106,26 +104,31 @@ def pseudo_arclength(hmap: shooting.HalfPeriodMap, first: shooting.Crossing, dir
     (the member is kept: a monitored quantity was passed), or when steps shrink below MIN_STEP."""
     max_step = abs(step) * 8.0 if max_step is None else max_step
     members = [first]
-    t = tangent(crossing_jacobian(hmap, first), np.asarray(direction, dtype=float))
+    t = tangent(first.jacobian, np.asarray(direction, dtype=float))
     tangents = [t]
     ds = abs(step)
     while len(members) < count:
         try:
-            member = _arclength_step(hmap, members[-1], t, ds)
+            member = step_along(hmap, members[-1], t, ds)
         except ConvergenceError:
             ds *= 0.5
             if ds < MIN_STEP:
                 return Branch(members, tangents, _stuck(members[-1]))
             continue
-        reason = stop(member) if stop is not None else None
-        if reason is not None:
-            return Branch(members, tangents, reason)
-        new_t = tangent(crossing_jacobian(hmap, member), t)
-        if float(new_t @ t) < 0.5:  # the tangent turned by more than 60 degrees: too long a step for this bend
+        new_t = tangent(member.jacobian, t)
+        jumped = np.linalg.norm(member.u - members[-1].u - ds * t) > JUMP * ds
+        if jumped or float(new_t @ t) < 0.5:  # the tangent turned by more than 60 degrees, or the corrector moved
+            # the prediction more than JUMP steps (onto another family): too long a step for this bend
             ds *= 0.5
             if ds < MIN_STEP:
                 return Branch(members, tangents, _stuck(members[-1]))
             continue
+        reason = stop(member) if stop is not None else None
+        if reason is None and len(members) > 2 and _returns(hmap, members[0], members[-1], member):
+            reason = ("the family closes on itself: it returns to its first member or that member's mirror image "
+                      "in the binary's plane")
+        if reason is not None:
+            return Branch(members, tangents, reason)
         members.append(member)
         tangents.append(new_t)
         t = new_t
@@ -136,34 +139,53 @@ def pseudo_arclength(hmap: shooting.HalfPeriodMap, first: shooting.Crossing, dir
     return Branch(members, tangents, None)
 
 
+def _returns(hmap, first, previous, member) -> bool:
+    """Whether the step from `previous` to `member` passes within a quarter of its length of `first` or of first's
+    image under z -> -z (the binary's plane is a mirror of the problem)."""
+    mirror = np.array([-1.0 if k in (2, 5) else 1.0 for k in hmap.symmetry.kept] + [1.0])
+    a, b = previous.u, member.u
+    chord = b - a
+    length = float(np.linalg.norm(chord))
+    for point in (first.u, first.u * mirror):
+        along = min(max(float((point - a) @ chord) / length**2, 0.0), 1.0) if length > 0.0 else 0.0
+        if np.linalg.norm(a + along * chord - point) <= 0.25 * length:
+            return True
+    return False
+
+
 def _stuck(member):
     return (f"the corrector cannot pass the member with half period {member.u[-1]:.6g} (a sharp turn or the end "
             f"of the family)")
 
 
-def natural_parameter(hmap: shooting.HalfPeriodMap, first: shooting.Crossing, index: int, values,
+def natural_parameter(hmap: shooting.HalfPeriodMap, first: shooting.Crossing, values,
+                      measure: Callable[[np.ndarray], float], hold: Callable[[float], Callable],
                       stop: Callable[[shooting.Crossing], str | None] | None = None) -> Branch:
-    """Members with u[index] stepped through `values` from `first`, each predicted by extrapolation from the last two
-    (the first from the family's tangent) and corrected with u[index] held. Stops at a value the corrector cannot
-    reach (a turning point in that component) or where stop(member) gives a reason."""
+    """Members with the parameter measure(u) stepped through `values` from `first`, each predicted by extrapolation
+    from the last two (the first from the family's tangent) and corrected with hold(value), the condition keeping
+    the parameter at value (orbits.core.shooting.fixed_component, fixed_jacobi). Stops at a value the corrector
+    cannot reach (a turning point of the parameter, which this continuation cannot pass) or where stop(member) gives
+    a reason."""
     members = [first]
-    t = tangent(crossing_jacobian(hmap, first))
+    t = tangent(first.jacobian)
+    eps = 1e-7
+    rate = (measure(first.u + eps * t) - measure(first.u - eps * t)) / (2.0 * eps)
     for value in values:
         last = members[-1]
         if len(members) >= 2:
-            previous = members[-2]
-            span = last.u[index] - previous.u[index]
-            slope = (last.u - previous.u) / span if span != 0.0 else t / t[index]
+            span = measure(last.u) - measure(members[-2].u)
+            slope = (last.u - members[-2].u) / span if span != 0.0 else None
         else:
-            slope = t / t[index] if t[index] != 0.0 else None
+            slope = t / rate if rate != 0.0 else None
         if slope is None or not np.all(np.isfinite(slope)):
-            return Branch(members, [], f"the family does not move in u[{index}] here: it cannot be its parameter")
-        guess = last.u + (value - last.u[index]) * slope
+            return Branch(members, [], "the parameter does not change along the family here: it cannot step it")
+        guess = last.u + (value - measure(last.u)) * slope
         try:
-            member = hmap.correct(guess, shooting.fixed_component(index, value))
+            member = hmap.correct(guess, hold(value))
         except ConvergenceError:
-            return Branch(members, [], f"no member with u[{index}] = {value:.9g} near the last one: the family turns "
-                                       f"back in this parameter (use pseudo-arclength continuation)")
+            return Branch(members, [], f"no member with the parameter at {value:.9g} near the last one: the family "
+                                       f"turns back in it (a turning point, which pseudo-arclength continuation "
+                                       f"passes)")
         reason = stop(member) if stop is not None else None
         if reason is not None:
             return Branch(members, [], reason)
@@ -184,7 +206,7 @@ def locate(hmap: shooting.HalfPeriodMap, member: shooting.Crossing, direction, s
     best = member
     for _ in range(SEARCH_ITERATIONS):
         s = b - fb * (b - a) / (fb - fa)
-        best = _arclength_step(hmap, member, direction, s)
+        best = step_along(hmap, member, direction, s)
         value = monitor(best) - target
         if abs(value) <= SEARCH_TOLERANCE * max(1.0, abs(target)) or abs(b - a) <= 1e-15 * max(1.0, abs(span)):
             return best

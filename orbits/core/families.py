@@ -42,6 +42,10 @@ SAMPLES = 128
 #: Newton steps polishing an extreme, and the time step (units of the period) below which it has converged
 POLISH_ITERATIONS = 8
 POLISH_TOLERANCE = 1e-14
+#: pseudo-arclength continuation: first and largest steps (units of u), and the most members followed
+STEP = 0.02
+MAX_STEP = 0.25
+MAX_MEMBERS = 2000
 #: the metrics a member can be asked for (units of r, 1 / n and (n r)**2)
 METRICS = ("ax", "ay", "az", "period", "jacobi", "closest_primary", "closest_secondary")
 
@@ -207,41 +211,67 @@ class Measures:
         return stop
 
 
-def search(hmap: shooting.HalfPeriodMap, measures: Measures, first: shooting.Crossing, direction, name: str,
-           target: float, stop: Callable[[shooting.Crossing], str | None] | None = None, step: float = 0.02,
-           max_members: int = 2000) -> shooting.Crossing:
-    """The member of the family through `first` with metric `name` = target, followed from `first` along
-    `direction`. OrbitDomainError naming the range reached when the family ends (or turns back) first."""
+def trace(hmap: shooting.HalfPeriodMap, measures: Measures, first: shooting.Crossing, direction,
+          name: str | None = None, target: float | None = None,
+          stop: Callable[[shooting.Crossing], str | None] | None = None, count: int = MAX_MEMBERS,
+          step: float = STEP) -> tuple[continuation.Branch, shooting.Crossing]:
+    """(the members followed from `first` along `direction`, the last member): the one with metric `name` = target
+    when a target is given, else the last before `stop` gave a reason or `count` members. BeyondFamily names the
+    range reached when the family ends or turns back before the target."""
+    if name is None:
+        branch = continuation.pseudo_arclength(hmap, first, direction, step, count, stop=stop, max_step=MAX_STEP)
+        return branch, branch.members[-1]
+
     def value(member):
         return measures.metric(member, name)
 
-    start = value(first)
-    if start == target:
-        return first
-    side = math.copysign(1.0, target - start)
-    seen = [start]
+    seen = [value(first)]
+    if seen[0] == target:
+        return continuation.Branch([first], [continuation.tangent(first.jacobian, direction)], None), first
+    side = math.copysign(1.0, target - seen[0])
 
     def passed(previous, member):
         seen.append(value(member))
         return (seen[-1] - target) * side >= 0.0
 
-    branch = continuation.pseudo_arclength(hmap, first, direction, step, max_members, stop=stop, until=passed,
-                                           max_step=0.25)
-    if len(branch.members) < 2 or (seen[len(branch.members) - 1] - target) * side < 0.0:
-        low, high = min(seen[: len(branch.members)]), max(seen[: len(branch.members)])
-        why = branch.stop or f"no crossing within {max_members} members"
-        raise BeyondFamily(name, target, low, high, why)
+    branch = continuation.pseudo_arclength(hmap, first, direction, step, count, stop=stop, until=passed,
+                                           max_step=MAX_STEP)
+    reached = seen[: len(branch.members)]
+    if len(branch.members) < 2 or (reached[-1] - target) * side < 0.0:
+        why = branch.stop or f"no crossing within {count} members"
+        raise BeyondFamily(name, target, min(reached), max(reached), why)
     before, after = branch.members[-2], branch.members[-1]
     t = branch.tangents[-2]
-    span = float(t @ (after.u - before.u))
-    return continuation.locate(hmap, before, t, span, value, target, (seen[-2], seen[-1]))
+    member = continuation.locate(hmap, before, t, float(t @ (after.u - before.u)), value, target,
+                                 (reached[-2], reached[-1]))
+    return continuation.Branch(branch.members[:-1], branch.tangents[:-1], None), member
 
 
-def walk(hmap: shooting.HalfPeriodMap, first: shooting.Crossing, direction, count: int,
-         stop: Callable[[shooting.Crossing], str | None] | None = None, step: float = 0.02,
-         until: Callable | None = None) -> continuation.Branch:
-    """Up to `count` members of the family from `first` along `direction` (pseudo-arclength continuation)."""
-    return continuation.pseudo_arclength(hmap, first, direction, step, count, stop=stop, until=until, max_step=0.25)
+def search(hmap: shooting.HalfPeriodMap, measures: Measures, first: shooting.Crossing, direction, name: str,
+           target: float, stop: Callable[[shooting.Crossing], str | None] | None = None) -> shooting.Crossing:
+    """The member of the family through `first` with metric `name` = target (trace)."""
+    return trace(hmap, measures, first, direction, name, target, stop)[1]
+
+
+def resample(hmap: shooting.HalfPeriodMap, branch: continuation.Branch, last: shooting.Crossing,
+             count: int) -> list:
+    """`count` >= 2 members evenly spaced in arclength from the branch's first member to `last`, each corrected from
+    the followed member before it along its tangent (the arclength between two followed members is the step the
+    first one's tangent took to the second)."""
+    members = list(branch.members)
+    if members[-1] is not last:
+        members.append(last)
+    steps = [float(t @ (b.u - a.u)) for a, b, t in zip(members, members[1:], branch.tangents)]
+    lengths = np.concatenate([[0.0], np.cumsum(steps)])
+    chosen = []
+    for s in np.linspace(0.0, lengths[-1], count):
+        j = min(int(np.searchsorted(lengths, s, side="right")) - 1, len(members) - 1)
+        ds = s - lengths[j]
+        if ds <= 1e-12 * max(lengths[-1], 1e-300) or j == len(members) - 1:
+            chosen.append(members[j])
+        else:
+            chosen.append(continuation.step_along(hmap, members[j], branch.tangents[j], ds))
+    return chosen
 
 
 def monodromy(hmap: shooting.HalfPeriodMap, member: shooting.Crossing) -> np.ndarray:
