@@ -22,6 +22,7 @@ from orbits_cli.commands import (
     lambert,
     orbit,
     pendulum,
+    periodic,
     porkchop,
     precision,
     projectile,
@@ -72,6 +73,7 @@ app.command("cosmology")(reports_errors(displays(cosmology.command)))
 app.command("binary")(reports_errors(displays(binary.command)))
 app.command("flyby")(reports_errors(displays(flyby.command)))
 app.command("lagrange")(reports_errors(displays(lagrange.command)))
+app.command("periodic")(reports_errors(displays(periodic.command)))
 app.command("ring")(reports_errors(displays(ring.command)))
 app.add_typer(escape.app, name="escape")
 app.command("rocket")(reports_errors(displays(rocket.command)))

@@ -167,10 +167,24 @@ class _Finder:
         self.family, self.point = family, point
         self.branch = None if family not in ("halo", "nrho") else branch
         core, point, northern = _family_parts(family, point, self.branch)
-        self.flow = shooting.Flow(self.binary.mu, shooting.use_compiled(True) if compiled is None else compiled)
+        place = cr3bp.origin(self.binary.mu, families.origin(core, point))
+        self.flow = shooting.Flow(self.binary.mu, place, shooting.use_compiled(True) if compiled is None else compiled)
         self.measures = families.Measures(self.flow)
-        self.stop = self.measures.collision_stop(self.binary.radii)
         self.hmap, self.first, self.direction = families.first_member(self.flow, core, point, northern)
+
+    def stop(self, member: shooting.Crossing) -> str | None:
+        """Why the family ends at `member`: it passes within a primary's radius (None otherwise)."""
+        reach = self.measures.extent(member)
+        for which, distance in enumerate(reach.closest):
+            if distance <= self.binary.radii[which]:
+                gm = (self.system.gm_primary, self.system.gm_secondary)[which]
+                km = display.quantity_text(distance * self.binary.r * u.m, "length")
+                radius = display.quantity_text(self.binary.radii[which] * self.binary.r * u.m, "length")
+                name = display.body_name(gm)
+                name = f"the {name}" if name in ("Sun", "Moon") else name
+                return (f"the family reaches the surface of {name}: the next member passes {km} from its centre, "
+                        f"inside its radius {radius}")
+        return None
 
     def trace(self, name: str | None, value, count: int = families.MAX_MEMBERS):
         """(the followed members, the last one): the member with target `name` = value (its Quantity, checked
@@ -204,9 +218,9 @@ class _Finder:
         return " ".join(w for w in words if w)
 
     def orbit(self, member: shooting.Crossing, request=None) -> "PeriodicOrbit":
-        return PeriodicOrbit(self.system, self.family, self.point, self.branch, member.state.copy(), member.period,
-                             self.hmap.symmetry.signs, member.transition, None, member.residual, request,
-                             self.flow.compiled, _work(self.flow))
+        return PeriodicOrbit(self.system, self.family, self.point, self.branch, self.flow.origin.name,
+                             member.state.copy(), member.period, self.hmap.symmetry.signs, member.transition, None,
+                             member.residual, request, self.flow.compiled, _work(self.flow))
 
 
 def _work(flow: shooting.Flow) -> dict:
@@ -217,15 +231,18 @@ def _work(flow: shooting.Flow) -> dict:
 @dataclass(frozen=True, eq=False, repr=False)
 class PeriodicOrbit(display.Displayed):
     """A periodic orbit of a RestrictedThreeBody: its initial state in the rotating frame (dimensionless, units of r
-    and n r), its period (units of 1 / n), and how it was found. Build it with the family constructors
-    (lyapunov, halo, vertical, distant_retrograde, near_rectilinear) or from_state; every quantity is computed
-    when first asked for (the extent from one integration, the monodromy from the stored transition matrices)."""
+    and n r) written about an `origin` (orbits.core.cr3bp.ORIGINS: its collinear point, or the secondary for a
+    DRO, where the integrations run to the orbit's own relative accuracy), its period (units of 1 / n), and how it
+    was found. Build it with the family constructors (lyapunov, halo, vertical, distant_retrograde,
+    near_rectilinear) or from_state; every quantity is computed when first asked for (the extent from one
+    integration, the monodromy from the stored transition matrices)."""
 
     system: RestrictedThreeBody
     family: str
     point: str | None
     branch: str | None
-    dimensionless_state: np.ndarray
+    origin: str
+    local_state: np.ndarray
     dimensionless_period: float
     symmetry_signs: np.ndarray | None = field(default=None, repr=False)
     half_period_transition: np.ndarray | None = field(default=None, repr=False)
@@ -299,16 +316,27 @@ class PeriodicOrbit(display.Displayed):
         state = np.concatenate([inputs.vector(r, units.M, "position r") / binary.r,
                                 inputs.vector(v, units.M_PER_S, "velocity v") / binary.speed])
         t = float(inputs.positive(period, units.S, "period T")) * binary.n
-        flow = shooting.Flow(binary.mu, shooting.use_compiled(False))
-        guess = flow.arc(state, t, outputs=np.linspace(0.0, t, nodes + 1)[:-1]).states
+        places = [cr3bp.origin(binary.mu, name) for name in cr3bp.ORIGINS]
+        place = min(places, key=lambda p: np.linalg.norm(state[:3] - [p.x, 0.0, 0.0]) / p.scale)
+        flow = shooting.Flow(binary.mu, place, shooting.use_compiled(False))
+        guess = flow.arc(flow.local(state), t, outputs=np.linspace(0.0, t, nodes + 1)[:-1]).states
         shot = shooting.multiple_shooting(flow, guess, t)
-        return cls(system, "", None, None, shot.nodes[0].copy(), shot.period, None, None, tuple(shot.transitions),
-                   shot.residual, None, flow.compiled, _work(flow))
+        return cls(system, "", None, None, place.name, shot.nodes[0].copy(), shot.period, None, None,
+                   tuple(shot.transitions), shot.residual, None, flow.compiled, _work(flow))
 
     # ---- the state and the period --------------------------------------------------------------------------
     @cached_property
     def _binary(self) -> _Binary:
         return _binary(self.system)
+
+    @cached_property
+    def _origin(self) -> cr3bp.Origin:
+        return cr3bp.origin(self._binary.mu, self.origin)
+
+    @cached_property
+    def dimensionless_state(self) -> np.ndarray:
+        """The initial state (x, y, z, vx, vy, vz) about the barycentre, in units of r and n r."""
+        return cr3bp.to_barycentric(self.local_state, self._origin)
 
     @cached_property
     def position(self) -> u.Quantity:
@@ -337,11 +365,11 @@ class PeriodicOrbit(display.Displayed):
 
     # ---- the extent -----------------------------------------------------------------------------------------
     def _flow(self) -> shooting.Flow:
-        return shooting.Flow(self._binary.mu, self.compiled)
+        return shooting.Flow(self._binary.mu, self._origin, self.compiled)
 
     @cached_property
     def _extent(self) -> families.Extent:
-        return families.extent(self._flow(), self.dimensionless_state, self.dimensionless_period)
+        return families.extent(self._flow(), self.local_state, self.dimensionless_period)
 
     @cached_property
     def amplitudes(self) -> u.Quantity:
@@ -412,10 +440,11 @@ class PeriodicOrbit(display.Displayed):
     # ---- Richardson's prediction (halo orbits) --------------------------------------------------------------
     @cached_property
     def richardson(self) -> libration.Richardson:
-        """Richardson's third-order halo orbit of this orbit's z amplitude on its branch (halo orbits only)."""
-        if self.family not in ("halo", "nrho"):
-            raise OrbitDomainError(f"Richardson's approximation is a halo orbit's; this is a {self.family or 'free'} "
-                                   f"orbit")
+        """Richardson's third-order halo orbit of this orbit's z amplitude on its branch (halo orbits only: near the
+        secondary, the near-rectilinear ones lie far beyond its reach)."""
+        if self.family != "halo":
+            raise OrbitDomainError(f"Richardson's approximation is a halo orbit's; this is a "
+                                   f"{self.family or 'free'} orbit")
         return libration.richardson_halo(self._binary.mu, self.point, float(self.az.to_value(u.m)) / self._binary.r,
                                          self.branch == "northern")
 
@@ -434,9 +463,10 @@ class PeriodicOrbit(display.Displayed):
             raise OrbitDomainError(f"{t_nd.size} times: at most 10000000 states at once")
         phase = np.mod(t_nd, self.dimensionless_period).ravel()
         order = np.argsort(phase)
-        arc = self._flow().arc(self.dimensionless_state, self.dimensionless_period, outputs=phase[order])
+        flow = self._flow()
+        arc = flow.arc(self.local_state, self.dimensionless_period, outputs=phase[order])
         states = np.empty((phase.size, 6))
-        states[order] = arc.states
+        states[order] = flow.barycentric(arc.states)
         return states.reshape(t_nd.shape + (6,))
 
     def states(self, t: u.Quantity) -> tuple[u.Quantity, u.Quantity]:
@@ -483,8 +513,9 @@ class PeriodicOrbit(display.Displayed):
             return np.stack([values.real, values.imag], axis=-1) << u.one
         if name == "e_folding_time" and self.stable:
             raise OrbitDomainError("a stable orbit has no e-folding time")
-        if name == "dimensionless_state":
-            return self.dimensionless_state << u.one
+        if name in ("dimensionless_position", "dimensionless_velocity"):
+            part = self.dimensionless_state[:3] if name.endswith("position") else self.dimensionless_state[3:]
+            return part << u.one
         if name in ("dimensionless_period", "dimensionless_jacobi_constant"):
             return getattr(self, name) << u.one
         if name in ("closest_approach_primary", "closest_approach_secondary"):
@@ -492,7 +523,8 @@ class PeriodicOrbit(display.Displayed):
         return getattr(self, name)
 
 
-QUANTITY_NAMES = ["position", "velocity", "period", "jacobi_constant", "dimensionless_state", "dimensionless_period",
+QUANTITY_NAMES = ["position", "velocity", "period", "jacobi_constant", "dimensionless_position",
+                  "dimensionless_velocity", "dimensionless_period",
                   "dimensionless_jacobi_constant", "ax", "ay", "az", "closest_approach_primary",
                   "closest_approach_secondary", "eigenvalues", "stability_indices", "e_folding_time",
                   "richardson_period"]
@@ -572,7 +604,8 @@ class PeriodicFamily(display.Displayed):
                                 "T = " + display.summary(periods), f"to {self.end}")
 
 
-FAMILY_NAMES = ["period", "jacobi_constant", "dimensionless_jacobi_constant", "dimensionless_state", "ax", "ay",
+FAMILY_NAMES = ["period", "jacobi_constant", "dimensionless_jacobi_constant", "dimensionless_position",
+                "dimensionless_velocity", "ax", "ay",
                 "az", "closest_approach_primary", "closest_approach_secondary", "stability_indices"]
 
 
@@ -596,7 +629,7 @@ def _spaced(finder, followed, last, count, spacing) -> list:
             return shooting.fixed_component(-1, 0.5 * value)
     else:
         def measure(u):
-            return float(cr3bp.jacobi_constant(finder.hmap.state(u), mu))
+            return float(cr3bp.jacobi_constant(finder.flow.barycentric(finder.hmap.state(u)), mu))
 
         def hold(value):
             return shooting.fixed_jacobi(finder.hmap, value)

@@ -1,5 +1,5 @@
 """Compiled integration of the restricted problem (numba): a port of orbits.core.dop853.integrate driving
-orbits.core.cr3bp.vector_field, with and without the state transition matrix.
+orbits.core.cr3bp.vector_field (states about an Origin), with and without the state transition matrix.
 
 Imported only through orbits.core.shooting, when orbits.core._fast.use lets a correction run compiled. Step for
 step the NumPy version's: the same first step, stages, error norm on the six state components, step-size rule,
@@ -22,21 +22,41 @@ STEP_UNDERFLOW = 2
 
 
 @jit
-def _field(mu, y, out, transition):
-    """out = f(y): the state's derivative, and Phi' = A Phi when `transition` (y holds Phi row by row after it)."""
+def _pull(a, x, y, z, out):
+    """orbits.core.cr3bp._pull into out[0:4]: the pull less its value at the origin, and |d|**2."""
+    dx = a + x
+    rho = y * y + z * z
+    s = dx * dx + rho
+    d = math.sqrt(s)
+    inverse_cube = 1.0 / (s * d)
+    out[1], out[2], out[3] = y * inverse_cube, z * inverse_cube, s
+    if a == 0.0:
+        out[0] = x * inverse_cube
+        return
+    span = abs(a)
+    delta = x * (2.0 * a + x) + rho
+    change = -delta * (s + d * span + a * a) / ((d + span) * s * d * a * a * span)
+    out[0] = x * inverse_cube + a * change
+
+
+@jit
+def _field(mu, a1, a2, y, out, transition, pulls):
+    """out = f(y) about the origin at offsets a1, a2 from the primaries: the state's derivative, and Phi' = A Phi
+    when `transition` (y holds Phi row by row after the state); pulls is (2, 4) scratch."""
     one_minus = 1.0 - mu
     x, yy, z, vx, vy = y[0], y[1], y[2], y[3], y[4]
-    dx1, dx2 = x + mu, x - one_minus
-    rho = yy * yy + z * z
-    s1, s2 = dx1 * dx1 + rho, dx2 * dx2 + rho
-    g1, g2 = one_minus / (s1 * math.sqrt(s1)), mu / (s2 * math.sqrt(s2))
-    g = g1 + g2
+    _pull(a1, x, yy, z, pulls[0])
+    _pull(a2, x, yy, z, pulls[1])
     out[0], out[1], out[2] = vx, vy, y[5]
-    out[3] = x + 2.0 * vy - g1 * dx1 - g2 * dx2
-    out[4] = yy - 2.0 * vx - g * yy
-    out[5] = -g * z
+    out[3] = x + 2.0 * vy - one_minus * pulls[0, 0] - mu * pulls[1, 0]
+    out[4] = yy - 2.0 * vx - one_minus * pulls[0, 1] - mu * pulls[1, 1]
+    out[5] = -one_minus * pulls[0, 2] - mu * pulls[1, 2]
     if not transition:
         return
+    s1, s2 = pulls[0, 3], pulls[1, 3]
+    dx1, dx2 = x + a1, x + a2
+    g1, g2 = one_minus / (s1 * math.sqrt(s1)), mu / (s2 * math.sqrt(s2))
+    g = g1 + g2
     h1, h2 = 3.0 * g1 / s1, 3.0 * g2 / s2
     hx = h1 * dx1 + h2 * dx2
     hh = h1 + h2
@@ -64,7 +84,7 @@ def _rms(values, y, n, rtol, atol):
 
 
 @jit
-def _first_step(mu, y, f0, n, span, rtol, atol, transition, work, f1):
+def _first_step(mu, a1, a2, y, f0, n, span, rtol, atol, transition, work, f1, pulls):
     """The NumPy version's starting step (Hairer, Norsett and Wanner, II.4)."""
     d0, d1 = _rms(y, y, n, rtol, atol), _rms(f0, y, n, rtol, atol)
     h0 = 1e-6 if d0 < 1e-5 or d1 < 1e-5 else 0.01 * d0 / d1
@@ -72,7 +92,7 @@ def _first_step(mu, y, f0, n, span, rtol, atol, transition, work, f1):
         h0 = min(h0, span)
     for i in range(y.size):
         work[i] = y[i] + h0 * f0[i]
-    _field(mu, work, f1, transition)
+    _field(mu, a1, a2, work, f1, transition, pulls)
     for i in range(n):
         work[i] = f1[i] - f0[i]
     d2 = _rms(work, y, n, rtol, atol) / h0
@@ -83,7 +103,7 @@ def _first_step(mu, y, f0, n, span, rtol, atol, transition, work, f1):
 
 
 @jit
-def _step(mu, y, h, stages, n, rtol, atol, transition, work, y_new):
+def _step(mu, a1, a2, y, h, stages, n, rtol, atol, transition, work, y_new, pulls):
     """One step of size h from y (stages[0] = f(y)) into y_new; returns the scaled error norm."""
     dim = y.size
     for s in range(1, 12):
@@ -92,7 +112,7 @@ def _step(mu, y, h, stages, n, rtol, atol, transition, work, y_new):
             for j in range(s):
                 total += A[s, j] * stages[j, i]
             work[i] = y[i] + h * total
-        _field(mu, work, stages[s], transition)
+        _field(mu, a1, a2, work, stages[s], transition, pulls)
     for i in range(dim):
         total = 0.0
         for j in range(12):
@@ -115,7 +135,7 @@ def _step(mu, y, h, stages, n, rtol, atol, transition, work, y_new):
 
 
 @jit
-def _integrate_one(mu, y0, t_end, marks, n_marks, rtol, atol, transition, end, states, counts):
+def _integrate_one(mu, a1, a2, y0, t_end, marks, n_marks, rtol, atol, transition, end, states, counts):
     """One trajectory (the NumPy integrate's loop); returns its status."""
     dim = y0.size
     n = 6
@@ -124,9 +144,10 @@ def _integrate_one(mu, y0, t_end, marks, n_marks, rtol, atol, transition, end, s
     work = np.empty(dim)
     y_new = np.empty(dim)
     f1 = np.empty(dim)
+    pulls = np.empty((2, 4))
     direction = 1.0 if t_end >= 0.0 else -1.0
-    _field(mu, y, stages[0], transition)
-    h = direction * _first_step(mu, y, stages[0], n, abs(t_end), rtol, atol, transition, work, f1)
+    _field(mu, a1, a2, y, stages[0], transition, pulls)
+    h = direction * _first_step(mu, a1, a2, y, stages[0], n, abs(t_end), rtol, atol, transition, work, f1, pulls)
     evaluations, steps, rejected = 2, 0, 0
     t = 0.0
     k = 0
@@ -142,13 +163,13 @@ def _integrate_one(mu, y0, t_end, marks, n_marks, rtol, atol, transition, end, s
                 break
             landing = (t + h - target) * direction >= 0.0
             step = target - t if landing else h
-            norm = _step(mu, y, step, stages, n, rtol, atol, transition, work, y_new)
+            norm = _step(mu, a1, a2, y, step, stages, n, rtol, atol, transition, work, y_new, pulls)
             evaluations += 11
             factor = SAFETY * norm ** (-1.0 / ORDER) if norm > 0.0 else GROW
             if norm <= 1.0:
                 t = target if landing else t + step
                 y[:] = y_new
-                _field(mu, y, stages[0], transition)
+                _field(mu, a1, a2, y, stages[0], transition, pulls)
                 evaluations += 1
                 steps += 1
                 if not landing or abs(step) >= abs(h):
@@ -169,14 +190,16 @@ def _integrate_one(mu, y0, t_end, marks, n_marks, rtol, atol, transition, end, s
 
 
 @jit
-def integrate(start, stop, mu, y0, durations, marks, n_marks, rtol, atol, transition, ends, states, counts, status):
-    """Trajectories start .. stop - 1 of a batch: y0 (B, dim), durations (B,), output times marks (B, K) of which the
+def integrate(start, stop, mu, a1, a2, y0, durations, marks, n_marks, rtol, atol, transition, ends, states, counts,
+              status):
+    """Trajectories start .. stop - 1 of a batch about the origin at offsets a1, a2 from the primaries (orbits.core.
+    cr3bp.Origin): y0 (B, dim), durations (B,), output times marks (B, K) of which the
     first n_marks[i] count; fills ends (B, dim), states (B, K, dim), counts (B, 3) = (steps, rejected,
     evaluations) and status (B,). Returns how many trajectories stopped early."""
     failed = 0
     for i in range(start, stop):
-        status[i] = _integrate_one(mu, y0[i], durations[i], marks[i], n_marks[i], rtol, atol, transition, ends[i],
-                                   states[i], counts[i])
+        status[i] = _integrate_one(mu, a1, a2, y0[i], durations[i], marks[i], n_marks[i], rtol, atol, transition,
+                                   ends[i], states[i], counts[i])
         if status[i] != 0:
             failed += 1
     return failed

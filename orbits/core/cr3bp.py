@@ -22,9 +22,13 @@ state after a time tau starts a periodic orbit of period 2 tau (orbits.core.shoo
 
 import math
 from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike
+
+from orbits.core import lagrange
+from orbits.core.errors import OrbitDomainError
 
 #: The reversing symmetries as sign patterns on the state: +1 where a component is kept, -1 where it is reversed.
 #: A fixed state has zero in every reversed component.
@@ -136,25 +140,92 @@ def transition_inverse(phi: ArrayLike) -> np.ndarray:
     return np.linalg.inv(w) @ np.swapaxes(np.asarray(phi, dtype=float), -1, -2) @ w
 
 
-def vector_field(mu: float, with_transition: bool = False) -> Callable[[np.ndarray], np.ndarray]:
-    """f(y) for the integrator: y' of a state (6,) or, with_transition, of a state followed by Phi (42,) row by row.
+#: the points about which a flow may write its states: where the forces balance in the rotating frame
+ORIGINS = ("L1", "L2", "L3", "primary", "secondary")
 
-    Written for one trajectory at a time in scalar arithmetic: it is the integrator's inner loop (two stages of
-    its twelve cost about as much as the rest of a step).
+
+@dataclass(frozen=True)
+class Origin:
+    """A point of the x axis about which states are written as offsets (local coordinates): the state is
+    (x, 0, 0, 0, 0, 0) + (xi, v). `from_primary` and `from_secondary` are x - x_M and x - x_m, each to full relative
+    accuracy (one of them 0 at a primary); `scale` is the length of the motions about it (the distance of a collinear
+    point from its nearer primary, the secondary's Hill radius (mu / 3)**(1/3), or r about the primary), which
+    sets an integration's absolute tolerance."""
+
+    name: str
+    x: float
+    from_primary: float
+    from_secondary: float
+    scale: float
+
+
+def origin(mu: float, name: str) -> Origin:
+    """The Origin `name` (one of ORIGINS) of the binary of mass ratio mu."""
+    if name not in ORIGINS:
+        raise OrbitDomainError(f"unknown origin {name!r}; choose from {', '.join(ORIGINS)}")
+    rho_1, rho_2, s_3 = (float(x) for x in lagrange.collinear_offsets(mu))
+    x = {"L1": 1.0 - (mu + rho_1), "L2": 1.0 + (rho_2 - mu), "L3": -(mu + s_3), "primary": -mu,
+         "secondary": 1.0 - mu}[name]
+    offsets = {"L1": (1.0 - rho_1, -rho_1), "L2": (1.0 + rho_2, rho_2), "L3": (-s_3, -(1.0 + s_3)),
+               "primary": (0.0, -1.0), "secondary": (1.0, 0.0)}[name]
+    scale = {"L1": rho_1, "L2": rho_2, "L3": s_3, "primary": 1.0, "secondary": (mu / 3.0) ** (1.0 / 3.0)}[name]
+    return Origin(name, x, offsets[0], offsets[1], scale)
+
+
+def to_barycentric(states, place: Origin) -> np.ndarray:
+    """States (..., 6) about the barycentre from states about `place`."""
+    out = np.array(states, dtype=float)
+    out[..., 0] += place.x
+    return out
+
+
+def from_barycentric(states, place: Origin) -> np.ndarray:
+    """States (..., 6) about `place` from states about the barycentre (exact to the rounding of the subtraction)."""
+    out = np.array(states, dtype=float)
+    out[..., 0] -= place.x
+    return out
+
+
+def _pull(a: float, x: float, y: float, z: float):
+    """(d / |d|**3 - a x_hat / |a|**3, d = (a + x, y, z), and |d|**2): a primary's pull at the offset (x, y, z) from
+    an origin at distance a from it, less its pull at the origin, free of cancellation: with
+    delta = |d|**2 - a**2 = x (2 a + x) + y**2 + z**2, 1 / |d|**3 - 1 / |a|**3 = -delta (|d|**2 + |d| |a| + a**2) /
+    ((|d| + |a|) |d|**3 |a|**3). At a = 0 (the origin on the primary) it is the pull d / |d|**3 itself."""
+    dx = a + x
+    rho = y * y + z * z
+    s = dx * dx + rho
+    d = math.sqrt(s)
+    inverse_cube = 1.0 / (s * d)
+    if a == 0.0:
+        return x * inverse_cube, y * inverse_cube, z * inverse_cube, s
+    span = abs(a)
+    delta = x * (2.0 * a + x) + rho
+    change = -delta * (s + d * span + a * a) / ((d + span) * s * d * a * a * span)
+    return x * inverse_cube + a * change, y * inverse_cube, z * inverse_cube, s
+
+
+def vector_field(mu: float, place: Origin, with_transition: bool = False) -> Callable[[np.ndarray], np.ndarray]:
+    """f(y) for the integrator in coordinates about `place`: y' of a state (6,) or, with_transition, of a state
+    followed by Phi (42,) row by row.
+
+    The forces balance at the origin (x_o = (1 - mu) a_1 / |a_1|**3 + mu a_2 / |a_2|**3 with a_i its offsets from the
+    primaries), so the acceleration about it is (xi + 2 vy, eta - 2 vx, 0) - sum_i G m_i (d_i / |d_i|**3 - a_i x_hat /
+    |a_i|**3): every term is of the size of the offset, and an orbit small beside the separation (a Sun-Earth halo is
+    1e-3 r) keeps its full relative accuracy. Written for one trajectory at a time in scalar arithmetic: it is the
+    integrator's inner loop.
     """
     mu = float(mu)
     one_minus = 1.0 - mu
+    a1, a2 = place.from_primary, place.from_secondary
 
     def accelerations(y):
         x, yy, z, vx, vy, vz = y[:6].tolist()
-        dx1, dx2 = x + mu, x - one_minus
-        rho = yy * yy + z * z
-        s1, s2 = dx1 * dx1 + rho, dx2 * dx2 + rho
-        g1, g2 = one_minus / (s1 * math.sqrt(s1)), mu / (s2 * math.sqrt(s2))
-        g = g1 + g2
-        ax = x + 2.0 * vy - g1 * dx1 - g2 * dx2
-        ay = yy - 2.0 * vx - g * yy
-        return (x, yy, z, vx, vy, vz, dx1, dx2, s1, s2, g1, g2, g), (vx, vy, vz, ax, ay, -g * z)
+        p1x, p1y, p1z, s1 = _pull(a1, x, yy, z)
+        p2x, p2y, p2z, s2 = _pull(a2, x, yy, z)
+        ax = x + 2.0 * vy - one_minus * p1x - mu * p2x
+        ay = yy - 2.0 * vx - one_minus * p1y - mu * p2y
+        az = -one_minus * p1z - mu * p2z
+        return (x, yy, z, s1, s2), (vx, vy, vz, ax, ay, az)
 
     if not with_transition:
         def state_field(y):
@@ -163,7 +234,10 @@ def vector_field(mu: float, with_transition: bool = False) -> Callable[[np.ndarr
         return state_field
 
     def transition_field(y):
-        (x, yy, z, _, _, _, dx1, dx2, s1, s2, g1, g2, g), head = accelerations(y)
+        (x, yy, z, s1, s2), head = accelerations(y)
+        dx1, dx2 = x + a1, x + a2
+        g1, g2 = one_minus / (s1 * math.sqrt(s1)), mu / (s2 * math.sqrt(s2))
+        g = g1 + g2
         h1, h2 = 3.0 * g1 / s1, 3.0 * g2 / s2
         hx = h1 * dx1 + h2 * dx2
         hh = h1 + h2

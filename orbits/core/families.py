@@ -60,9 +60,15 @@ def check_family(family: str, point: str | None) -> None:
         raise OrbitDomainError(f"the {family} family lies {where}, not {point if point else 'nowhere'}")
 
 
+def origin(family: str, point: str | None) -> str:
+    """The origin a family's flow is written about (orbits.core.cr3bp.ORIGINS): its point, or the secondary."""
+    return "secondary" if family == "dro" else point
+
+
 def first_member(flow: shooting.Flow, family: str, point: str | None, northern: bool = True,
                  size: float | None = None) -> tuple[shooting.HalfPeriodMap, shooting.Crossing, np.ndarray]:
-    """(the family's half-period map, its corrected first member, the direction of growing amplitude in u).
+    """(the family's half-period map, its corrected first member, the direction of growing amplitude in u), along a
+    flow written about the family's origin.
 
     `size` (units of r) overrides the starting amplitude: the x amplitude of a Lyapunov orbit, the z amplitude of a
     halo or vertical orbit, the distance of a DRO's crossing from the secondary."""
@@ -88,7 +94,7 @@ def first_member(flow: shooting.Flow, family: str, point: str | None, northern: 
             halo = libration.richardson_halo(mu, point, amplitude, northern)
             state, half_period = halo.states(0.0), 0.5 * halo.period
             direction[1] = math.copysign(1.0, state[2])
-    u = hmap.unknowns(state, half_period)
+    u = hmap.unknowns(flow.local(state), half_period)
     index = _DEFINING[family]
     member = hmap.correct(u, shooting.fixed_component(index, u[index]))
     return hmap, member, direction
@@ -112,10 +118,10 @@ class Extent:
 
 
 def extent(flow: shooting.Flow, state, period: float, samples: int = SAMPLES) -> Extent:
-    """The Extent of the orbit from `state` over one `period`, each extreme polished along the flow."""
+    """The Extent of the orbit from `state` (about the flow's origin) over one `period`, each extreme polished along
+    the flow; positions in it are about the barycentre."""
     times = np.linspace(0.0, period, samples + 1)
     states = flow.arc(state, period, outputs=times).states
-    mu = flow.mu
     low, high = np.zeros(3), np.zeros(3)
     for k in range(3):
         def coordinate(s, k=k):
@@ -126,8 +132,12 @@ def extent(flow: shooting.Flow, state, period: float, samples: int = SAMPLES) ->
 
         low[k] = _polish(flow, times, states, coordinate, derivatives, np.argmin)
         high[k] = _polish(flow, times, states, coordinate, derivatives, np.argmax)
+    low[0] += flow.origin.x
+    high[0] += flow.origin.x
     closest, farthest = np.zeros(2), np.zeros(2)
-    for j, centre in enumerate(np.array([[-mu, 0.0, 0.0], [1.0 - mu, 0.0, 0.0]])):
+    for j, offset in enumerate((flow.origin.from_primary, flow.origin.from_secondary)):
+        centre = np.array([-offset, 0.0, 0.0])
+
         def distance(s, c=centre):
             return float(np.linalg.norm(s[:3] - c))
 
@@ -150,7 +160,7 @@ def _polish(flow, times, states, value, derivatives, pick):
     period = float(times[-1])
     polished = samples[k]
     for _ in range(POLISH_ITERATIONS):
-        g, slope = derivatives(s, cr3bp.acceleration(s[:3], s[3:], flow.mu))
+        g, slope = derivatives(s, flow.field(s)[3:])
         if slope == 0.0:
             break
         dt = -g / slope
@@ -188,27 +198,12 @@ class Measures:
         if name == "period":
             return member.period
         if name == "jacobi":
-            return float(cr3bp.jacobi_constant(member.state, self.flow.mu))
+            return float(cr3bp.jacobi_constant(self.flow.barycentric(member.state), self.flow.mu))
         if name in ("ax", "ay", "az"):
             return float(self.extent(member).amplitudes[("ax", "ay", "az").index(name)])
         if name in ("closest_primary", "closest_secondary"):
             return float(self.extent(member).closest[0 if name == "closest_primary" else 1])
         raise OrbitDomainError(f"unknown metric {name!r}; choose from {', '.join(METRICS)}")
-
-    def collision_stop(self, radii) -> Callable[[shooting.Crossing], str | None]:
-        """stop(member) for a continuation: a reason when the member passes within the primary's or the
-        secondary's radius (`radii`, units of r; 0 for a point mass)."""
-
-        def stop(member):
-            reach = self.extent(member)
-            for which, (distance, radius) in enumerate(zip(reach.closest, radii)):
-                if distance <= radius:
-                    body = ("primary", "secondary")[which]
-                    return (f"the family reaches the {body}'s surface: the next member passes {distance:.4g} r "
-                            f"from its centre, inside its radius {radius:.4g} r")
-            return None
-
-        return stop
 
 
 def trace(hmap: shooting.HalfPeriodMap, measures: Measures, first: shooting.Crossing, direction,
@@ -257,7 +252,7 @@ def resample(hmap: shooting.HalfPeriodMap, branch: continuation.Branch, last: sh
              count: int) -> list:
     """`count` >= 2 members evenly spaced in arclength from the branch's first member to `last`, each corrected from
     the followed member before it along its tangent (the arclength between two followed members is the step the
-    first one's tangent took to the second)."""
+    first one's tangent took to the second); where that correction fails, the nearer followed member stands in."""
     members = list(branch.members)
     if members[-1] is not last:
         members.append(last)
@@ -269,8 +264,11 @@ def resample(hmap: shooting.HalfPeriodMap, branch: continuation.Branch, last: sh
         ds = s - lengths[j]
         if ds <= 1e-12 * max(lengths[-1], 1e-300) or j == len(members) - 1:
             chosen.append(members[j])
-        else:
+            continue
+        try:
             chosen.append(continuation.step_along(hmap, members[j], branch.tangents[j], ds))
+        except ConvergenceError:  # where the corrector cannot reach the float64 floor: the nearer followed member
+            chosen.append(members[j] if ds <= 0.5 * (lengths[j + 1] - lengths[j]) else members[j + 1])
     return chosen
 
 

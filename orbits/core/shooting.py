@@ -11,7 +11,8 @@ reverses of phi(x0(u), tau), which must vanish. With Phi = Phi(tau) and f the ve
 one more column than rows: the solutions form a one-parameter family, and one more scalar equation g(u) = 0 (a
 fixed component, a fixed Jacobi constant, a period, or the pseudo-arclength condition of orbits.core.continuation)
 picks a member. Newton's method on the square system converges quadratically; it stops when a step no longer
-shrinks the residual, and succeeds when max |F| is below TOLERANCE. The monodromy matrix follows from the half
+shrinks the residual (or is below SMALL_STEP), and succeeds when max |F| is below TOLERANCE, both in units of the
+flow's length scale. The monodromy matrix follows from the half
 period without integrating the other half: M = R Phi^-1 R Phi (Phi^-1 by the symplectic identity), because
 R phi_t(x) = phi_-t(R x).
 
@@ -29,8 +30,10 @@ import numpy as np
 from orbits.core import cr3bp, dop853
 from orbits.core.errors import ConvergenceError
 
-#: the largest |residual| (units of r and n r) a corrected orbit may keep at its half period or between its arcs
-TOLERANCE = 1e-12
+#: the largest |residual| a corrected orbit may keep at its half period or between its arcs, in units of its flow's
+#: length scale (orbits.core.cr3bp.Origin.scale: 1e-11 of 58,000 km about the Earth-Moon L1 point, of 1.5e6 km
+#: about the Sun-Earth L1 point)
+TOLERANCE = 1e-11
 #: Newton iterations before a correction is given up
 MAX_ITERATIONS = 25
 
@@ -54,24 +57,42 @@ XZ_PLANE = Symmetry("x-z plane", (0, 2, 4), (1, 3, 5), cr3bp.XZ_PLANE)
 X_AXIS = Symmetry("x axis", (0, 4, 5), (1, 2, 3), cr3bp.X_AXIS)
 
 
-#: a Newton step this small (units of the unknowns) from a point whose residual is within TOLERANCE cannot improve
-#: it in float64 (quadratic convergence would leave a residual of its square): the correction ends there
-SMALL_STEP = 1e-10
+#: a Newton step this small (in units of the flow's length scale) cannot improve the residual in float64: the
+#: correction ends there
+SMALL_STEP = 1e-14
 
 
 class Flow:
-    """Trajectories of one binary (mu, units of orbits.core.cr3bp), from the NumPy integrator (orbits.core.dop853)
-    or, when `compiled`, its numba port (orbits.core._fast_cr3bp), with what they cost: trajectories integrated
-    (with or without the transition matrix), accepted steps, right-hand-side evaluations and Newton iterations."""
+    """Trajectories of one binary (mu, units of orbits.core.cr3bp) written about an Origin (orbits.core.cr3bp: a
+    collinear point, the primary or the secondary), from the NumPy integrator (orbits.core.dop853) or, when
+    `compiled`, its numba port (orbits.core._fast_cr3bp), with what they cost: trajectories integrated (with or
+    without the transition matrix), accepted steps, right-hand-side evaluations and Newton iterations. The
+    absolute tolerance is dop853.RTOL times the origin's scale, so an orbit small beside the separation is held
+    to its own size."""
 
-    def __init__(self, mu: float, compiled: bool = False):
+    def __init__(self, mu: float, place: cr3bp.Origin, compiled: bool = False):
         self.mu = float(mu)
+        self.origin = place
         self.compiled = bool(compiled)
+        self.atol = dop853.RTOL * place.scale
         self.integrations = self.steps = self.evaluations = self.iterations = 0
+
+    def barycentric(self, states) -> np.ndarray:
+        """States (..., 6) about the barycentre from this flow's local states."""
+        return cr3bp.to_barycentric(states, self.origin)
+
+    def local(self, states) -> np.ndarray:
+        """This flow's local states (..., 6) from states about the barycentre."""
+        return cr3bp.from_barycentric(states, self.origin)
+
+    def field(self, states) -> np.ndarray:
+        """The vector field (..., 6) at local states."""
+        return cr3bp.field(self.barycentric(states), self.mu)
 
     def __repr__(self) -> str:
         kind = "compiled" if self.compiled else "NumPy"
-        return (f"Flow(mu = {self.mu:.8g}, {kind}: {self.integrations} integrations, {self.steps} steps, "
+        return (f"Flow(mu = {self.mu:.8g} about {self.origin.name}, {kind}: {self.integrations} integrations, "
+                f"{self.steps} steps, "
                 f"{self.evaluations} evaluations, {self.iterations} Newton iterations)")
 
     def arc(self, state, duration: float, transition: bool = False, outputs=None) -> dop853.Arc:
@@ -88,8 +109,9 @@ class Flow:
             y0 = np.concatenate([states, np.broadcast_to(np.eye(6).ravel(), (len(states), 36))], axis=1)
         arcs = self._compiled(y0, durations, transition, outputs) if self.compiled else None
         if arcs is None:
-            field = cr3bp.vector_field(self.mu, transition)
-            arcs = [dop853.integrate(field, y, t, outputs=outputs, controlled=6) for y, t in zip(y0, durations)]
+            field = cr3bp.vector_field(self.mu, self.origin, transition)
+            arcs = [dop853.integrate(field, y, t, outputs=outputs, atol=self.atol, controlled=6)
+                    for y, t in zip(y0, durations)]
         for arc in arcs:
             self.integrations += 1
             self.steps += arc.steps
@@ -112,8 +134,9 @@ class Flow:
         states = np.empty((count, marks.shape[1], dim))
         counts = np.zeros((count, 3), dtype=np.int64)
         status = np.zeros(count, dtype=np.int64)
-        failed = _fast.run(_fast_cr3bp.integrate, count, self.mu, np.ascontiguousarray(y0), durations, marks,
-                           n_marks, dop853.RTOL, dop853.ATOL, transition, ends, states, counts, status)
+        failed = _fast.run(_fast_cr3bp.integrate, count, self.mu, self.origin.from_primary,
+                           self.origin.from_secondary, np.ascontiguousarray(y0), durations, marks, n_marks,
+                           dop853.RTOL, self.atol, transition, ends, states, counts, status)
         if failed and not np.any(status):
             return None
         for i in np.flatnonzero(status):
@@ -134,7 +157,8 @@ def use_compiled(continuation: bool) -> bool:
 
 @dataclass(frozen=True, eq=False)
 class Crossing:
-    """A solution of the symmetric shooting problem: unknowns `u` = (kept components, tau), the initial `state`,
+    """A solution of the symmetric shooting problem: unknowns `u` = (kept components, tau), the initial `state`
+    (about the flow's origin),
     the state and transition matrix Phi at the half period (`end`, `transition`), dF/du there (`jacobian`), the
     residual max |F| left and the Newton iterations it took."""
 
@@ -176,32 +200,33 @@ class HalfPeriodMap:
         arc = self.flow.arc(self.state(u), u[-1], transition=True)
         end, phi = arc.end[:6], arc.end[6:].reshape(6, 6)
         kept, rev = list(self.symmetry.kept), list(self.symmetry.reversed)
-        jac = np.column_stack([phi[np.ix_(rev, kept)], cr3bp.field(end, self.mu)[rev]])
+        jac = np.column_stack([phi[np.ix_(rev, kept)], self.flow.field(end)[rev]])
         return end[rev], jac, end, phi
 
     def correct(self, u, condition) -> Crossing:
         """Newton's method on F(u) = 0 and condition(u) = (g, dg/du) = 0 from u; ConvergenceError if it fails."""
         u = np.array(u, dtype=float)
+        accept, small = self.flow.origin.scale * TOLERANCE, self.flow.origin.scale * SMALL_STEP
         best = None
         for iteration in range(1, MAX_ITERATIONS + 1):
             residual, jac, end, phi = self.evaluate(u)
             self.flow.iterations += 1
             g, dg = condition(u)
-            size = float(np.max(np.abs(np.append(residual, g))))
+            size = float(np.max(np.abs(residual)))
             if not np.isfinite(size):
                 break
-            if best is not None and best.residual <= TOLERANCE and size >= 0.5 * best.residual:
+            if best is not None and best.residual <= accept and size >= 0.5 * best.residual:
                 return best  # the residual no longer shrinks: the last solution is as good as float64 allows
             best = Crossing(u.copy(), self.state(u), end, phi, jac, size, iteration)
             step = np.linalg.solve(np.vstack([jac, dg]), -np.append(residual, g))
-            if size <= TOLERANCE and float(np.max(np.abs(step))) <= SMALL_STEP:
+            if size <= accept and float(np.max(np.abs(step))) <= small:
                 return best
             u = u + step
-        if best is not None and best.residual <= TOLERANCE:
+        if best is not None and best.residual <= accept:
             return best
         last = "nan" if best is None else f"{best.residual:.3g}"
         raise ConvergenceError(f"the symmetric corrector did not converge in {MAX_ITERATIONS} iterations "
-                               f"(residual {last}, tolerance {TOLERANCE:g})")
+                               f"(residual {last}, tolerance {accept:.3g})")
 
 
 def fixed_component(index: int, value: float):
@@ -220,7 +245,7 @@ def fixed_jacobi(hmap: HalfPeriodMap, value: float):
     kept = list(hmap.symmetry.kept)
 
     def condition(u):
-        x0 = hmap.state(u)
+        x0 = hmap.flow.barycentric(hmap.state(u))
         gradient = np.append(cr3bp.jacobi_gradient(x0, hmap.mu)[kept], 0.0)
         return float(cr3bp.jacobi_constant(x0, hmap.mu)) - value, gradient
 
@@ -254,7 +279,8 @@ class ShotOrbit:
 
 
 def multiple_shooting(flow: Flow, nodes, period: float, jacobi: float | None = None) -> ShotOrbit:
-    """Correct a periodic orbit from N >= 2 nodes (N, 6) spread evenly in time over one period guess.
+    """Correct a periodic orbit from N >= 2 nodes (N, 6, about the flow's origin) spread evenly in time over one
+    period guess.
 
     With `jacobi` None the period is held; otherwise the Jacobi constant of the first node is held at `jacobi` and
     the period is free. The first node keeps its y coordinate (the phase). ConvergenceError if it fails."""
@@ -262,27 +288,28 @@ def multiple_shooting(flow: Flow, nodes, period: float, jacobi: float | None = N
     n = x.shape[0]
     period = float(period)
     phase = x[0, 1]
+    accept, small = flow.origin.scale * TOLERANCE, flow.origin.scale * SMALL_STEP
     best = None
     for iteration in range(1, MAX_ITERATIONS + 1):
         residual, jac, transitions = _shooting_system(flow, x, period, jacobi, phase)
         flow.iterations += 1
-        size = float(np.max(np.abs(residual)))
+        size = float(np.max(np.abs(residual[: 6 * n])))
         if not np.isfinite(size):
             break
-        if best is not None and best.residual <= TOLERANCE and size >= 0.5 * best.residual:
+        if best is not None and best.residual <= accept and size >= 0.5 * best.residual:
             return best
         best = ShotOrbit(x.copy(), period, transitions, size, iteration)
         step = np.linalg.lstsq(jac, -residual, rcond=None)[0]
-        if size <= TOLERANCE and float(np.max(np.abs(step))) <= SMALL_STEP:
+        if size <= accept and float(np.max(np.abs(step))) <= small:
             return best
         x = x + step[: 6 * n].reshape(n, 6)
         if jacobi is not None:
             period += float(step[-1])
-    if best is not None and best.residual <= TOLERANCE:
+    if best is not None and best.residual <= accept:
         return best
     last = "nan" if best is None else f"{best.residual:.3g}"
     raise ConvergenceError(f"multiple shooting did not converge in {MAX_ITERATIONS} iterations (residual {last}, "
-                           f"tolerance {TOLERANCE:g})")
+                           f"tolerance {accept:.3g})")
 
 
 def _shooting_system(flow, x, period, jacobi, phase):
@@ -304,10 +331,11 @@ def _shooting_system(flow, x, period, jacobi, phase):
         jac[6 * i: 6 * i + 6, 6 * i: 6 * i + 6] += phi
         jac[6 * i: 6 * i + 6, 6 * j: 6 * j + 6] -= np.eye(6)
         if free_period:
-            jac[6 * i: 6 * i + 6, -1] = cr3bp.field(end, flow.mu) / n
+            jac[6 * i: 6 * i + 6, -1] = flow.field(end) / n
     residual[6 * n] = x[0, 1] - phase
     jac[6 * n, 1] = 1.0
     if free_period:
-        residual[6 * n + 1] = float(cr3bp.jacobi_constant(x[0], flow.mu)) - jacobi
-        jac[6 * n + 1, :6] = cr3bp.jacobi_gradient(x[0], flow.mu)
+        first = flow.barycentric(x[0])
+        residual[6 * n + 1] = float(cr3bp.jacobi_constant(first, flow.mu)) - jacobi
+        jac[6 * n + 1, :6] = cr3bp.jacobi_gradient(first, flow.mu)
     return residual, jac, transitions
