@@ -104,7 +104,8 @@ def _first_step(mu, a1, a2, y, f0, n, span, rtol, atol, transition, work, f1, pu
 
 @jit
 def _step(mu, a1, a2, y, h, stages, n, rtol, atol, transition, work, y_new, pulls):
-    """One step of size h from y (stages[0] = f(y)) into y_new; returns the scaled error norm."""
+    """One step of size h from y (stages[0] = f(y)) into y_new; returns the scaled error norm (inf where a stage
+    meets a singularity)."""
     dim = y.size
     for s in range(1, 12):
         for i in range(dim):
@@ -129,6 +130,8 @@ def _step(mu, a1, a2, y, h, stages, n, rtol, atol, transition, work, y_new, pull
         a3 /= scale
         e5 += a5 * a5
         e3 += a3 * a3
+    if not (math.isfinite(e5) and math.isfinite(e3)):
+        return math.inf
     if e5 == 0.0 and e3 == 0.0:
         return 0.0
     return abs(h) * e5 / math.sqrt((e5 + 0.01 * e3) * n)

@@ -14,6 +14,7 @@ The coefficients are those of the published method (A, B and the error weights E
 system being autonomous, the nodes c_i are not needed. The compiled port (orbits/core/_fast_cr3bp.py) reads them here.
 """
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -164,17 +165,25 @@ def stop_message(too_many_steps: bool, t_end: float) -> str:
 
 
 def _step(f, y, h, stages, n, rtol, atol):
-    """One DOP853 step of size h from y (stages[0] = f(y)): (y_new, scaled error norm)."""
-    for s in range(1, 12):
-        stages[s] = f(y + h * (A[s, :s] @ stages[:s]))
-    y_new = y + h * (B @ stages)
-    scale = atol + rtol * np.maximum(np.abs(y[:n]), np.abs(y_new[:n]))
-    err5 = (E5 @ stages[:, :n]) / scale
-    err3 = (E3 @ stages[:, :n]) / scale
-    e5, e3 = float(err5 @ err5), float(err3 @ err3)
+    """One DOP853 step of size h from y (stages[0] = f(y)): (y_new, scaled error norm); the norm is inf when a stage
+    lands on or next to a singularity (a non-finite value, or one beyond float64), so that the step is retried
+    shorter."""
+    try:
+        with np.errstate(over="raise", invalid="raise", divide="raise"):
+            for s in range(1, 12):
+                stages[s] = f(y + h * (A[s, :s] @ stages[:s]))
+            y_new = y + h * (B @ stages)
+            scale = atol + rtol * np.maximum(np.abs(y[:n]), np.abs(y_new[:n]))
+            err5 = (E5 @ stages[:, :n]) / scale
+            err3 = (E3 @ stages[:, :n]) / scale
+            e5, e3 = float(err5 @ err5), float(err3 @ err3)
+    except (ArithmeticError, FloatingPointError):
+        return y, math.inf
+    if not (math.isfinite(e5) and math.isfinite(e3)):
+        return y, math.inf
     if e5 == 0.0 and e3 == 0.0:
         return y_new, 0.0
-    return y_new, abs(h) * e5 / np.sqrt((e5 + 0.01 * e3) * n)
+    return y_new, abs(h) * e5 / math.sqrt((e5 + 0.01 * e3) * n)
 
 
 def _first_step(f, y, f0, n, span, rtol, atol):

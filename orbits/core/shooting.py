@@ -57,6 +57,9 @@ XZ_PLANE = Symmetry("x-z plane", (0, 2, 4), (1, 3, 5), cr3bp.XZ_PLANE)
 X_AXIS = Symmetry("x axis", (0, 4, 5), (1, 2, 3), cr3bp.X_AXIS)
 
 
+#: the absolute tolerance of a flow's integrations, dop853.RTOL times this fraction of its origin's length scale:
+#: small enough that the relative tolerance governs the state everywhere but where a coordinate passes through 0
+ATOL_SCALE = 1e-2
 #: a Newton step this small (in units of the flow's length scale) cannot improve the residual in float64: the
 #: correction ends there
 SMALL_STEP = 1e-14
@@ -67,14 +70,14 @@ class Flow:
     collinear point, the primary or the secondary), from the NumPy integrator (orbits.core.dop853) or, when
     `compiled`, its numba port (orbits.core._fast_cr3bp), with what they cost: trajectories integrated (with or
     without the transition matrix), accepted steps, right-hand-side evaluations and Newton iterations. The
-    absolute tolerance is dop853.RTOL times the origin's scale, so an orbit small beside the separation is held
-    to its own size."""
+    absolute tolerance is dop853.RTOL times ATOL_SCALE of the origin's scale, so an orbit small beside the
+    separation is held to its own size."""
 
     def __init__(self, mu: float, place: cr3bp.Origin, compiled: bool = False):
         self.mu = float(mu)
         self.origin = place
         self.compiled = bool(compiled)
-        self.atol = dop853.RTOL * place.scale
+        self.atol = dop853.RTOL * ATOL_SCALE * place.scale
         self.integrations = self.steps = self.evaluations = self.iterations = 0
 
     def barycentric(self, states) -> np.ndarray:

@@ -7,7 +7,8 @@ count): the closure after one period and, for orbits not too unstable to keep, a
 largest |r(kT) - r(0)| over the orbit's size (its largest amplitude); the drift of the Jacobi constant; the period
 itself, from the last output before it and the Newton step t = T - y / y' to the crossing of the x-z plane; and for an
 unstable orbit the growth per period of a second particle started `offset` off the orbit along the monodromy's
-unstable eigenvector, against the eigenvalue lambda: |dr(kT)| = offset |lambda|**k while the departure is linear.
+unstable eigenvector (unit position part), against the eigenvalue lambda: |dr(kT)| = offset |lambda|**k while the
+departure is linear.
 
 The scenes register themselves with orbits.validate.models (MODELS, PARAMETER_RULES) when this module is imported,
 which orbits.validate does.
@@ -26,9 +27,8 @@ from orbits.validate import models
 from orbits.validate.models import ModelScene
 from orbits.validate.plan import Measurement
 
-#: the departure is followed from offset until the particles are DEPARTURE_END apart (units of r), and its growth
-#: read from the integer periods at which the separation lies in [DEPARTURE_START, DEPARTURE_END]
-DEPARTURE_START = 1e-9
+#: the departure is followed from its offset until the particles are DEPARTURE_END apart (units of r), its growth
+#: read at the last whole period before
 DEPARTURE_END = 1e-5
 #: an orbit whose largest eigenvalue exceeds this is followed over one period only: ten periods would amplify the
 #: trajectory's own error (1e-13) past the orbit's size
@@ -63,10 +63,12 @@ class PeriodicExpectation:
         return float(np.linalg.norm(state[:3] - self.state[:3])) / self.size
 
     def measured_period(self, times, positions, velocities) -> float:
-        """T + dt where dt = -y / y' at the output t = T: the crossing of the x-z plane nearest the period."""
+        """T + dt where dt = -q / q' at the output t = T, q the coordinate the orbit crosses fastest at t = 0 (y, or
+        z for an orbit starting on the x axis): the crossing of that plane nearest the period."""
         k = int(np.flatnonzero(self.periods == 1)[0])
         state = self.rotating(positions[k: k + 1], velocities[k: k + 1], 2)[0]
-        return float(times[k]) - state[1] / state[4]
+        axis = 2 if self.state[2] == 0.0 and abs(self.state[5]) > abs(self.state[4]) else 1
+        return float(times[k]) - state[axis] / state[3 + axis]
 
     def jacobi_drift(self, positions, velocities) -> float:
         c = lagrange.jacobi_constant_inertial(positions[:, 2], velocities[:, 2], positions[:, 0], positions[:, 1],
@@ -74,18 +76,17 @@ class PeriodicExpectation:
         return float(np.max(np.abs(c - self.jacobi)) / abs(self.jacobi))
 
     def measured_growth(self, positions, velocities) -> float:
-        """|lambda| per period read from the separation of the two particles at the integer periods where it lies in
-        [DEPARTURE_START, DEPARTURE_END]: (d_last / d_first)**(1 / (k_last - k_first)); nan with fewer than two."""
+        """|lambda| per period from the separation d_k of the two particles at the integer periods k:
+        (d_k / offset)**(1 / k) at the last k whose separation is still below DEPARTURE_END (the linear regime)."""
         whole = np.flatnonzero(self.periods == np.round(self.periods))
         orbit = self.rotating(positions[whole], velocities[whole], 2)
         shifted = self.rotating(positions[whole], velocities[whole], 3)
         separation = np.linalg.norm(shifted[:, :3] - orbit[:, :3], axis=-1)
-        window = np.flatnonzero((separation >= DEPARTURE_START) & (separation <= DEPARTURE_END))
-        if window.size < 2:
+        linear = np.flatnonzero(separation <= DEPARTURE_END)
+        if linear.size == 0:
             return math.nan
-        first, last = window[0], window[-1]
-        k = self.periods[whole]
-        return float((separation[last] / separation[first]) ** (1.0 / (k[last] - k[first])))
+        last = linear[-1]
+        return float((separation[last] / self.offset) ** (1.0 / self.periods[whole][last]))
 
 
 def periodic_orbit_problem(orbit, periods: int = 10, offset: float | None = None
@@ -150,7 +151,7 @@ def periodic_scene(name: str, description: str, orbit, periods: int = 10, offset
             rows.append(Measurement(f"closure after {kept} periods: |dr| / size", "", 0.0,
                                     expected.closure(positions, velocities, kept), TOLERANCES["closure_kept"],
                                     "absolute drift"))
-        rows.append(Measurement("period from the x-z plane crossing", "time unit", expected.period,
+        rows.append(Measurement("period from the next crossing of the starting plane", "time unit", expected.period,
                                 expected.measured_period(times, positions, velocities), TOLERANCES["period"],
                                 "relative error"))
         rows.append(Measurement("Jacobi constant", "", expected.jacobi, expected.jacobi_drift(positions, velocities),
