@@ -46,6 +46,8 @@ _METRIC = {"ax": "ax", "ay": "ay", "az": "az", "period": "period", "jacobi": "ja
 _LABEL = {"ax": "Ax", "ay": "Ay", "az": "Az", "period": "T", "jacobi": "C", "closest_approach": "closest approach",
           "resonance": "resonance"}
 DEFAULT_POINT = {"lyapunov": "L1", "halo": "L2", "vertical": "L1", "dro": None, "nrho": "L2"}
+#: how many times a family's first member is taken ten times smaller when a target lies nearer the family's start
+SHRINKS = 3
 #: a family table's largest number of members, and the steps of the walk that finds its extent
 MAX_MEMBERS = 1000
 MAX_WALK = 300
@@ -170,7 +172,9 @@ class _Finder:
         place = cr3bp.origin(self.binary.mu, families.origin(core, point))
         self.flow = shooting.Flow(self.binary.mu, place, shooting.use_compiled(True) if compiled is None else compiled)
         self.measures = families.Measures(self.flow)
-        self.hmap, self.first, self.direction = families.first_member(self.flow, core, point, northern)
+        self.core, self.northern = core, northern
+        self.size = families.start_size(self.binary.mu, core, point)
+        self.hmap, self.first, self.direction = families.first_member(self.flow, core, point, northern, self.size)
 
     def stop(self, member: shooting.Crossing) -> str | None:
         """Why the family ends at `member`: it passes within a primary's radius (None otherwise)."""
@@ -192,11 +196,18 @@ class _Finder:
         if name is None:
             return families.trace(self.hmap, self.measures, self.first, self.direction, stop=self.stop, count=count)
         target = _target(self.binary, self.system, name, value)
-        try:
-            return families.trace(self.hmap, self.measures, self.first, self.direction, _METRIC[name], target,
-                                  self.stop, count)
-        except families.BeyondFamily as err:
-            raise OrbitDomainError(self._beyond(name, value, err)) from None
+        for _ in range(SHRINKS + 1):
+            try:
+                return families.trace(self.hmap, self.measures, self.first, self.direction, _METRIC[name], target,
+                                      self.stop, count)
+            except families.BeyondFamily as err:
+                if not err.behind:
+                    raise OrbitDomainError(self._beyond(name, value, err)) from None
+                last = err
+                self.size *= 0.1  # the target lies nearer the family's start: begin nearer it
+                self.hmap, self.first, self.direction = families.first_member(self.flow, self.core, self.point,
+                                                                              self.northern, self.size)
+        raise OrbitDomainError(self._beyond(name, value, last)) from None
 
     def _beyond(self, name, value, err):
         """The one-line message of a target the family does not reach, in the target's natural unit."""
@@ -633,7 +644,15 @@ def _spaced(finder, followed, last, count, spacing) -> list:
 
         def hold(value):
             return shooting.fixed_jacobi(finder.hmap, value)
-    values = np.linspace(measure(first.u), measure(last.u), count)[1:]
+    along = np.array([measure(m.u) for m in [*followed.members, last]])
+    steps = np.diff(along)
+    if np.any(steps * steps[0] < 0.0):
+        turn = int(np.flatnonzero(steps * steps[0] < 0.0)[0])
+        shown = display.number(along[turn]) if spacing == "jacobi" else display.summary(
+            along[turn] / finder.binary.n * u.s)
+        raise OrbitDomainError(f"the {finder.describe()} family cannot be spaced evenly in {spacing}: it turns back "
+                               f"in {spacing} near {shown} on its way to the last member (space it in arclength)")
+    values = np.linspace(along[0], along[-1], count)[1:]
     walked = continuation.natural_parameter(finder.hmap, first, values, measure, hold, finder.stop)
     if walked.stop is not None:
         raise OrbitDomainError(f"the {finder.describe()} family cannot be spaced evenly in {spacing}: "

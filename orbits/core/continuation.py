@@ -33,6 +33,8 @@ MIN_STEP = 1e-5
 EASY_ITERATIONS = 4
 #: a correction that moves the prediction by more than this many steps has left the family: the step is retried
 JUMP = 0.5
+#: halvings of a natural-parameter step before a turning point is declared
+SUBSTEPS = 8
 #: iterations of the root search for a member with a given monitored value, and its relative tolerance
 SEARCH_ITERATIONS = 60
 SEARCH_TOLERANCE = 1e-13
@@ -163,34 +165,48 @@ def natural_parameter(hmap: shooting.HalfPeriodMap, first: shooting.Crossing, va
                       stop: Callable[[shooting.Crossing], str | None] | None = None) -> Branch:
     """Members with the parameter measure(u) stepped through `values` from `first`, each predicted by extrapolation
     from the last two (the first from the family's tangent) and corrected with hold(value), the condition keeping
-    the parameter at value (orbits.core.shooting.fixed_component, fixed_jacobi). Stops at a value the corrector
-    cannot reach (a turning point of the parameter, which this continuation cannot pass) or where stop(member) gives
-    a reason."""
-    members = [first]
-    t = tangent(first.jacobian)
+    the parameter at value (orbits.core.shooting.fixed_component, fixed_jacobi); a value the corrector cannot reach
+    is approached in halved steps (at most SUBSTEPS halvings). Stops where even those fail (a turning point of the
+    parameter, which this continuation cannot pass) or where stop(member) gives a reason."""
+    members, path = [first], [first]
     eps = 1e-7
+    t = tangent(first.jacobian)
     rate = (measure(first.u + eps * t) - measure(first.u - eps * t)) / (2.0 * eps)
     for value in values:
-        last = members[-1]
-        if len(members) >= 2:
-            span = measure(last.u) - measure(members[-2].u)
-            slope = (last.u - members[-2].u) / span if span != 0.0 else None
-        else:
-            slope = t / rate if rate != 0.0 else None
-        if slope is None or not np.all(np.isfinite(slope)):
-            return Branch(members, [], "the parameter does not change along the family here: it cannot step it")
-        guess = last.u + (value - measure(last.u)) * slope
-        try:
-            member = hmap.correct(guess, hold(value))
-        except ConvergenceError:
-            return Branch(members, [], f"no member with the parameter at {value:.9g} near the last one: the family "
-                                       f"turns back in it (a turning point, which pseudo-arclength continuation "
-                                       f"passes)")
-        reason = stop(member) if stop is not None else None
-        if reason is not None:
-            return Branch(members, [], reason)
-        members.append(member)
+        pending = [value]
+        while pending:
+            goal = pending[-1]
+            member = _natural_step(hmap, path, goal, measure, hold, t, rate)
+            if member is None:
+                if len(pending) > SUBSTEPS:
+                    return Branch(members, [], f"no member with the parameter at {goal:.9g} near the last one: the "
+                                               f"family turns back in it (a turning point, which pseudo-arclength "
+                                               f"continuation passes)")
+                pending.append(0.5 * (measure(path[-1].u) + goal))
+                continue
+            reason = stop(member) if stop is not None else None
+            if reason is not None:
+                return Branch(members, [], reason)
+            path.append(member)
+            pending.pop()
+        members.append(path[-1])
     return Branch(members, [], None)
+
+
+def _natural_step(hmap, members, value, measure, hold, t, rate):
+    """The member with the parameter at value predicted from the last members (None if the corrector fails)."""
+    last = members[-1]
+    if len(members) >= 2:
+        span = measure(last.u) - measure(members[-2].u)
+        slope = (last.u - members[-2].u) / span if span != 0.0 else None
+    else:
+        slope = t / rate if rate != 0.0 else None
+    if slope is None or not np.all(np.isfinite(slope)):
+        return None
+    try:
+        return hmap.correct(last.u + (value - measure(last.u)) * slope, hold(value))
+    except ConvergenceError:
+        return None
 
 
 def locate(hmap: shooting.HalfPeriodMap, member: shooting.Crossing, direction, span: float,
@@ -208,7 +224,7 @@ def locate(hmap: shooting.HalfPeriodMap, member: shooting.Crossing, direction, s
         s = b - fb * (b - a) / (fb - fa)
         best = step_along(hmap, member, direction, s)
         value = monitor(best) - target
-        if abs(value) <= SEARCH_TOLERANCE * max(1.0, abs(target)) or abs(b - a) <= 1e-15 * max(1.0, abs(span)):
+        if abs(value) <= SEARCH_TOLERANCE * abs(target) or abs(b - a) <= 1e-15 * abs(span):
             return best
         if value * fb < 0.0:
             a, fa = b, fb

@@ -65,6 +65,14 @@ def origin(family: str, point: str | None) -> str:
     return "secondary" if family == "dro" else point
 
 
+def start_size(mu: float, family: str, point: str | None) -> float:
+    """The amplitude (units of r) of a family's first member: START_SIZE gamma about a point, DRO_START_SIZE Hill
+    radii about the secondary."""
+    if family == "dro":
+        return DRO_START_SIZE * (mu / 3.0) ** (1.0 / 3.0)
+    return START_SIZE * libration.distance_to_nearer_primary(mu, point)
+
+
 def first_member(flow: shooting.Flow, family: str, point: str | None, northern: bool = True,
                  size: float | None = None) -> tuple[shooting.HalfPeriodMap, shooting.Crossing, np.ndarray]:
     """(the family's half-period map, its corrected first member, the direction of growing amplitude in u), along a
@@ -76,14 +84,14 @@ def first_member(flow: shooting.Flow, family: str, point: str | None, northern: 
     mu = flow.mu
     hmap = shooting.HalfPeriodMap(flow, SYMMETRIES[family])
     direction = np.zeros(len(hmap.symmetry.kept) + 1)
+    size = start_size(mu, family, point) if size is None else size
     if family == "dro":
-        d = DRO_START_SIZE * (mu / 3.0) ** (1.0 / 3.0) if size is None else size
+        d = size
         state = np.array([1.0 - mu - d, 0.0, 0.0, 0.0, math.sqrt(mu / d) + d, 0.0])
         half_period = math.pi / (math.sqrt(mu / d**3) + 1.0)
         direction[0] = -1.0
     else:
-        gamma = libration.distance_to_nearer_primary(mu, point)
-        amplitude = START_SIZE * gamma if size is None else size
+        amplitude = size
         if family == "lyapunov":
             state, half_period = libration.planar_guess(mu, point, amplitude)
             direction[0] = -1.0
@@ -174,10 +182,12 @@ def _polish(flow, times, states, value, derivatives, pick):
 class BeyondFamily(OrbitDomainError):
     """A searched value the family does not reach: `low` to `high` is what its members reached before `reason`."""
 
-    def __init__(self, name: str, target: float, low: float, high: float, reason: str):
+    def __init__(self, name: str, target: float, low: float, high: float, reason: str, behind: bool = False):
         super().__init__(f"{name} = {target:.9g} is beyond the family: its members reach {low:.9g} to {high:.9g} "
                          f"({reason})")
         self.name, self.target, self.low, self.high, self.reason = name, target, low, high, reason
+        #: the target lies on the far side of the first member: a smaller first member may reach it
+        self.behind = behind
 
 
 class Measures:
@@ -212,7 +222,8 @@ def trace(hmap: shooting.HalfPeriodMap, measures: Measures, first: shooting.Cros
           step: float = STEP) -> tuple[continuation.Branch, shooting.Crossing]:
     """(the members followed from `first` along `direction`, the last member): the one with metric `name` = target
     when a target is given, else the last before `stop` gave a reason or `count` members. BeyondFamily names the
-    range reached when the family ends or turns back before the target."""
+    range reached when the family ends or turns back before the target, or (`behind`) when its first step leads
+    away from the target."""
     if name is None:
         branch = continuation.pseudo_arclength(hmap, first, direction, step, count, stop=stop, max_step=MAX_STEP)
         return branch, branch.members[-1]
@@ -227,10 +238,13 @@ def trace(hmap: shooting.HalfPeriodMap, measures: Measures, first: shooting.Cros
 
     def passed(previous, member):
         seen.append(value(member))
-        return (seen[-1] - target) * side >= 0.0
+        return (seen[-1] - target) * side >= 0.0 or (len(seen) == 2 and abs(seen[1] - target) > abs(seen[0] - target))
 
     branch = continuation.pseudo_arclength(hmap, first, direction, step, count, stop=stop, until=passed,
                                            max_step=MAX_STEP)
+    if len(seen) == 2 and len(branch.members) == 2 and (seen[1] - target) * side < 0.0:
+        raise BeyondFamily(name, target, min(seen), max(seen), "the family's first member already lies beyond it",
+                           behind=True)
     reached = seen[: len(branch.members)]
     if len(branch.members) < 2 or (reached[-1] - target) * side < 0.0:
         why = branch.stop or f"no crossing within {count} members"

@@ -19,8 +19,9 @@ R phi_t(x) = phi_-t(R x).
 Multiple shooting. N nodes X_0 ... X_(N-1) along the orbit, arcs of equal duration T / N; the residual is
 phi(X_i, T / N) - X_(i+1) (with X_N = X_0), plus y(X_0) = y_0 (the phase) and either T or C(X_0) held fixed. The
 system has one more equation than its rank (the Jacobi integral makes one periodicity condition redundant), so each
-step is the minimum-norm least-squares solution. It needs no symmetry; the monodromy is the product of the arcs'
-transition matrices.
+step is the minimum-norm least-squares solution, halved until it shrinks the residual (a damped Newton method: the
+arcs through a close approach make the full step overshoot). It needs no symmetry; the monodromy is the product of
+the arcs' transition matrices.
 """
 
 from dataclasses import dataclass, field
@@ -34,8 +35,10 @@ from orbits.core.errors import ConvergenceError
 #: length scale (orbits.core.cr3bp.Origin.scale: 1e-11 of 58,000 km about the Earth-Moon L1 point, of 1.5e6 km
 #: about the Sun-Earth L1 point)
 TOLERANCE = 1e-11
-#: Newton iterations before a correction is given up
+#: Newton iterations before a correction is given up, and the halvings of a multiple-shooting step that does not
+#: shrink the residual
 MAX_ITERATIONS = 25
+HALVINGS = 10
 
 
 @dataclass(frozen=True)
@@ -292,27 +295,38 @@ def multiple_shooting(flow: Flow, nodes, period: float, jacobi: float | None = N
     period = float(period)
     phase = x[0, 1]
     accept, small = flow.origin.scale * TOLERANCE, flow.origin.scale * SMALL_STEP
-    best = None
+    residual, jac, transitions = _shooting_system(flow, x, period, jacobi, phase)
+    size = float(np.max(np.abs(residual)))
+    best = ShotOrbit(x.copy(), period, transitions, size, 0)
     for iteration in range(1, MAX_ITERATIONS + 1):
-        residual, jac, transitions = _shooting_system(flow, x, period, jacobi, phase)
         flow.iterations += 1
-        size = float(np.max(np.abs(residual[: 6 * n])))
-        if not np.isfinite(size):
-            break
-        if best is not None and best.residual <= accept and size >= 0.5 * best.residual:
-            return best
-        best = ShotOrbit(x.copy(), period, transitions, size, iteration)
         step = np.linalg.lstsq(jac, -residual, rcond=None)[0]
         if size <= accept and float(np.max(np.abs(step))) <= small:
             return best
-        x = x + step[: 6 * n].reshape(n, 6)
-        if jacobi is not None:
-            period += float(step[-1])
-    if best is not None and best.residual <= accept:
+        for _ in range(HALVINGS):  # damped: the step is halved until the residual shrinks
+            trial_x = x + step[: 6 * n].reshape(n, 6)
+            trial_period = period + (float(step[-1]) if jacobi is not None else 0.0)
+            try:
+                trial = _shooting_system(flow, trial_x, trial_period, jacobi, phase)
+            except ConvergenceError:
+                trial = None
+            if trial is not None and float(np.max(np.abs(trial[0]))) < size:
+                break
+            step = 0.5 * step
+        else:
+            break
+        x, period = trial_x, trial_period
+        residual, jac, transitions = trial
+        new_size = float(np.max(np.abs(residual)))
+        stalled = new_size >= 0.5 * size and new_size <= accept
+        size = new_size
+        best = ShotOrbit(x.copy(), period, transitions, size, iteration)
+        if stalled or size == 0.0:
+            return best
+    if best.residual <= accept:
         return best
-    last = "nan" if best is None else f"{best.residual:.3g}"
-    raise ConvergenceError(f"multiple shooting did not converge in {MAX_ITERATIONS} iterations (residual {last}, "
-                           f"tolerance {accept:.3g})")
+    raise ConvergenceError(f"multiple shooting did not converge in {MAX_ITERATIONS} iterations (residual "
+                           f"{best.residual:.3g}, tolerance {accept:.3g})")
 
 
 def _shooting_system(flow, x, period, jacobi, phase):
