@@ -653,7 +653,8 @@ def _spaced(finder, followed, last, count, spacing) -> list:
         raise OrbitDomainError(f"the {finder.describe()} family cannot be spaced evenly in {spacing}: it turns back "
                                f"in {spacing} near {shown} on its way to the last member (space it in arclength)")
     values = np.linspace(along[0], along[-1], count)[1:]
-    walked = continuation.natural_parameter(finder.hmap, first, values, measure, hold, finder.stop)
+    neighbour = followed.members[1] if len(followed.members) > 1 else None
+    walked = continuation.natural_parameter(finder.hmap, first, values, measure, hold, finder.stop, neighbour)
     if walked.stop is not None:
         raise OrbitDomainError(f"the {finder.describe()} family cannot be spaced evenly in {spacing}: "
                                f"{walked.stop}")

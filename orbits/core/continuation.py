@@ -34,7 +34,7 @@ EASY_ITERATIONS = 4
 #: a correction that moves the prediction by more than this many steps has left the family: the step is retried
 JUMP = 0.5
 #: halvings of a natural-parameter step before a turning point is declared
-SUBSTEPS = 8
+SUBSTEPS = 6
 #: iterations of the root search for a member with a given monitored value, and its relative tolerance
 SEARCH_ITERATIONS = 60
 SEARCH_TOLERANCE = 1e-13
@@ -162,13 +162,15 @@ def _stuck(member):
 
 def natural_parameter(hmap: shooting.HalfPeriodMap, first: shooting.Crossing, values,
                       measure: Callable[[np.ndarray], float], hold: Callable[[float], Callable],
-                      stop: Callable[[shooting.Crossing], str | None] | None = None) -> Branch:
+                      stop: Callable[[shooting.Crossing], str | None] | None = None,
+                      neighbour: shooting.Crossing | None = None) -> Branch:
     """Members with the parameter measure(u) stepped through `values` from `first`, each predicted by extrapolation
-    from the last two (the first from the family's tangent) and corrected with hold(value), the condition keeping
+    from the last two (the first from `first` and a `neighbour` on the family, else from the family's tangent at
+    `first`) and corrected with hold(value), the condition keeping
     the parameter at value (orbits.core.shooting.fixed_component, fixed_jacobi); a value the corrector cannot reach
     is approached in halved steps (at most SUBSTEPS halvings). Stops where even those fail (a turning point of the
     parameter, which this continuation cannot pass) or where stop(member) gives a reason."""
-    members, path = [first], [first]
+    members, path = [first], [first] if neighbour is None else [neighbour, first]
     eps = 1e-7
     t = tangent(first.jacobian)
     rate = (measure(first.u + eps * t) - measure(first.u - eps * t)) / (2.0 * eps)

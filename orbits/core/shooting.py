@@ -19,11 +19,12 @@ R phi_t(x) = phi_-t(R x).
 Multiple shooting. N nodes X_0 ... X_(N-1) along the orbit, arcs of equal duration T / N; the residual is
 phi(X_i, T / N) - X_(i+1) (with X_N = X_0), plus y(X_0) = y_0 (the phase) and either T or C(X_0) held fixed. The
 system has one more equation than its rank (the Jacobi integral makes one periodicity condition redundant), so each
-step is the minimum-norm least-squares solution, halved until it shrinks the residual (a damped Newton method: the
-arcs through a close approach make the full step overshoot). It needs no symmetry; the monodromy is the product of
-the arcs' transition matrices.
+step is the minimum-norm least-squares solution, halved until it shrinks the residual's 2-norm (a damped Newton
+method: arcs through a close approach make the full step overshoot), for up to twice MAX_ITERATIONS steps. It needs
+no symmetry; the monodromy is the product of the arcs' transition matrices.
 """
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -37,8 +38,10 @@ from orbits.core.errors import ConvergenceError
 TOLERANCE = 1e-11
 #: Newton iterations before a correction is given up, and the halvings of a multiple-shooting step that does not
 #: shrink the residual
-MAX_ITERATIONS = 25
+MAX_ITERATIONS = 15
 HALVINGS = 10
+#: a correction whose residual grows this far above the least it reached is diverging: it is given up at once
+DIVERGED = 1e3
 
 
 @dataclass(frozen=True)
@@ -213,16 +216,17 @@ class HalfPeriodMap:
         """Newton's method on F(u) = 0 and condition(u) = (g, dg/du) = 0 from u; ConvergenceError if it fails."""
         u = np.array(u, dtype=float)
         accept, small = self.flow.origin.scale * TOLERANCE, self.flow.origin.scale * SMALL_STEP
-        best = None
+        best, least = None, math.inf
         for iteration in range(1, MAX_ITERATIONS + 1):
             residual, jac, end, phi = self.evaluate(u)
             self.flow.iterations += 1
             g, dg = condition(u)
             size = float(np.max(np.abs(residual)))
-            if not np.isfinite(size):
+            if not np.isfinite(size) or size > DIVERGED * least:
                 break
             if best is not None and best.residual <= accept and size >= 0.5 * best.residual:
                 return best  # the residual no longer shrinks: the last solution is as good as float64 allows
+            least = min(least, size)
             best = Crossing(u.copy(), self.state(u), end, phi, jac, size, iteration)
             step = np.linalg.solve(np.vstack([jac, dg]), -np.append(residual, g))
             if size <= accept and float(np.max(np.abs(step))) <= small:
@@ -298,7 +302,7 @@ def multiple_shooting(flow: Flow, nodes, period: float, jacobi: float | None = N
     residual, jac, transitions = _shooting_system(flow, x, period, jacobi, phase)
     size = float(np.max(np.abs(residual)))
     best = ShotOrbit(x.copy(), period, transitions, size, 0)
-    for iteration in range(1, MAX_ITERATIONS + 1):
+    for iteration in range(1, 2 * MAX_ITERATIONS + 1):
         flow.iterations += 1
         step = np.linalg.lstsq(jac, -residual, rcond=None)[0]
         if size <= accept and float(np.max(np.abs(step))) <= small:
@@ -310,7 +314,7 @@ def multiple_shooting(flow: Flow, nodes, period: float, jacobi: float | None = N
                 trial = _shooting_system(flow, trial_x, trial_period, jacobi, phase)
             except ConvergenceError:
                 trial = None
-            if trial is not None and float(np.max(np.abs(trial[0]))) < size:
+            if trial is not None and np.linalg.norm(trial[0]) < np.linalg.norm(residual):
                 break
             step = 0.5 * step
         else:
@@ -325,7 +329,7 @@ def multiple_shooting(flow: Flow, nodes, period: float, jacobi: float | None = N
             return best
     if best.residual <= accept:
         return best
-    raise ConvergenceError(f"multiple shooting did not converge in {MAX_ITERATIONS} iterations (residual "
+    raise ConvergenceError(f"multiple shooting did not converge in {2 * MAX_ITERATIONS} iterations (residual "
                            f"{best.residual:.3g}, tolerance {accept:.3g})")
 
 

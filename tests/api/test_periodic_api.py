@@ -153,7 +153,7 @@ def test_quantities_repr_and_html(em):
 def test_a_free_guess_is_corrected_by_multiple_shooting(em):
     """A halo's state a third of a period from its crossing (no symmetry there), 10 km and 1 m/s off, with its
     period: multiple shooting (8 nodes, damped Newton steps) finds the halo again, its Jacobi constant to 1e-12
-    (measured 0) and its stability indices to 1e-12 (measured 5.6e-14)."""
+    (measured 4.4e-16) and its stability indices to 1e-12 (measured 1.5e-13)."""
     halo = PeriodicOrbit.halo(em, "L2", az=20_000 * u.km, branch="southern")
     r, v = halo.states(halo.period / 3)
     orbit = PeriodicOrbit.from_state(em, r + [10.0, 0.0, 0.0] * u.km, v + [0.0, 1.0, 0.0] * u.m / u.s, halo.period)

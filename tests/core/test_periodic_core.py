@@ -236,7 +236,7 @@ def test_natural_parameter_continuation_stops_at_a_turning_point():
         return float(cr3bp.jacobi_constant(flow.barycentric(hmap.state(u)), EARTH_MOON))
 
     start = measure(member.u)
-    branch = continuation.natural_parameter(hmap, member, np.linspace(start, 3.0, 30)[1:], measure,
+    branch = continuation.natural_parameter(hmap, member, np.linspace(start, 3.0, 8)[1:], measure,
                                             lambda value: shooting.fixed_jacobi(hmap, value))
     assert branch.stop is not None and "turns back" in branch.stop
     assert 3.0 < measure(branch.members[-1].u) < 3.03
