@@ -23,6 +23,7 @@ from orbits_cli.commands import (
     orbit,
     pendulum,
     periodic,
+    perturb,
     porkchop,
     precision,
     projectile,
@@ -33,6 +34,7 @@ from orbits_cli.commands import (
     where,
 )
 from orbits_cli.options import displays, reports_errors
+from orbits_cli.pages import document
 
 
 class OneLineErrors(TyperGroup):
@@ -78,6 +80,7 @@ app.command("ring")(reports_errors(displays(ring.command)))
 app.add_typer(escape.app, name="escape")
 app.command("rocket")(reports_errors(displays(rocket.command)))
 app.add_typer(transfer.app, name="transfer")
+app.add_typer(perturb.app, name="perturb")
 app.command("where")(reports_errors(displays(where.command)))
 app.command("lambert")(reports_errors(displays(lambert.command)))
 app.command("porkchop")(reports_errors(displays(porkchop.command)))
@@ -87,6 +90,7 @@ app.command("pendulum")(reports_errors(displays(pendulum.command)))
 app.command("info")(reports_errors(info.command))
 bench_app.command("kepler")(reports_errors(bench.kepler))
 bench_app.command("propagate")(reports_errors(bench.propagate))
+bench_app.command("stm")(reports_errors(bench.stm))
 bench_app.command("api")(reports_errors(bench.api))
 bench_app.command("cli")(reports_errors(bench.cli))
 bench_app.command("validate")(reports_errors(bench.validate))
@@ -94,3 +98,4 @@ bench_app.command("lambert")(reports_errors(bench.lambert))
 bench_app.command("ephemeris")(reports_errors(bench.ephemeris))
 bench_app.command("all")(reports_errors(bench.all_))
 bench_app.command("precision")(reports_errors(precision.command))
+document(app)

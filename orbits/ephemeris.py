@@ -45,7 +45,8 @@ import numpy as np
 from astropy.time import Time
 
 from orbits import display, units
-from orbits.constants import BODIES, SPEED_OF_LIGHT
+from orbits.constants import BODIES, SPEED_OF_LIGHT, body
+from orbits.core import frames
 from orbits.core.errors import OrbitDomainError, UnknownNameError
 from orbits.tables import quantity_table
 
@@ -121,18 +122,26 @@ def point_name(name: str) -> str:
 
 
 def epoch(value: Any, scale: str = "utc") -> Time:
-    """An astropy Time from a Time (any scale), an ISO string or list of them (in `scale` unless the string ends
-    with one), or "J2000" (2000-01-01 12:00 TT)."""
+    """An astropy Time in TDB from a Time (any scale), an ISO string or list of them (in `scale` unless the string
+    ends with one), or "J2000" (2000-01-01 12:00 TT). The conversion to TDB happens here, once: everything after
+    reads the two-part TDB Julian date as it is."""
     if isinstance(value, Time):
-        return value
+        return _in_tdb(value)
     texts = [value] if isinstance(value, str) else list(value)
     if not texts or not all(isinstance(t, str) for t in texts):
         raise OrbitDomainError(f"epoch: {value!r} is neither an astropy Time nor ISO date strings")
     parsed = [_one_epoch(t, scale) for t in texts]
     if isinstance(value, str):
-        return parsed[0]
+        return _in_tdb(parsed[0])
     jd1, jd2 = np.array([tdb_julian_dates(p) for p in parsed]).T  # each through the offline, quiet conversion
     return Time(jd1, jd2, format="jd", scale="tdb")
+
+
+def _in_tdb(when: Time) -> Time:
+    """The same instant(s) as a TDB Time (the Time itself when it is in TDB already)."""
+    if when.scale == "tdb":
+        return when
+    return Time(*tdb_julian_dates(when), format="jd", scale="tdb")
 
 
 @contextlib.contextmanager
@@ -274,14 +283,30 @@ def _builtin_from_ssb(point: str, when: Time) -> tuple[np.ndarray, np.ndarray]:
 def barycentric(point: str, when: Time, source: str = "auto") -> tuple[np.ndarray, np.ndarray]:
     """ICRF position (m) and velocity (m/s) of `point` relative to the solar-system barycentre, float64 arrays
     shaped epoch shape + (3,), from the resolved `source` ("de421" or "builtin")."""
+    return _read([point], when, source)[point]
+
+
+def _read(points: Sequence[str], when: Time, source: str) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Barycentric (r, v) of each distinct point at one epoch from the resolved `source`: the epoch checked against
+    the source's span once, each point read once."""
     if source == "de421":
         jd1, jd2 = tdb_julian_dates(when)
         _require_de421_span(jd1, jd2)
-        return _de421_from_ssb(point, jd1, jd2)
-    return _builtin_from_ssb(point, when)
+        return {point: _de421_from_ssb(point, jd1, jd2) for point in dict.fromkeys(points)}
+    return {point: _builtin_from_ssb(point, when) for point in dict.fromkeys(points)}
 
 
-def _resolve(source: str) -> str:
+def _relative(read: dict, target: str, origin: str, when: Time, source: str) -> "BodyState":
+    """The BodyState of `target` about `origin` from barycentric states already read."""
+    r, v = read[target]
+    if origin != "solar system barycentre":
+        r, v = r - read[origin][0], v - read[origin][1]
+    return BodyState(target, origin, when, r, v, DE421 if source == "de421" else BUILTIN)
+
+
+def resolve_source(source: str) -> str:
+    """The ephemeris that answers for `source` ("auto", "de421" or "builtin"): "de421" or "builtin"; a one-line
+    OrbitDomainError for an unknown source or for DE421 without its extra."""
     if source not in SOURCES:
         raise OrbitDomainError(f"source: {source!r} is not one of {', '.join(SOURCES)}")
     if source == "auto":
@@ -406,20 +431,45 @@ def state(body: str, when: Any, center: str = "Sun", *, source: str = "auto", sc
     Returns a BodyState in ICRF (equatorial J2000), metres and m/s. Accuracy: see the module docstring.
     """
     target, origin = point_name(body), point_name(center)
-    resolved = _resolve(source)
+    resolved = resolve_source(source)
     when = epoch(when, scale)
-    r, v = barycentric(target, when, resolved)
-    if origin != "solar system barycentre":
-        r_center, v_center = barycentric(origin, when, resolved)
-        r -= r_center
-        v -= v_center
-    return BodyState(target, origin, when, r, v, DE421 if resolved == "de421" else BUILTIN)
+    return _relative(_read([target, origin], when, resolved), target, origin, when, resolved)
 
 
 def states(bodies: Sequence[str], when: Any, center: str = "solar system barycentre", *,
            source: str = "auto", scale: str = "utc") -> dict[str, BodyState]:
-    """state() of several bodies relative to one centre at the same epoch(s), by name."""
-    return {point_name(b): state(b, when, center, source=source, scale=scale) for b in bodies}
+    """state() of several bodies relative to one centre at the same epoch(s), by name: the epoch converted and
+    checked once, each body read once."""
+    targets, origin = [point_name(b) for b in bodies], point_name(center)
+    resolved = resolve_source(source)
+    when = epoch(when, scale)
+    read = _read([*targets, origin], when, resolved)
+    return {target: _relative(read, target, origin, when, resolved) for target in targets}
+
+
+@dataclass(frozen=True, eq=False)
+class Osculating:
+    """The two-body problem of a state of a catalogue body about its parent: its position r (m) and velocity v
+    (m/s) in the ecliptic frame of J2000, the GM of the point whose position that is (m3/s2; for Jupiter-Pluto,
+    which DE421 gives as system barycentres, the system's: Body.barycentre_gm) and mu = GM_parent + gm (m3/s2)."""
+
+    r: np.ndarray
+    v: np.ndarray
+    gm: float
+    mu: float
+
+
+def osculating(seen: BodyState) -> Osculating:
+    """The osculating two-body problem through a state already read (state, states) of a catalogue body about its
+    parent (the Sun for a planet, the Earth for the Moon): the one home of what Orbit.from_state and the
+    solar-system picture draw. OrbitDomainError for a state about anything but the body's parent."""
+    target = body(seen.body)
+    if target.parent is None or body(target.parent).name != seen.center:
+        raise OrbitDomainError(f"an orbit needs {seen.body}'s state about its parent "
+                               f"({target.parent or 'none in the catalogue'}), not about {seen.center}")
+    gm = target.barycentre_gm if target.name in SYSTEM_BARYCENTRES else target.gm
+    return Osculating(frames.equatorial_to_ecliptic(seen.r_si), frames.equatorial_to_ecliptic(seen.v_si), gm,
+                      body(target.parent).gm + gm)
 
 
 def points() -> tuple[str, ...]:
@@ -501,6 +551,11 @@ def _angle_between(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 def where(body: str, when: Any, observer: str = "Earth", *, source: str = "auto", scale: str = "utc") -> Sighting:
     """Where `body` is at `when` as seen from `observer`: see Sighting. The body may not be the Sun or the
     observer itself."""
+    target, seer = _sighting_points(body, observer)
+    return sighting(states([target, seer], when, "Sun", source=source, scale=scale), target, seer)
+
+
+def _sighting_points(body: str, observer: str) -> tuple[str, str]:
     target, seer = point_name(body), point_name(observer)
     if target in ("Sun", seer):
         raise OrbitDomainError(f"where: the body ({target}) must differ from the Sun and from the observer ({seer})")
@@ -508,6 +563,22 @@ def where(body: str, when: Any, observer: str = "Earth", *, source: str = "auto"
         raise OrbitDomainError("where: the observer must not be the Sun (elongation and phase angle are measured "
                                "from the Sun's direction); for heliocentric states use ephemeris.state(body, when, "
                                "center='Sun')")
-    when = epoch(when, scale)
-    return Sighting(state(target, when, "Sun", source=source), state(target, when, seer, source=source),
-                    state("Sun", when, seer, source=source))
+    return target, seer
+
+
+def sighting(heliocentric: dict[str, BodyState], body: str, observer: str = "Earth") -> Sighting:
+    """The Sighting of `body` from `observer` out of heliocentric states already read (`states(..., center="Sun")`
+    holding both), without reading the ephemeris again: body - observer and Sun - observer."""
+    target, seer = _sighting_points(body, observer)
+    missing = [p for p in (target, seer) if p not in heliocentric]
+    if missing:
+        raise OrbitDomainError(f"sighting: no heliocentric state of {', '.join(missing)} among "
+                               f"{', '.join(heliocentric)}")
+    body_state, seer_state = heliocentric[target], heliocentric[seer]
+    if body_state.center != "Sun" or seer_state.center != "Sun":
+        raise OrbitDomainError("sighting: the states must be about the Sun (ephemeris.states(..., center='Sun'))")
+    when, source = body_state.epoch, body_state.source
+    return Sighting(body_state,
+                    BodyState(target, seer, when, body_state.r_si - seer_state.r_si,
+                              body_state.v_si - seer_state.v_si, source),
+                    BodyState("Sun", seer, when, -seer_state.r_si, -seer_state.v_si, source))

@@ -16,8 +16,9 @@ import astropy.units as u
 import numpy as np
 
 from orbits import units
-from orbits.constants import BODIES, Body, G, body
-from orbits.core.checks import check_finite, require_magnitude, require_positive
+from orbits.constants import BODIES, STANDARD_GRAVITY, Body, G, body
+from orbits.core import elements
+from orbits.core.checks import check_finite, first_where, require_magnitude, require_positive
 from orbits.core.errors import OrbitDomainError
 
 #: the SI unit of each kind of quantity a string may hold, and a unit to suggest when the unit is missing
@@ -31,6 +32,7 @@ KINDS = {
     "force": (u.N, "kN"),
     "density": (units.KG / units.M**3, "kg/m3"),
     "area": (units.M**2, "m2"),
+    "area per mass": (units.M**2 / units.KG, "m2/kg"),
     "gravitational parameter": (units.M3_PER_S2, "m3 / s2"),
     "rate": (units.S**-1, "km / s / Mpc"),
     "dimensionless": (u.one, ""),
@@ -127,6 +129,25 @@ def find_body(name: str) -> Body | None:
         return None
 
 
+def named_body(primary: Body | str | u.Quantity) -> Body | None:
+    """The catalogue body a primary names (a Body or a body name), or None for a mass or a GM."""
+    if isinstance(primary, str):
+        return body(primary)
+    return primary if isinstance(primary, Body) else None
+
+
+def orbit_radius(primary: Body | str | u.Quantity, value: u.Quantity, name: str) -> np.ndarray:
+    """A circular orbit's radius (m): positive and, about a catalogued body, above its equatorial radius."""
+    r = positive(value, units.M, name)
+    named = named_body(primary)
+    if named is not None and np.any(r <= named.radius):
+        bad, = first_where(r <= named.radius, r)
+        raise OrbitDomainError(
+            f"{name} = {bad!r} m is inside {named.name} (allowed: above its radius {named.radius!r} m); an orbit "
+            f"radius counts from the centre: add the radius to an altitude")
+    return r
+
+
 def gravitational_parameter(value: Body | str | u.Quantity, name: str = "primary mass M") -> np.ndarray:
     """G M (m3/s2) of a mass given as a Body, a body name, a mass (kg) or a GM (m3/s2) Quantity; finite, > 0."""
     if isinstance(value, str):
@@ -152,6 +173,27 @@ def angle(value: u.Quantity, name: str) -> np.ndarray:
     si = units.to_si(value, units.RAD, name)
     check_finite(si, name, "rad")
     return si
+
+
+def position(value: u.Quantity, name: str = "position r") -> np.ndarray:
+    """A position (m, (..., 3)) relative to a primary: a finite vector (`vector`) away from the primary's centre."""
+    r = vector(value, units.M, name)
+    if np.any(np.all(r == 0.0, axis=-1)):
+        raise OrbitDomainError(f"{name} = (0, 0, 0) m coincides with the primary; |r| must be positive")
+    return r
+
+
+def inclination(value: u.Quantity) -> np.ndarray:
+    """Inclination i (rad), finite and in [0, pi]."""
+    return angle_in(value, "inclination i", 0.0, np.pi, "[0, pi]")
+
+
+def true_anomaly(value: u.Quantity, e: np.ndarray) -> np.ndarray:
+    """True anomaly nu (rad) on a conic of (checked) eccentricity e: finite and, on an open conic, strictly
+    between the asymptotes (1 + e cos nu > 0)."""
+    nu = angle(value, "true anomaly nu")
+    elements.require_inside_asymptotes(e, nu)
+    return nu
 
 
 def vector(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
@@ -231,3 +273,52 @@ def names(text: str | None) -> list[str] | None:
     if not listed:
         raise OrbitDomainError(f"names = {text!r}: give at least one comma-separated name")
     return listed
+
+
+# ---- rules of the mechanics objects (collisions, rotation, projectiles, oscillations) -------------------------
+
+
+def gravity(g: u.Quantity | None) -> np.ndarray:
+    """g (m/s2): the standard 9.80665 m/s2 of the notes (XIX.vii) when None, else a positive acceleration."""
+    if g is None:
+        return np.asarray(STANDARD_GRAVITY)
+    return positive(g, units.ACCELERATION, "gravitational acceleration g")
+
+
+def signed(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
+    """float64 array of a Quantity in `unit` (SI) of either sign, checked finite."""
+    si = units.to_si(value, unit, name)
+    check_finite(si, name, unit.to_string())
+    return si
+
+
+def non_negative(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
+    """float64 array of a Quantity in `unit` (SI), checked finite and >= 0."""
+    si = signed(value, unit, name)
+    if np.any(si < 0):
+        bad = float(np.asarray(si)[np.asarray(si) < 0].flat[0])
+        raise OrbitDomainError(f"{name} = {bad!r} {unit.to_string()} is outside the allowed range [0, inf) "
+                               f"{unit.to_string()}")
+    return si
+
+
+def planar_vector(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
+    """float64 array (..., 2) or (..., 3) of a vector Quantity in `unit` (SI), finite: a velocity in a plane or in
+    space (`vector` takes 3-vectors only)."""
+    si = signed(value, unit, name)
+    if si.ndim == 0 or si.shape[-1] not in (2, 3):
+        raise OrbitDomainError(f"{name} must have a last axis of length 2 or 3; got shape {si.shape}")
+    return si
+
+
+def angle_in(value: u.Quantity, name: str, low: float, high: float, text: str) -> np.ndarray:
+    """float64 array of an angle Quantity in rad (`angle`), checked to lie in the range `text` says:
+    "[low, high]", with "(" or ")" for an open end (so "[0, pi/2)" refuses pi/2 itself)."""
+    si = angle(value, name)
+    below = (si <= low) if text.startswith("(") else (si < low)
+    above = (si >= high) if text.endswith(")") else (si > high)
+    bad = below | above
+    if np.any(bad):
+        value = float(np.asarray(si)[bad].flat[0])
+        raise OrbitDomainError(f"{name} = {value!r} rad is outside the allowed range {text} rad")
+    return si

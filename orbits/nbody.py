@@ -66,6 +66,116 @@ def _check_times(times: np.ndarray) -> None:
         )
 
 
+@dataclass(frozen=True)
+class ZonalHarmonics:
+    """Body `source`'s zonal harmonics, felt by every other body: J2, J3 and J4 at the reference radius `radius`
+    (code units), axis of symmetry z, in the potential -(G m / r) [1 - sum_n J_n (R / r)**n P_n(z / r)]. The
+    source feels the reaction -(m_i / m_source) of each body's acceleration, as REBOUNDx's
+    "gravitational_harmonics" effect applies it (that effect has J2 and J4; J3 is a force of the adapter's)."""
+
+    j2: float
+    radius: float
+    j4: float = 0.0
+    source: int = 0
+    j3: float = 0.0
+
+    def check(self, problem: NBodyProblem) -> None:
+        """Raise OrbitDomainError unless the values are finite, R > 0 and the source is a massive body."""
+        _check_force_numbers(self, ("j2", "radius", "j4", "j3"))
+        if not self.radius > 0.0:
+            raise OrbitDomainError(f"ZonalHarmonics.radius = {self.radius!r} must be > 0 (code units)")
+        _check_source(self, problem)
+
+
+@dataclass(frozen=True)
+class ExponentialDrag:
+    """Drag on every test particle relative to body `source`: a = -(1/2) rho(r) B |v| v, with B the particle's
+    C_D A / m and rho(r) B = `reference` exp(-(r - base) / scale_height), r and v relative to the source (an
+    atmosphere that does not turn with the body). Code units: `reference` is rho0 B (1 / length)."""
+
+    reference: float
+    base: float
+    scale_height: float
+    source: int = 0
+
+    def check(self, problem: NBodyProblem) -> None:
+        """Raise OrbitDomainError unless the values are finite and positive, the source massive, and the problem
+        has test particles to slow down."""
+        _check_force_numbers(self, ("reference", "base", "scale_height"))
+        for name in ("reference", "base", "scale_height"):
+            if not getattr(self, name) > 0.0:
+                raise OrbitDomainError(f"ExponentialDrag.{name} = {getattr(self, name)!r} must be > 0 (code units)")
+        _check_source(self, problem)
+        if problem.n_active == problem.n_bodies:
+            raise OrbitDomainError("ExponentialDrag acts on test particles, and this problem has none "
+                                   "(n_active = N)")
+
+
+#: the extra forces an NBodyProblem may list, each realised by both adapters
+FORCES = (ZonalHarmonics, ExponentialDrag)
+
+
+def _check_force_numbers(force, names) -> None:
+    for name in names:
+        value = getattr(force, name)
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.floating)) or not math.isfinite(value):
+            raise OrbitDomainError(f"{type(force).__name__}.{name} = {value!r} must be a finite number")
+
+
+def _check_source(force, problem) -> None:
+    source = force.source
+    if isinstance(source, bool) or not isinstance(source, (int, np.integer)) or not 0 <= source < problem.n_active:
+        raise OrbitDomainError(f"{type(force).__name__}.source = {source!r} must index a massive body, in "
+                               f"[0, n_active = {problem.n_active})")
+
+
+@dataclass(frozen=True, eq=False)
+class Kick:
+    """An impulse: body `body`'s velocity changes by `delta_v` (code units, (3,)) at `time` (code units).
+
+    A kick at an output time acts before that output, so the output shows the kicked state; a kick at t = 0 acts
+    on the initial state.
+    """
+
+    time: float
+    body: int
+    delta_v: np.ndarray
+
+    def __post_init__(self) -> None:
+        """Freeze delta_v as a finite (3,) float64 array and the time as a finite float >= 0."""
+        if isinstance(self.time, bool) or not (math.isfinite(self.time) and self.time >= 0.0):
+            raise OrbitDomainError(f"kick time = {self.time!r} must be a finite number >= 0 (code units)")
+        object.__setattr__(self, "time", float(self.time))
+        object.__setattr__(self, "delta_v", _frozen_float_array("kick delta_v", self.delta_v, (3,)))
+
+
+@dataclass(frozen=True)
+class Arc:
+    """One stretch of a run between impulses: the kicks applied at `start`, then a coast to `end` (code units),
+    with the outputs `outputs` (indices into the problem's times) in [start, end), or [start, end] for the last."""
+
+    start: float
+    end: float
+    kicks: tuple[Kick, ...]
+    outputs: np.ndarray
+
+
+def _check_kicks(kicks: tuple, n_bodies: int, last_time: float) -> tuple[Kick, ...]:
+    """Raise unless every kick is a Kick on a body in [0, N) at a time in [0, last output time], in time order."""
+    kicks = tuple(kicks)
+    for i, kick in enumerate(kicks):
+        if not isinstance(kick, Kick):
+            raise OrbitDomainError(f"kicks[{i}] = {kick!r} is not an orbits.nbody.Kick")
+        if isinstance(kick.body, bool) or not isinstance(kick.body, (int, np.integer)) or not 0 <= kick.body < n_bodies:
+            raise OrbitDomainError(f"kicks[{i}].body = {kick.body!r} must be a body index in [0, N = {n_bodies})")
+        if kick.time > last_time:
+            raise OrbitDomainError(f"kicks[{i}].time = {kick.time!r} is after the last output time {last_time!r}")
+        if i and kick.time < kicks[i - 1].time:
+            raise OrbitDomainError(f"kicks[{i}].time = {kick.time!r} is before kicks[{i - 1}].time = "
+                                   f"{kicks[i - 1].time!r}; list kicks in time order")
+    return kicks
+
+
 @dataclass(frozen=True, eq=False)
 class NBodyProblem:
     """Initial Cartesian state at t = 0 of N point masses (G = 1) and the times at which the state is wanted.
@@ -85,6 +195,10 @@ class NBodyProblem:
     #: in the single-dominant-mass form of Anderson et al. (1975) that REBOUNDx's "gr" effect implements; None for
     #: Newtonian gravity alone
     speed_of_light: float | None = None
+    #: instant velocity changes (impulsive manoeuvres), in time order; each backend coasts between them
+    kicks: tuple[Kick, ...] = ()
+    #: extra forces (FORCES: ZonalHarmonics, ExponentialDrag), each with its parameters in code units
+    forces: tuple = ()
 
     def __post_init__(self) -> None:
         """Validate and freeze every field; raise OrbitDomainError naming the offending value."""
@@ -106,6 +220,7 @@ class NBodyProblem:
         object.__setattr__(self, "velocities", _frozen_float_array("velocities", self.velocities, (n, 3)))
         object.__setattr__(self, "n_active", n_active)
         object.__setattr__(self, "times", times)
+        object.__setattr__(self, "kicks", _check_kicks(self.kicks, n, float(times[-1])))
         if self.speed_of_light is not None:
             c = self.speed_of_light
             if isinstance(c, bool) or not isinstance(c, (int, float, np.floating)) or not (math.isfinite(c) and c > 0):
@@ -114,11 +229,30 @@ class NBodyProblem:
                 raise OrbitDomainError("the post-Newtonian term needs every body massive (n_active = N): "
                                        f"n_active = {n_active}, N = {n}")
             object.__setattr__(self, "speed_of_light", float(c))
+        forces = tuple(self.forces)
+        for force in forces:
+            if not isinstance(force, FORCES):
+                raise OrbitDomainError(f"forces holds {force!r}; each must be one of "
+                                       f"{', '.join(f.__name__ for f in FORCES)}")
+            force.check(self)
+        object.__setattr__(self, "forces", forces)
 
     @property
     def n_bodies(self) -> int:
         """Total number of bodies N, massive and test particles."""
         return self.gm.size
+
+    def arcs(self) -> list[Arc]:
+        """The run split at its kick times; without kicks, one arc from 0 to the last output holding every output."""
+        starts = sorted({0.0, *(kick.time for kick in self.kicks)})
+        last = float(self.times[-1])
+        arcs = []
+        for i, start in enumerate(starts):
+            end = starts[i + 1] if i + 1 < len(starts) else last
+            inside = (self.times >= start) & ((self.times < end) if i + 1 < len(starts) else (self.times <= end))
+            kicks = tuple(kick for kick in self.kicks if kick.time == start)
+            arcs.append(Arc(start, end, kicks, np.flatnonzero(inside)))
+        return arcs
 
 
 @dataclass(frozen=True, eq=False)

@@ -14,16 +14,19 @@ degenerate angles are those of orbits.core.elements.
 from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import astropy.units as u
 import numpy as np
 
 from orbits import display, inputs, units
 from orbits.constants import Body, G, body
-from orbits.core import anomalies, elements, frames, propagate, twobody
+from orbits.core import anomalies, elements, propagate, transition, twobody
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
+
+if TYPE_CHECKING:
+    from orbits.ephemeris import BodyState
 
 #: how a primary is named in error messages
 PRIMARY = "primary mass or gravitational parameter"
@@ -85,17 +88,13 @@ class Orbit(display.Displayed):
         _check_shapes(e=e, a=a, p=p, q=q, inc=inc, raan=raan, argp=argp, nu=nu)
         size = inputs.semi_latus_rectum(e + 0.0, a=a, p=p, q=q)
         angles = [
-            inputs.angle(x, name)
-            for x, name in (
-                (inc, "inclination i"),
-                (raan, "longitude of the ascending node Omega"),
-                (argp, "argument of periapsis omega"),
-                (nu, "true anomaly nu"),
-            )
+            inputs.inclination(inc),
+            inputs.angle(raan, "longitude of the ascending node Omega"),
+            inputs.angle(argp, "argument of periapsis omega"),
+            inputs.true_anomaly(nu, e),
         ]
         mu = inputs.gravitational_parameter(primary, PRIMARY)
-        r, _ = elements.elements_to_state(size, e + 0.0, *angles, mu)  # validates ranges and asymptotes
-        shape = r.shape[:-1]
+        shape = np.broadcast_shapes(*(np.shape(x) for x in (size, e, *angles, mu)))
         # Wrapped before broadcasting: a scalar default (0 deg) is wrapped once, not once per orbit. Arrays
         # computed here are new and kept as they are; the others are copied (they may be views of inputs).
         wrapped = [elements.wrap_two_pi(angles[1]), elements.wrap_two_pi(angles[2]), elements.wrap_pi(angles[3])]
@@ -108,9 +107,10 @@ class Orbit(display.Displayed):
     ) -> "Orbit":
         """Orbit through the state r (length, shape (..., 3)) and v (speed, shape (..., 3))."""
         mu = inputs.gravitational_parameter(primary, PRIMARY)
-        r_si = inputs.vector(r, units.M, "position r")
+        r_si = inputs.position(r)
         v_si = inputs.vector(v, units.M_PER_S, "velocity v")
-        fields = elements.state_to_elements(r_si, v_si, mu)
+        _check_shapes(r=r_si[..., 0], v=v_si[..., 0], mu=mu)
+        fields = elements.state_to_elements_unchecked(r_si, v_si, mu)
         shape = fields[0].shape
         return cls(np.broadcast_to(mu, shape).astype(float), *fields, mass=_mass(mass, shape))
 
@@ -165,12 +165,18 @@ class Orbit(display.Displayed):
 
         if target.parent is None:
             raise OrbitDomainError(f"{target.name} orbits nothing in the catalogue")
-        seen = ephemeris.state(target.name, epoch, center=target.parent, source=source, scale=scale)
-        gm = target.barycentre_gm if target.name in ephemeris.SYSTEM_BARYCENTRES else target.gm
-        mu = (body(target.parent).gm + gm) << units.M3_PER_S2
-        r = frames.equatorial_to_ecliptic(seen.r_si) << units.M
-        v = frames.equatorial_to_ecliptic(seen.v_si) << units.M_PER_S
-        return cls.from_vectors(mu, r, v, mass=gm / G << units.KG)
+        return cls.from_state(ephemeris.state(target.name, epoch, center=target.parent, source=source, scale=scale))
+
+    @classmethod
+    def from_state(cls, seen: "BodyState") -> "Orbit":
+        """The osculating orbit through an ephemeris state (orbits.ephemeris.state) of a catalogue body about its
+        parent, in the ecliptic frame of J2000, mu = G (M_parent + M_body) (the system's mass for a system
+        barycentre), with the body's mass."""
+        from orbits import ephemeris
+
+        problem = ephemeris.osculating(seen)
+        return cls.from_vectors(problem.mu << units.M3_PER_S2, problem.r << units.M, problem.v << units.M_PER_S,
+                                mass=problem.gm / G << units.KG)
 
     # ---- shape ----------------------------------------------------------------------------------
     @property
@@ -335,17 +341,17 @@ class Orbit(display.Displayed):
     @cached_property
     def mean_anomaly(self) -> u.Quantity:
         """M (rad): E - e sin E (ellipse), e sinh H - H (hyperbola), Barker's W (parabola)."""
-        return anomalies.mean_from_true(self.nu, self.e) << units.RAD
+        return anomalies.mean_from_true_unchecked(self.nu, self.e) << units.RAD
 
     @cached_property
     def time_since_periapsis(self) -> u.Quantity:
         """t - T_periapsis = M / n (s), negative before the periapsis passage."""
-        return anomalies.time_since_periapsis(self.nu, self.p, self.e, self.mu) << units.S
+        return anomalies.time_since_periapsis_unchecked(self.nu, self.p, self.e, self.mu) << units.S
 
     # ---- state and vectors (XXI.viii) -----------------------------------------------------------
     @cached_property
     def _state(self):
-        return elements.elements_to_state(self.p, self.e, self.inc, self.raan, self.argp, self.nu, self.mu)
+        return elements.elements_to_state_unchecked(self.p, self.e, self.inc, self.raan, self.argp, self.nu, self.mu)
 
     @cached_property
     def r(self) -> u.Quantity:
@@ -383,11 +389,18 @@ class Orbit(display.Displayed):
         m = self._require_mass("Laplace-Runge-Lenz vector")
         return elements.laplace_runge_lenz_vector(*self._state, self.mu, m) << (units.KG**2 * units.M3_PER_S2)
 
-    def propagate(self, dt: u.Quantity) -> tuple[u.Quantity, u.Quantity]:
-        """State vectors (r, v) a time dt (time Quantity, broadcasting) later, on the same Kepler orbit."""
+    def propagate(self, dt: u.Quantity, stm: bool = False) -> tuple[u.Quantity, ...]:
+        """State vectors (r, v) a time dt (time Quantity, broadcasting) later, on the same Kepler orbit.
+
+        With stm=True also the state-transition matrix Phi = d(r, v) / d(r0, v0), a float array of shape
+        (..., 6, 6) in SI units (blocks: 1, s, 1/s, 1), so that a covariance P0 of (r0 [m], v0 [m/s]) becomes
+        Phi P0 Phi^T (orbits.core.transition.propagate_covariance); within 1e-13 of its norm.
+        """
         dt_si = units.to_si(dt, units.S, "time step dt")
         r, v = propagate.propagate(*self._state, self.mu, dt_si)
-        return r << units.M, v << units.M_PER_S
+        if not stm:
+            return r << units.M, v << units.M_PER_S
+        return r << units.M, v << units.M_PER_S, transition.transition_matrix(*self._state, self.mu, dt_si)
 
     def at(self, dt: u.Quantity) -> "Orbit":
         """The Orbit reached a time dt later (same elements, new true anomaly)."""

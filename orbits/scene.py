@@ -423,11 +423,10 @@ def _state(ctx, spec, where, name, gm, test_particle, built, names):
     angles = [ctx.quantity(orbit.get(k, "0 deg"), "angle", f"{ow}.{k}") for k in ("inc", "raan", "argp", "nu")]
     if not 0 <= angles[0] <= np.pi:
         ctx.fail(f"{ow}.inc", f"{orbit.get('inc')!r} must lie in [0, 180] deg")
-    if e >= 1 and 1 + e * np.cos(angles[3]) <= 0:
-        ctx.fail(f"{ow}.nu", f"{orbit.get('nu')!r} lies on or beyond the asymptote of the e = {e} conic")
+    with ctx.field(f"{ow}.nu"):
+        elements.require_inside_asymptotes(e, angles[3])
     mu = primary.gm + gm
-    with ctx.field(ow):
-        r_rel, v_rel = elements.elements_to_state(p, e, *angles, mu)
+    r_rel, v_rel = elements.elements_to_state_unchecked(p, e, *angles, mu)
     spec_orbit = OrbitSpec(names.index(primary_name), p, e, *angles)
     return BodySpec(name, gm, primary.position + r_rel, primary.velocity + v_rel, test_particle, spec_orbit)
 

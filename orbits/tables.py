@@ -33,3 +33,8 @@ def quantity_table(
             continue
         result.update(value if isinstance(value, dict) else {name: value})
     return result
+
+
+def attribute_table(obj: Any, names: Collection[str], only: Iterable[str] | None) -> dict[str, Any]:
+    """{name: Quantity} of an object's (cached) properties named in `names` (`quantity_table` with getattr)."""
+    return quantity_table(lambda name: getattr(obj, name), names, only)

@@ -19,6 +19,9 @@ M2_PER_S = u.m**2 / u.s
 KG_M2_PER_S = u.kg * u.m**2 / u.s
 RAD_PER_S = u.rad / u.s
 J_PER_KG = u.J / u.kg
+ACCELERATION = u.m / u.s**2
+RATE = u.s**-1
+DIMENSIONLESS = u.one
 
 _EXAMPLE = {
     "m": "7000 * u.km",

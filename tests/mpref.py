@@ -6,9 +6,11 @@ from orbits.tools.reference import (
     kepler_H,
     propagate,
     rel_error,
+    transition_matrix,
     true_from_E,
     true_from_H,
     ulp_error,
 )
 
-__all__ = ["barker_D", "kepler_E", "kepler_H", "propagate", "rel_error", "true_from_E", "true_from_H", "ulp_error"]
+__all__ = ["barker_D", "kepler_E", "kepler_H", "propagate", "rel_error", "transition_matrix", "true_from_E",
+           "true_from_H", "ulp_error"]

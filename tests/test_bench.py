@@ -12,7 +12,9 @@ import numpy as np
 import pytest
 from mpmath import mp
 
-from orbits.tools import bench
+from orbits.tools.bench import api, cli, kepler, propagate, suite, validate
+from orbits.tools.bench.harness import Method
+from orbits.tools.bench.table import WIDTH, rows_to_json
 
 METHODS = [
     "orbits",
@@ -31,7 +33,7 @@ SIZES = dict(n_easy=2000, n_hard=2000, n_hyp=2000, n_ref=50, seed=0, repeats=1)
 
 @pytest.fixture(scope="module")
 def rows():
-    return bench.bench_kepler(**SIZES)
+    return kepler.bench_kepler(**SIZES)
 
 
 def row(rows, method, dataset):
@@ -39,8 +41,13 @@ def row(rows, method, dataset):
     return found
 
 
+LAYOUTS = ["easy, adjacent", "easy, offset 8 B", "easy, padded 64 B"]
+
+
 def test_one_row_per_method_and_dataset(rows):
-    assert [(r.dataset, r.method) for r in rows] == [(d, m) for d in DATASETS for m in METHODS]
+    """Every method on every set, then orbits on the easy set with its arrays end to end in one buffer."""
+    assert [(r.dataset, r.method) for r in rows] == ([(d, m) for d in DATASETS for m in METHODS]
+                                                     + [(layout, "orbits") for layout in LAYOUTS])
     for r in rows:
         assert r.status in ("ok", "skipped", "raised")
         if r.status == "ok":
@@ -69,13 +76,13 @@ def test_absent_peers_are_skipped_with_a_note(rows, method, module):
 
 def test_orbits_is_skipped_only_when_its_module_cannot_be_imported(monkeypatch):
     monkeypatch.setitem(sys.modules, "orbits.core.kepler", None)  # makes the import raise ImportError
-    rows = bench.bench_kepler(**{**SIZES, "n_easy": 10, "n_hard": 10, "n_hyp": 10, "n_ref": 2})
+    rows = kepler.bench_kepler(**{**SIZES, "n_easy": 10, "n_hard": 10, "n_hyp": 10, "n_ref": 2})
     assert all(r.status == "skipped" and "not installed" in r.note for r in rows if r.method == "orbits")
 
 
 def test_rebound_is_timed_per_call_on_a_subset(rows):
     r = row(rows, "rebound.M_to_E", "easy")
-    assert r.n == min(SIZES["n_easy"], bench.PER_CALL_SUBSET) and "per-call" in r.note
+    assert r.n == min(SIZES["n_easy"], kepler.PER_CALL_SUBSET) and "per-call" in r.note
 
 
 def test_heyoka_reports_nans_on_hyperbolic_set(rows):
@@ -110,7 +117,7 @@ HYPERBOLIC_CASES = [(1e-6, 1 + 1e-9), (1e6, 1 + 1e-9), (2.0, 1.5), (1e6, 1e3), (
 
 @pytest.mark.parametrize("M, e", ELLIPTIC_CASES)
 def test_bench_elliptic_reference_agrees_with_mpref(M, e):
-    E, Mr = bench._reference_elliptic(M, e)
+    E, Mr = kepler._reference_elliptic(M, e)
     with mp.workdps(60):
         expected = mpref.kepler_E(M, e)
         assert abs(E - expected) <= mpmath.mpf(10) ** -24 * abs(expected)
@@ -119,7 +126,7 @@ def test_bench_elliptic_reference_agrees_with_mpref(M, e):
 
 @pytest.mark.parametrize("M, e", HYPERBOLIC_CASES)
 def test_bench_hyperbolic_reference_agrees_with_mpref(M, e):
-    H = bench._reference_hyperbolic(M, e)
+    H = kepler._reference_hyperbolic(M, e)
     with mp.workdps(60):
         expected = mpref.kepler_H(M, e)
         assert abs(H - expected) <= mpmath.mpf(10) ** -24 * abs(expected)
@@ -127,12 +134,12 @@ def test_bench_hyperbolic_reference_agrees_with_mpref(M, e):
 
 def test_worst_errors_measures_ulps_and_shifts_revolutions():
     E = float(mpref.kepler_E(4.0, 0.5))
-    refs = [bench._reference_elliptic(4.0, 0.5)] * 2
-    rel, ulp = bench._worst_errors(np.array([E, E + 2 * math.pi]), refs, periodic=True)
+    refs = [kepler._reference_elliptic(4.0, 0.5)] * 2
+    rel, ulp = kepler._worst_errors(np.array([E, E + 2 * math.pi]), refs, periodic=True)
     assert ulp <= 8 and rel <= 8 * 2**-53
-    rel, ulp = bench._worst_errors(np.array([np.nextafter(E, 10.0), math.nan]), refs, periodic=True)
+    rel, ulp = kepler._worst_errors(np.array([np.nextafter(E, 10.0), math.nan]), refs, periodic=True)
     assert 0.5 <= ulp <= 1.5
-    assert math.isnan(bench._worst_errors(np.array([math.nan]), refs, periodic=False)[0])
+    assert math.isnan(kepler._worst_errors(np.array([math.nan]), refs, periodic=False)[0])
 
 
 def table_rows(table):
@@ -142,11 +149,11 @@ def table_rows(table):
 
 
 def test_format_and_json(rows):
-    table = bench.format_rows(rows)
+    table = kepler.format_rows(rows)
     assert table.splitlines()[0].split()[:3] == ["method", "M/s", "ratio"]
     assert all(f"-- {d} --" in table for d in DATASETS)
     assert all(m in table for m in METHODS) and len(table_rows(table)) == len(rows)
-    records = bench.rows_to_json(rows)
+    records = rows_to_json(rows)
     json.dumps(records, allow_nan=False)
     assert records[0].keys() >= {
         "method",
@@ -167,11 +174,11 @@ def test_a_method_that_raises_is_reported_not_fatal(monkeypatch):
     def fail(pair, hyperbolic):
         raise FloatingPointError("no convergence\nsecond line")
 
-    monkeypatch.setattr(bench, "_METHODS", [("failing", lambda: bench._Method("failing", fail))])
-    rows = bench.bench_kepler(n_easy=10, n_hard=10, n_hyp=10, n_ref=2, repeats=1)
+    monkeypatch.setattr(kepler, "_METHODS", [("failing", lambda: Method("failing", fail))])
+    rows = kepler.bench_kepler(n_easy=10, n_hard=10, n_hyp=10, n_ref=2, repeats=1)
     assert [r.status for r in rows] == ["raised"] * 3
     assert rows[0].note == "raised FloatingPointError: no convergence"
-    assert "raised" in bench.format_rows(rows)
+    assert "raised" in kepler.format_rows(rows)
 
 
 def test_orbits_rows_are_exact_on_every_set(rows):
@@ -182,20 +189,20 @@ def test_orbits_rows_are_exact_on_every_set(rows):
 
 
 def test_kepler_table_gives_ratios_to_orbits(rows):
-    table = bench.format_rows(rows)
+    table = kepler.format_rows(rows)
     assert "ratio" in table.splitlines()[0] and "ratio: throughput over that of orbits" in " ".join(table.split())
     orbits = [line.split() for line in table_rows(table) if line.startswith("orbits [")]
-    assert len(orbits) == len(DATASETS) and all(cells[3] == "1.00" for cells in orbits)
+    assert len(orbits) == len(DATASETS) + len(LAYOUTS) and all(cells[3] == "1.00" for cells in orbits)
 
 
 # --- propagation, API, CLI, validation -------------------------------------------------------------
 
-PROPAGATORS = [name for name, _ in bench._PROPAGATORS]
+PROPAGATORS = [name for name, _ in propagate._PROPAGATORS]
 
 
 @pytest.fixture(scope="module")
 def propagate_rows():
-    return bench.bench_propagate(n=3000, n_ref=8, seed=1, repeats=1)
+    return propagate.bench_propagate(n=3000, n_ref=8, seed=1, repeats=1)
 
 
 def test_propagate_has_one_row_per_method_and_set(propagate_rows):
@@ -221,13 +228,13 @@ def test_elliptic_only_peers_give_nan_on_open_orbits(propagate_rows):
 
 
 def test_propagate_table_and_json(propagate_rows):
-    table = bench.format_propagate(propagate_rows)
+    table = propagate.format_propagate(propagate_rows)
     assert len(table_rows(table)) == len(propagate_rows) and "max |dr|/r" in table
-    json.dumps(bench.rows_to_json(propagate_rows), allow_nan=False)
+    json.dumps(rows_to_json(propagate_rows), allow_nan=False)
 
 
 def test_api_rows_compare_the_same_calls():
-    rows = bench.bench_api(sizes=(1, 2000), repeats=1)
+    rows = api.bench_api(sizes=(1, 2000), repeats=1)
     assert [(r.case.split()[0], r.n) for r in rows] == [
         ("Orbit.propagate", 1),
         ("Orbit.from_elements", 1),
@@ -235,22 +242,22 @@ def test_api_rows_compare_the_same_calls():
         ("Orbit.from_elements", 2000),
     ]
     assert all(r.core_seconds > 0 and r.api_seconds > 0 for r in rows)
-    table = bench.format_api(rows)
+    table = api.format_api(rows)
     assert table.splitlines()[0].split()[:2] == ["n", "core"]
     assert all(f"-- {r.case} --" in table for r in rows)
 
 
 def test_cli_rows_time_fresh_processes():
-    rows = bench.bench_cli(runs=2, commands=[(["--help"], 0.2)])
+    rows = cli.bench_cli(runs=2, commands=[(["--help"], 0.2)])
     assert len(rows) == 1  # given commands and no first runs: none of the slow first-ever runs
     assert rows[0].command == "orbits --help" and rows[0].runs == 2 and rows[0].min_seconds <= rows[0].median_seconds
-    assert "0.20" in bench.format_cli(rows)
+    assert "0.20" in cli.format_cli(rows)
 
 
 def test_first_runs_are_timed_against_a_warm_second_run():
     """Each first run gives two rows, first ever and warm; the target of a ratio is that ratio times the warm
     time."""
-    rows = bench.bench_cli(commands=[], first_runs=[(["--help"], None, 1.5)])
+    rows = cli.bench_cli(commands=[], first_runs=[(["--help"], None, 1.5)])
     first, warm = rows
     assert first.command == "orbits --help (first ever: empty kernel cache)" and first.runs == 1
     assert warm.command == "orbits --help (second run, warm cache)" and warm.target_seconds is None
@@ -258,14 +265,14 @@ def test_first_runs_are_timed_against_a_warm_second_run():
 
 
 def test_validate_rows_split_the_time_by_stage():
-    rows = bench.bench_validate(sweep=False)
+    rows = validate.bench_validate(sweep=False)
     scenes = [r for r in rows if r.scene != "all"]
     assert scenes and all({"analytic", "rebound integration", "heyoka setup"} <= r.stages.keys() for r in scenes)
     assert all(abs(sum(r.stages.values()) - r.total_seconds) < 1e-9 for r in scenes)
     # the model scenes' predictions happen when they are built, inside the timing: no stage exceeds the total
     assert all(r.stages["other"] >= 0 for r in scenes), {r.scene: r.stages["other"] for r in scenes}
     assert rows[-1].scene == "all" and rows[-1].total_seconds >= sum(r.total_seconds for r in scenes)
-    lines = bench.format_validate(rows).splitlines()
+    lines = validate.format_validate(rows).splitlines()
     assert all(any(line.startswith(f"{r.scene}  ") for line in lines) for r in rows)
 
 
@@ -279,21 +286,21 @@ def test_all_runs_every_benchmark_and_serialises():
         "cli": {"runs": 1, "commands": [(["--help"], 0.2)]},
         "validate": {"sweep": False},
     }
-    report = bench.bench_all(**tiny)
-    assert list(report) == list(bench.BENCHMARKS)
-    text = bench.format_report(report)
-    assert all(f"== {name} ==" in text for name in bench.BENCHMARKS)
-    json.dumps(bench.report_to_json(report), allow_nan=False)
+    report = suite.bench_all(**tiny)
+    assert list(report) == list(suite.BENCHMARKS)
+    text = suite.format_report(report)
+    assert all(f"== {name} ==" in text for name in suite.BENCHMARKS)
+    json.dumps(suite.report_to_json(report), allow_nan=False)
 
 
 def test_the_ephemeris_bench_reads_what_jplephem_reads():
-    from orbits.tools.bench_ephemeris import bench_ephemeris, format_ephemeris
+    from orbits.tools.bench.ephemeris import bench_ephemeris, format_ephemeris
 
     rows = bench_ephemeris(n=2000, repeats=1)
     timed = [r for r in rows if r.status == "ok"]
     assert [r.name.split()[0] for r in timed] == ["jplephem", "orbits.ephemeris.state", "astropy"]
     assert all(r.dr == 0.0 and r.dv == 0.0 and r.per_second > 0 for r in timed)  # the same file, the same sums
-    assert max(len(line) for line in format_ephemeris(rows).splitlines()) <= bench.WIDTH
+    assert max(len(line) for line in format_ephemeris(rows).splitlines()) <= WIDTH
 
 
 # --- 80-column tables -------------------------------------------------------------------------------
@@ -323,16 +330,16 @@ def _kepler_rows():
     for dataset in ("easy", "hard", "a data set with a long name"):
         for method, note, setup, per_s, rel, ulp, n_nan in methods:
             seconds = 1e6 / per_s
-            rows.append(bench.BenchRow(method, dataset, 10**6, seconds, per_s, rel, ulp, n_nan, "ok", note, setup))
-        rows.append(bench.BenchRow("exoplanet-core", dataset, 0, *nan4, 0, "skipped", LONG_NOTE))
-        rows.append(bench.BenchRow("pykep", dataset, 10, *nan4, 0, "raised", f"raised ValueError: {LONG_NOTE}"))
+            rows.append(kepler.BenchRow(method, dataset, 10**6, seconds, per_s, rel, ulp, n_nan, "ok", note, setup))
+        rows.append(kepler.BenchRow("exoplanet-core", dataset, 0, *nan4, 0, "skipped", LONG_NOTE))
+        rows.append(kepler.BenchRow("pykep", dataset, 10, *nan4, 0, "raised", f"raised ValueError: {LONG_NOTE}"))
     return rows
 
 
 def _propagate_rows():
     return [
-        bench.PropagateRow(r.method, r.dataset, r.n, r.seconds, r.throughput_per_s, r.max_rel_error, r.max_ulp * 1e-3,
-                           r.n_nan, r.status, r.note, r.setup_seconds)
+        propagate.PropagateRow(r.method, r.dataset, r.n, r.seconds, r.throughput_per_s, r.max_rel_error,
+                               r.max_ulp * 1e-3, r.n_nan, r.status, r.note, r.setup_seconds)
         for r in _kepler_rows()
     ]
 
@@ -340,14 +347,14 @@ def _propagate_rows():
 def _api_rows():
     cases = ["Orbit.from_elements vs elements_to_state", "Orbit.propagate of a long batch vs " + LONG_NAME]
     return [
-        bench.ApiRow(case, n, core, core * (1 + f), core * f, f)
+        api.ApiRow(case, n, core, core * (1 + f), core * f, f)
         for n, core, f in ((1, 2.4e-5, 0.796), (100_000, 0.0105, -0.0051), (1_000_000, 0.18296571, 12.3456))
         for case in cases
     ]
 
 
 def _cli_rows():
-    return [bench.CliRow("orbits --help", 10, 0.153, 0.148, 0.2), bench.CliRow(LONG_COMMAND, 10, 1.632, 1.507, None)]
+    return [cli.CliRow("orbits --help", 10, 0.153, 0.148, 0.2), cli.CliRow(LONG_COMMAND, 10, 1.632, 1.507, None)]
 
 
 def _validate_rows():
@@ -356,10 +363,11 @@ def _validate_rows():
     stages.update({f"{b} {stage}": 0.0333 for b in backends for stage in ("setup", "integration")})
     stages["other"] = -0.0025
     scenes = ["binary", "lagrange_beyond_routh", "a_scene_with_a_very_long_name_from_a_user_file"]
-    rows = [bench.ValidateRow(scene, "sequential", stages, 1.473) for scene in scenes]
-    rows.append(bench.ValidateRow("all", "sequential", {}, 8.472))
+    rows = [validate.ValidateRow(scene, "sequential", stages, 1.473) for scene in scenes]
+    rows.append(validate.ValidateRow("all", "sequential", {}, 8.472))
     sweep = {"cluster start": 0.27, "scenes": 4.06}
-    rows += [bench.ValidateRow("all", f"sweep, 2 worker {workers}", sweep, 4.3) for workers in ("threads", "processes")]
+    rows += [validate.ValidateRow("all", f"sweep, 2 worker {workers}", sweep, 4.3)
+             for workers in ("threads", "processes")]
     return rows
 
 
@@ -393,12 +401,12 @@ def test_tables_fit_80_columns_and_cut_nothing(kind):
     assert len(LONG_NAME) > 80 and len(LONG_NOTE) > 80 and len(LONG_COMMAND) > 80  # wider than any column
     report = {name: make() for name, make in REPRESENTATIVE.items()}
     if kind == "all":
-        table, texts = bench.format_report(report), [t for name, rows in report.items() for t in _texts(name, rows)]
+        table, texts = suite.format_report(report), [t for name, rows in report.items() for t in _texts(name, rows)]
     else:
-        table, texts = bench.BENCHMARKS[kind][1](report[kind]), _texts(kind, report[kind])
+        table, texts = suite.BENCHMARKS[kind][1](report[kind]), _texts(kind, report[kind])
     assert isinstance(table, str) and table.strip()
-    too_wide = [line for line in table.splitlines() if len(line) > bench.WIDTH]
-    assert not too_wide and bench.WIDTH == 80, "\n".join(too_wide)
+    too_wide = [line for line in table.splitlines() if len(line) > WIDTH]
+    assert not too_wide and WIDTH == 80, "\n".join(too_wide)
     missing = [text for text in texts if text and not _shown(text, table)]
     assert not missing, (missing, table)
     assert "..." not in table and "\u2026" not in table

@@ -1,11 +1,11 @@
-"""orbits.tools.bench_lambert and `orbits bench lambert` on tiny sizes (orbits' own rows; peers as installed)."""
+"""orbits.tools.bench.lambert and `orbits bench lambert` on tiny sizes (orbits' own rows; peers as installed)."""
 
 import importlib.util
 import json
 
 from typer.testing import CliRunner
 
-from orbits.tools.bench_lambert import bench_lambert, format_lambert, hard_cases
+from orbits.tools.bench.lambert import bench_lambert, format_lambert, hard_cases
 from orbits_cli.main import app
 
 

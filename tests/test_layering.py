@@ -5,7 +5,8 @@ probe wraps to record importer -> imported), never by reading source text.
 Layers, bottom up; a module may import its own layer and the layers below it:
     0 core         orbits.core.*: float64 NumPy; numpy, the standard library and (in the _fast kernels) numba
     1 base         units, constants, inputs (the input rules), nbody, io, tables, display, system
-    2 domain       orbit, kepler, binary, flyby, escape, lagrange, rings, cosmology, scene, predict, plot
+    2 domain       orbit, kepler, binary, flyby, escape, lagrange, rings, cosmology, scene, predict, and the
+                   pictures orbits.plot.* (one module per subject over the shared orbits.plot.frame)
     3 validation   orbits.validate.*
     4 tools        orbits.tools.* (benchmarks, precision sweeps, the mpmath reference, Dask)
     5 interfaces   orbits_cli.*, which calls the public library only: never orbits.core nor a private module
@@ -79,7 +80,7 @@ CORE_MODULES = [
     "anomalies", "binary", "checks", "elements", "errors", "escape", "flyby", "friedmann", "kepler", "lagrange",
     "propagate", "quadrature", "rings", "series", "sphere", "twobody", "_dd", "_roots", "frames", "rocket",
     "manoeuvres", "assist", "collisions", "rotation", "projectile", "oscillations",
-    "lambert",
+    "lambert", "transition", "cr3bp", "dop853", "libration", "shooting", "continuation", "families",
 ]
 
 
@@ -155,9 +156,10 @@ runs = [
     ["binary", "--m1", "Earth", "--m2", "Moon", "--a", "384399 km", "--plot", os.path.join(out, "b.png")],
     ["flyby", "--primary", "Earth", "--v-inf", "1 km/s", "--b", "10000 km", "--plot", os.path.join(out, "f.png")],
     ["lagrange", "Earth", "Moon"],
+    ["periodic", "Earth", "Moon", "--family", "halo", "--point", "L2", "--az", "5000 km"],
     ["ring", "3", "--m", "1 kg", "--r", "1 m"],
     ["escape", "cosmic"],
-    ["where", "Mars", "--epoch", "2026-11-25"],
+    ["where", "Mars", "--epoch", "2026-11-25", "--plot", os.path.join(out, "w.png")],
     ["orbit", "Mars", "--epoch", "2026-11-25 TDB"],
     ["escape", "geo", "Earth"],
     ["rocket", "--m0", "100 t", "--mf", "40 t", "--isp", "300 s", "--thrust", "2 MN"],
@@ -176,6 +178,10 @@ runs = [
 for args in runs:
     result = CliRunner().invoke(app, args)
     assert result.exit_code == 0, (args, result.output)
+
+import astropy.units as u
+
+orbits.Orbit.circular("Earth", 7000 * u.km).plot()  # the picture a domain object draws of itself
 print(json.dumps(sorted(edges)))
 """
 
@@ -190,8 +196,61 @@ def edges():
 def test_the_probe_sees_the_imports_inside_functions(edges):
     """The record is not vacuous: the lazy imports inside commands and adapters are there."""
     assert ("orbits_cli.commands.validate", "orbits.validate") in edges
+    assert ("orbits.orbit", "orbits.plot") in edges  # Orbit.plot draws through the pictures
     assert ("orbits.validate._rebound", "rebound") in edges and ("orbits.validate._heyoka", "heyoka") in edges
     assert any(src.startswith("orbits.core") and dst.startswith("orbits.core") for src, dst in edges)
+
+
+def import_cycles(edges):
+    """The strongly connected components of more than one module in the graph importer -> imported among our own
+    modules (orbits.* and orbits_cli.*, the facade `orbits` aside), each sorted: every one holds an import cycle."""
+    graph = {}
+    for src, dst in edges:
+        if src != dst and all(name.startswith(("orbits.", "orbits_cli")) for name in (src, dst)):
+            graph.setdefault(src, set()).add(dst)
+    index, low, stack, on_stack, components = {}, {}, [], set(), []
+
+    def visit(node):  # Tarjan's algorithm
+        index[node] = low[node] = len(index)
+        stack.append(node)
+        on_stack.add(node)
+        for nxt in graph.get(node, ()):
+            if nxt not in index:
+                visit(nxt)
+                low[node] = min(low[node], low[nxt])
+            elif nxt in on_stack:
+                low[node] = min(low[node], index[nxt])
+        if low[node] == index[node]:
+            component = []
+            while not component or component[-1] != node:
+                component.append(stack.pop())
+                on_stack.discard(component[-1])
+            if len(component) > 1:
+                components.append(sorted(component))
+
+    for node in sorted(graph):
+        if node not in index:
+            visit(node)
+    return sorted(components)
+
+
+def test_import_cycles_are_found():
+    """The cycle finder is not vacuous: a -> b -> c -> a is one cycle, d -> a outside it; the facade is no node."""
+    edges = [("orbits.a", "orbits.b"), ("orbits.b", "orbits.c"), ("orbits.c", "orbits.a"), ("orbits.d", "orbits.a"),
+             ("orbits.e", "orbits"), ("orbits", "orbits.e")]
+    assert import_cycles(edges) == [["orbits.a", "orbits.b", "orbits.c"]]
+
+
+def test_no_module_imports_itself_back(edges):
+    """No import cycle between our modules at run time, function-local imports included: a module never needs,
+    directly or through others, a module that needs it (e.g. a picture importing the object that draws itself)."""
+    assert import_cycles(edges) == []
+
+
+def test_the_picture_frame_imports_no_picture(edges):
+    """orbits.plot.frame is what every picture builds on: it imports no other module of orbits.plot."""
+    assert [(src, dst) for src, dst in edges if src == "orbits.plot.frame" and dst.startswith("orbits.plot")] == []
+    assert ("orbits.plot.conics", "orbits.plot.frame") in edges
 
 
 def test_imports_flow_one_way(edges):
@@ -216,11 +275,46 @@ def test_the_core_imports_numpy_and_the_standard_library_only(edges):
     assert outside == []
 
 
-def test_rebound_and_heyoka_are_imported_by_their_adapters_and_the_benchmarks_only(edges):
-    importers = {src for src, dst in edges if dst.split(".")[0] in ("rebound", "heyoka")}
-    assert importers <= {"orbits.validate._rebound", "orbits.validate._heyoka", "orbits.tools.bench"}
+ADAPTERS = {"orbits.validate._rebound", "orbits.validate._heyoka"}
+
+
+def test_rebound_and_heyoka_are_imported_by_their_adapters_only(edges):
+    importers = {src for src, dst in edges if dst.split(".")[0] in ("rebound", "reboundx", "heyoka")}
+    assert importers <= ADAPTERS
+
+
+def test_no_other_module_holds_an_import_of_rebound_or_heyoka():
+    """Every import statement of the library's source, executed or not (an import inside a benchmark the probe does
+    not run included), names rebound, REBOUNDx or heyoka only in the two adapters."""
+    import ast
+    import pathlib
+
+    import orbits
+
+    root = pathlib.Path(orbits.__file__).parent
+    found = set()
+    for path in root.rglob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text())):
+            names = ([a.name for a in node.names] if isinstance(node, ast.Import)
+                     else [node.module or ""] if isinstance(node, ast.ImportFrom) and not node.level else [])
+            if any(n.split(".")[0] in ("rebound", "reboundx", "heyoka") for n in names):
+                found.add("orbits." + ".".join(path.relative_to(root).with_suffix("").parts))
+    assert found == ADAPTERS
 
 
 def test_the_library_never_imports_the_command_line(edges):
     assert [(src, dst) for src, dst in edges if src.startswith("orbits") and not src.startswith("orbits_cli")
             and dst.startswith("orbits_cli")] == []
+
+
+BENCH = "orbits.tools.bench."
+BENCH_SHARED = {BENCH + "table", BENCH + "harness"}
+
+
+def test_benchmarks_import_the_shared_bench_modules_only(edges):
+    """A benchmark module of orbits.tools.bench imports no other benchmark, only the shared table and harness
+    modules (which import no module of the package); suite, which runs every benchmark, imports them all."""
+    within = [(src, dst) for src, dst in edges if src.startswith(BENCH) and dst.startswith(BENCH)]
+    assert (BENCH + "kepler", BENCH + "table") in within and (BENCH + "suite", BENCH + "kepler") in within
+    assert [(src, dst) for src, dst in within if src != BENCH + "suite" and dst not in BENCH_SHARED] == []
+    assert [(src, dst) for src, dst in within if src in BENCH_SHARED] == []

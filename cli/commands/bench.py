@@ -30,7 +30,8 @@ def kepler(
     fmt: FormatOption = Format.table,
 ) -> None:
     """Kepler solvers: throughput and worst error of orbits and its peers, measured in one run."""
-    from orbits.tools.bench import bench_kepler, format_rows, rows_to_json
+    from orbits.tools.bench.kepler import bench_kepler, format_rows
+    from orbits.tools.bench.table import rows_to_json
 
     rows = bench_kepler(n_easy=easy, n_hard=hard, n_hyp=hyperbolic, n_ref=reference, repeats=repeats)
     _emit(rows_to_json(rows), format_rows(rows), fmt, output)
@@ -44,10 +45,26 @@ def propagate(
     fmt: FormatOption = Format.table,
 ) -> None:
     """Two-body propagation: throughput and worst position and velocity error of orbits and its peers."""
-    from orbits.tools.bench import bench_propagate, format_propagate, rows_to_json
+    from orbits.tools.bench.propagate import bench_propagate, format_propagate
+    from orbits.tools.bench.table import rows_to_json
 
     rows = bench_propagate(n=states, n_ref=reference, repeats=repeats)
     _emit(rows_to_json(rows), format_propagate(rows), fmt, output)
+
+
+def stm(
+    states: Annotated[int, typer.Option(help="states per set (elliptic, mixed conics)")] = 100_000,
+    reference: Annotated[int, typer.Option(help="states per set checked against mpmath")] = 20,
+    repeats: RepeatsOption = 3,
+    output: OutputOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """State-transition matrix d(r, v)/d(r0, v0): time per state and worst error of orbits and pykep."""
+    from orbits.tools.bench.stm import bench_stm, format_stm
+    from orbits.tools.bench.table import rows_to_json
+
+    rows = bench_stm(n=states, n_ref=reference, repeats=repeats)
+    _emit(rows_to_json(rows), format_stm(rows), fmt, output)
 
 
 def api(
@@ -57,7 +74,8 @@ def api(
     fmt: FormatOption = Format.table,
 ) -> None:
     """Unit-aware API: time per call of orbits.Orbit against the float64 core on the same inputs."""
-    from orbits.tools.bench import bench_api, format_api, rows_to_json
+    from orbits.tools.bench.api import bench_api, format_api
+    from orbits.tools.bench.table import rows_to_json
 
     rows = bench_api(sizes=_sizes(sizes), repeats=repeats)
     _emit(rows_to_json(rows), format_api(rows), fmt, output)
@@ -76,7 +94,8 @@ def cli(
     fmt: FormatOption = Format.table,
 ) -> None:
     """Command-line cold start: median wall time of fresh `orbits` processes."""
-    from orbits.tools.bench import bench_cli, format_cli, rows_to_json
+    from orbits.tools.bench.cli import bench_cli, format_cli
+    from orbits.tools.bench.table import rows_to_json
 
     rows = bench_cli(runs=runs)
     _emit(rows_to_json(rows), format_cli(rows), fmt, output)
@@ -88,7 +107,8 @@ def validate(
     fmt: FormatOption = Format.table,
 ) -> None:
     """Validation: where the time of `orbits validate` goes, scene by scene and stage by stage."""
-    from orbits.tools.bench import bench_validate, format_validate, rows_to_json
+    from orbits.tools.bench.table import rows_to_json
+    from orbits.tools.bench.validate import bench_validate, format_validate
 
     rows = bench_validate(sweep=sweep)
     _emit(rows_to_json(rows), format_validate(rows), fmt, output)
@@ -103,8 +123,8 @@ def lambert(
     fmt: FormatOption = Format.table,
 ) -> None:
     """Lambert solvers: throughput, arrival error and hard cases of orbits and its peers, in one run."""
-    from orbits.tools.bench import rows_to_json
-    from orbits.tools.bench_lambert import bench_lambert, format_lambert
+    from orbits.tools.bench.lambert import bench_lambert, format_lambert
+    from orbits.tools.bench.table import rows_to_json
 
     rows = bench_lambert(n=transfers, n_ref=reference, repeats=repeats)
     _emit(rows_to_json(rows), format_lambert(rows), fmt, output)
@@ -117,8 +137,8 @@ def ephemeris(
     fmt: FormatOption = Format.table,
 ) -> None:
     """States of Mars at many epochs from DE421: orbits against jplephem and astropy reading the same file."""
-    from orbits.tools.bench import rows_to_json
-    from orbits.tools.bench_ephemeris import bench_ephemeris, format_ephemeris
+    from orbits.tools.bench.ephemeris import bench_ephemeris, format_ephemeris
+    from orbits.tools.bench.table import rows_to_json
 
     rows = bench_ephemeris(n=epochs, repeats=repeats)
     _emit(rows_to_json(rows), format_ephemeris(rows), fmt, output)
@@ -130,13 +150,14 @@ def all_(
     fmt: FormatOption = Format.table,
 ) -> None:
     """Every benchmark above in one run: one table each, one JSON object {benchmark: rows}."""
-    from orbits.tools.bench import bench_all, format_report, report_to_json
+    from orbits.tools.bench.suite import bench_all, format_report, report_to_json
 
     options = {}
     if quick:
         options = {
             "kepler": {"n_easy": 100_000, "n_hard": 10_000, "n_hyp": 10_000, "n_ref": 200},
             "propagate": {"n": 100_000, "n_ref": 50},
+            "stm": {"n": 10_000, "n_ref": 5},
             "lambert": {"n": 100_000, "n_ref": 50},
             "ephemeris": {"n": 10_000},
             "api": {"sizes": (1, 100_000)},

@@ -25,8 +25,7 @@ def command(
     plot: PlotOption = None,
 ) -> None:
     """Velocities after, centre-of-mass velocity and kinetic energies of a collision (IX.vii-xiii)."""
-    from orbits import inputs
-    from orbits.mechanics import Collision
+    from orbits import Collision, inputs
     from orbits_cli import render
 
     masses = inputs.parse_quantity(m1, "mass", "--m1"), inputs.parse_quantity(m2, "mass", "--m2")
@@ -43,7 +42,7 @@ def command(
         result = Collision.oblique(masses[0], first, masses[1], second, restitution, normal=line)
         title = "Oblique collision"
     if plot:
-        from orbits.mechanics.plots import collision_velocities
+        from orbits.plot import collision_velocities
 
         save_plot(lambda: collision_velocities(result), plot)
     render.emit(f"{title} (e = {restitution:g})", result.quantities(inputs.names(only)), fmt.value)

@@ -69,14 +69,16 @@ def command(
 def at_epoch(body_name: str, epoch: str, source: str, others: list) -> "tuple[Orbit, str, dict[str, str]]":
     """(the body's osculating orbit at `epoch`, title naming the ephemeris that answered and its accuracy, the same
     for the JSON's "about")."""
-    from orbits import Orbit, body, ephemeris
+    from orbits import Orbit, OrbitDomainError, body, ephemeris
 
     if any(x is not None for x in others):
         raise typer.BadParameter(f"with --epoch, {body_name}'s orbit comes from the ephemeris: drop the elements")
     named = body(body_name)
+    if named.parent is None:
+        raise OrbitDomainError(f"{named.name} orbits nothing in the catalogue")
     when = ephemeris.epoch(epoch)
-    orbit = Orbit.from_body(named.name, when, source=source)
     seen = ephemeris.state(named.name, when, named.parent, source=source)
+    orbit = Orbit.from_state(seen)
     title = (f"Osculating orbit of {seen.point} about the {seen.center_point}, {ephemeris.tdb_iso(when)} TDB, "
              f"ecliptic J2000; source: {seen.source}; {seen.accuracy}")
     about = {"body": seen.point, "center": seen.center_point, "epoch_tdb": ephemeris.tdb_iso(when),

@@ -23,8 +23,7 @@ def command(
 ) -> None:
     """Exact large-amplitude period 4 K(sin^2(theta0/2)) / omega0 (XXV.iv), or the vertical circle from the speed
     at the bottom: loops, leaves the circle or swings, with the turning and leaving angles (XXV.vi)."""
-    from orbits import inputs
-    from orbits.mechanics import Pendulum, VerticalCircle
+    from orbits import Pendulum, VerticalCircle, inputs
     from orbits_cli import render
 
     size = inputs.parse_quantity(length, "length", "--length")
@@ -36,7 +35,7 @@ def command(
             raise typer.BadParameter("--rod and --mass go with --bottom-speed (the vertical circle)")
         result = Pendulum.simple(size, inputs.parse_angle(amplitude, "--amplitude"), gravity)
         if plot:
-            from orbits.mechanics.plots import pendulum_periods
+            from orbits.plot import pendulum_periods
 
             save_plot(lambda: pendulum_periods(result), plot)
         render.emit(f"Pendulum of length {length}", result.quantities(inputs.names(only)), fmt.value)
@@ -47,7 +46,7 @@ def command(
     if plot:
         if circle.mass is None:
             raise typer.BadParameter("--plot of a vertical circle draws the normal force: give --mass")
-        from orbits.mechanics.plots import vertical_circle_forces
+        from orbits.plot import vertical_circle_forces
 
         save_plot(lambda: vertical_circle_forces({f"u = {bottom_speed}": circle}), plot)
     render.emit(f"Vertical circle of radius {length}: {circle.regime}", circle.quantities(inputs.names(only)),

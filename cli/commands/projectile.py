@@ -37,8 +37,7 @@ def command(
     plot: PlotOption = None,
 ) -> None:
     """Time of flight, range, apex and landing speed of a projectile (XX.iii-v)."""
-    from orbits import inputs
-    from orbits.mechanics import Projectile
+    from orbits import Projectile, inputs
     from orbits_cli import render
 
     shot = Projectile.launch(
@@ -62,7 +61,7 @@ def command(
         raise typer.BadParameter(f"{', '.join(given) or '--rate and --terminal-speed'}: need --drag linear (--rate) "
                                  f"or --drag quadratic")
     if plot:
-        from orbits.mechanics.plots import projectile_paths
+        from orbits.plot import projectile_paths
 
         save_plot(lambda: projectile_paths({TITLES[drag]: shot}), plot)
     render.emit(f"Projectile, {TITLES[drag]}", shot.quantities(inputs.names(only)), fmt.value)

@@ -36,8 +36,18 @@ def command(
     from orbits import inputs
     from orbits_cli import render
 
-    when = Time.now() if epoch is None else eph.epoch(epoch)
-    sighting = eph.where(body_name, when, observer, source=ephemeris.value)
+    when = eph.epoch(Time.now() if epoch is None else epoch)
+    drawn = {}
+    if plot:
+        from orbits import plot as pictures
+
+        drawn = dict(which=pictures.solar_system_part(body_name), highlight=body_name, observer=observer,
+                     source=ephemeris.value)
+        points = pictures.solar_system_points(**drawn)
+    else:
+        points = []
+    heliocentric = eph.states([body_name, observer, *points], when, "Sun", source=ephemeris.value)  # read once
+    sighting = eph.sighting(heliocentric, body_name, observer)
     seen = sighting.from_observer
     title = (f"{seen.point} seen from {seen.center_point}, {eph.tdb_iso(when)} TDB (geometric, no light-time "
              f"correction); source: {seen.source}; {seen.accuracy}")
@@ -45,8 +55,5 @@ def command(
              "accuracy": seen.accuracy}
     quantities = sighting.quantities(inputs.names(only))
     if plot:
-        from orbits.plot import solar_system, solar_system_part
-
-        save_plot(lambda: solar_system(when, which=solar_system_part(body_name), highlight=body_name,
-                                       observer=observer, source=ephemeris.value), plot)
+        save_plot(lambda: pictures.solar_system(when, **drawn, states=heliocentric), plot)
     render.emit(title, quantities, fmt.value, about=about)

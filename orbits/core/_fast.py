@@ -39,8 +39,9 @@ import numpy as np
 #: Smallest batch worth a second thread: below it the hand-off to the thread pool outweighs the gain.
 PARALLEL_MIN = 1 << 15
 
-#: Modules of orbits/core whose constants and helpers the kernels (orbits/core/_fast*.py) compile in.
-_KERNEL_DEPENDENCIES = ("kepler.py", "propagate.py", "_roots.py", "series.py", "dop853.py")
+#: Modules of orbits/core whose constants the kernels (orbits/core/_fast*.py) compile in.
+_KERNEL_DEPENDENCIES = ("_kepler_shared.py", "_propagate_shared.py", "_lambert_shared.py", "_dop853_shared.py",
+                        "_roots.py", "series.py")
 
 #: Kepler and propagation batches from this size on start the compiled kernels by themselves ("auto" mode); smaller
 #: ones, such as a calculator query, take the NumPy implementation (the same algorithm and accuracy:

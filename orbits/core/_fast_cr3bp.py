@@ -3,7 +3,7 @@ orbits.core.cr3bp.vector_field (states about an Origin), with and without the st
 
 Imported only through orbits.core.shooting, when orbits.core._fast.use lets a correction run compiled. Step for
 step the NumPy version's: the same first step, stages, error norm on the six state components, step-size rule,
-landing on output times and stopping rules, with the coefficients read from orbits.core.dop853. The sums run in
+landing on output times and stopping rules, with the coefficients from orbits.core._dop853_shared. The sums run in
 another order than NumPy's matrix products, so the two agree to rounding (tests/core/test_periodic_core.py), not bit
 for bit. One call integrates a batch of trajectories (the arcs of a multiple-shooting correction), each to its own
 duration; status[i] is 0, or MAX_STEPS_REACHED / STEP_UNDERFLOW for a trajectory the NumPy version would stop with a
@@ -14,8 +14,8 @@ import math
 
 import numpy as np
 
+from orbits.core._dop853_shared import E3, E5, GROW, MAX_STEPS, ORDER, SAFETY, SHRINK, SMALLEST_STEP, A, B
 from orbits.core._fast import jit
-from orbits.core.dop853 import E3, E5, GROW, MAX_STEPS, ORDER, SAFETY, SHRINK, SMALLEST_STEP, A, B
 
 MAX_STEPS_REACHED = 1
 STEP_UNDERFLOW = 2

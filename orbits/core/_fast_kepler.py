@@ -5,78 +5,70 @@ Every kernel has the signature kernel(start, stop, inputs..., out) and returns
 ``invalid * 2**32 + unconverged``: invalid counts inputs outside the domain (the caller then raises the
 NumPy checks' error message), unconverged counts solves that hit the iteration cap (ConvergenceError).
 
-Elliptic solver, in two passes over the batch:
-1. A fixed, branch-free pipeline that LLVM vectorises (AVX2 or AVX-512): exact reduction of M modulo 2 pi,
-   Markley's (1995) starter (|error| <= 2.7e-4 relative on e <= 0.99), one Halley step, one Newton step.
-   sin, x - sin x and 1 - cos x come from Taylor polynomials on [0, 2] and, past x = 2, on pi - x, so
-   the residual (1 - e) x - M + e (x - sin x) is free of cancellation and no libm call blocks the
-   vectoriser. The result is accepted when the last Newton step d satisfies |d| <= 2**-30 x: on
-   [0, pi] the residual is convex with (x f''/ 2 f') <= 1, so the step then leaves an error below
-   2**-58 x before rounding. Elements that fail the test are marked NaN.
-2. The marked elements run the safeguarded Halley iteration of orbits.core._roots from the cubic
-   starter (none of the benchmark's easy, hard or hyperbolic pairs needed it; tests call it directly).
-Measured on the benchmark's 1e6 easy pairs, one thread: 56 M solves/s (84 M/s for pass 1 without the
-reduction of M), against 2.9 M/s for the NumPy implementation and 37-40 M/s for heyoka's kepE cfunc;
-worst error 1.7 ulp over 2.8e4 mixed pairs against mpmath.
-Measured along the way: without numba-level inlining of the helpers LLVM does not vectorise and pass 1
-runs at 3.4 M/s; a loop over the Halley steps, or a chain of ifs for the quadrant of sin and cos,
-stops the vectoriser too (hence the written-out steps and the arithmetic selections).
+Elliptic solver (kepler._elliptic_single_pass), in blocks of _BLOCK elements, each in two vectorised stages
+(AVX2 or AVX-512) whose short dependency chains the CPU overlaps:
+1. Exact reduction of M modulo 2 pi and Markley's (1995) starter, without contraction (the reduction's
+   double-double parts stay exact); the starter's cube root to 2e-5 (_cbrt_rough), below its own 2.8e-4.
+2. With fused multiply-adds: one evaluation of sin x, x - sin x and 1 - cos x from Taylor polynomials on
+   [0, 2] and, past x = 2, on pi - x (no libm call, which would block the vectoriser), and one sixth-order step.
+   Elements whose Newton step exceeds SINGLE_PASS_ACCEPT x are marked NaN.
+Then the safeguarded Halley iteration of orbits.core._roots from the cubic starter on the marked elements
+(none of 1.6e6 random pairs over every e < 1 needed it; tests call it directly). Every loop runs over views with
+range(n): LLVM then vectorises it behind a run-time alias check that distinct arrays pass whatever their
+addresses (a range(start, stop) loop over the whole arrays fell back to scalar code when the output began less
+than 32 bytes after an input). Throughput against heyoka's kepE is in the README's Benchmarks section.
+Measured along the way: without numba-level inlining of the helpers LLVM does not vectorise, and a chain of ifs
+for the quadrant of sin and cos stops the vectoriser too (hence the arithmetic selections); moving the starter
+into the second stage cost a quarter of the speed.
 
-The hyperbolic solver has the same two passes (pass 1: four safeguarded Halley steps on the series
-form, own exp; 26 M/s on the hyperbolic set against 7 M/s in NumPy and 5 M/s for a scalar port using
-libm). Barker's equation is a branch-free closed form (180 M/s against 40 M/s in NumPy).
+The hyperbolic solver has two passes too (the first: four safeguarded Halley steps on the series form, with
+its own exp, vectorised; a port with libm calls ran five times slower). Barker's equation is a branch-free closed
+form.
 """
 
 import math
 
 import numpy as np
 
-from orbits.core import kepler
 from orbits.core._fast import jit
-from orbits.core._fast_math import _cbrt, _cbrt_approx, _cbrt_normal, _exp, _horner, _log_approx, _two_product, _two_sum
+from orbits.core._fast_math import _cbrt, _cbrt_normal, _cbrt_rough, _exp, _horner, _log_approx, _two_product, _two_sum
+from orbits.core._kepler_shared import (
+    COSH_MINUS_ONE,
+    HYPERBOLIC_FIXED_STEPS,
+    INVERSE_TWO_PI,
+    LOG_FORM_LIMIT,
+    MARKLEY_SCALE,
+    MAX_MEAN_ANOMALY,
+    ONE_MINUS_COS,
+    PI_1,
+    PI_2,
+    SERIES_LIMIT,
+    SINGLE_PASS_ACCEPT,
+    SINH_MINUS_X,
+    TINY_MEAN_ANOMALY,
+    TWO_PI_1,
+    TWO_PI_2,
+    TWO_PI_3,
+    X_MINUS_SIN,
+)
 from orbits.core._roots import MAX_ITERATIONS
 
-_TWO_PI_1, _TWO_PI_2, _TWO_PI_3 = kepler.TWO_PI_1, kepler.TWO_PI_2, kepler.TWO_PI_3
-_MAX_M = kepler.MAX_MEAN_ANOMALY
-_TINY = kepler._TINY_MEAN_ANOMALY
-_SERIES_LIMIT = kepler._SERIES_LIMIT
-_LOG_FORM_LIMIT = kepler._LOG_FORM_LIMIT
-_PI_1 = 3.141592653589793  # pi = _PI_1 + _PI_2 to 2**-106
-_PI_2 = 1.2246467991473532e-16
-_ACCEPT = kepler.FIXED_PASS_ACCEPT  # relative Newton step below which pass 1 accepts an element
-assert kepler.HYPERBOLIC_FIXED_STEPS == 4, "_hyperbolic_fixed writes its four steps out"
-_MARKLEY_SCALE = kepler._MARKLEY_SCALE
-_INVERSE_TWO_PI = kepler._INVERSE_TWO_PI
+assert HYPERBOLIC_FIXED_STEPS == 4, "_hyperbolic_fixed writes its four steps out"
 _INVALID = 1 << 32
-
-
-def _alternating_series(first):
-    """Coefficients, highest first, of sum_k (-1)**k x**(2k) / (2k + first)!, k = 0..13."""
-    coefficients, factorial = [], float(math.factorial(first))
-    for k in range(14):
-        coefficients.append((-1.0) ** k / factorial)
-        factorial *= (2 * k + first + 1) * (2 * k + first + 2)
-    return tuple(coefficients[::-1])
-
-
-_X_MINUS_SIN = _alternating_series(3)  # (x - sin x) / x**3
-_ONE_MINUS_COS = _alternating_series(2)  # (1 - cos x) / x**2
-_SINH_MINUS_X = tuple(float(c) for c in kepler._SINH_MINUS_X)  # (sinh x - x) / x**3, highest first
-_COSH_MINUS_ONE = tuple(abs(c) for c in _ONE_MINUS_COS)  # (cosh x - 1) / x**2
 
 
 @jit(inline=True)
 def _reduce(M, M_lo):
     """(hi, lo) = M + M_lo - 2 pi round(M / 2 pi) in [-pi, pi] as a double-double (kepler.reduce_two_pi)."""
-    k = np.rint(M * _INVERSE_TWO_PI)
-    p1, e1 = _two_product(k, _TWO_PI_1)
-    p2, e2 = _two_product(k, _TWO_PI_2)
+    k = np.rint(M * INVERSE_TWO_PI)
+    p1, e1 = _two_product(k, TWO_PI_1)
+    p2, e2 = _two_product(k, TWO_PI_2)
     hi, lo = _two_sum(M - p1, -e1)
     hi, t = _two_sum(hi, -p2)
-    lo = lo + t - e2 - k * _TWO_PI_3 + M_lo
+    lo = lo + t - e2 - k * TWO_PI_3 + M_lo
     hi, lo = _two_sum(hi, lo)
     shift = -1.0 if hi > np.pi else (1.0 if hi < -np.pi else 0.0)
-    hi, t = _two_sum(hi + shift * _TWO_PI_1, shift * _TWO_PI_2)
+    hi, t = _two_sum(hi + shift * TWO_PI_1, shift * TWO_PI_2)
     return _two_sum(hi, lo + t)
 
 
@@ -84,10 +76,10 @@ def _reduce(M, M_lo):
 def _trig(x):
     """(sin x, x - sin x, 1 - cos x) for x in [0, pi], each free of cancellation, no libm call."""
     reflect = x >= 2.0
-    z = (_PI_1 - x) + _PI_2 if reflect else x  # pi - x, exact to rounding of the final sum
+    z = (PI_1 - x) + PI_2 if reflect else x  # pi - x, exact to rounding of the final sum
     z2 = z * z
-    z_minus_sin = z2 * z * _horner(_X_MINUS_SIN, z2)
-    one_minus_cos = z2 * _horner(_ONE_MINUS_COS, z2)
+    z_minus_sin = z2 * z * _horner(X_MINUS_SIN, z2)
+    one_minus_cos = z2 * _horner(ONE_MINUS_COS, z2)
     sin = z - z_minus_sin
     x_minus_sin = x - sin if reflect else z_minus_sin
     return sin, x_minus_sin, (2.0 - one_minus_cos if reflect else one_minus_cos)
@@ -104,36 +96,14 @@ def _elliptic_residual(x, m, m_lo, e, one_minus_e):
 def _markley_starter(m, e):
     """kepler.markley_starter: Markley's (1995, Celest. Mech. 63, 101) starter for E in [0, pi] from m in
     [0, pi], written with two divisions."""
-    alpha = (3.0 * np.pi**2 + 1.6 * np.pi * (np.pi - m) / (1.0 + e)) * _MARKLEY_SCALE
+    alpha = (3.0 * np.pi**2 + 1.6 * np.pi * (np.pi - m) / (1.0 + e)) * MARKLEY_SCALE
     d = 3.0 * (1.0 - e) + alpha * e
     q = 2.0 * alpha * d * (1.0 - e) - m * m
     r = 3.0 * alpha * d * (d - 1.0 + e) * m + m * m * m
-    w = _cbrt_approx(abs(r) + math.sqrt(q * q * q + r * r))
+    w = _cbrt_rough(abs(r) + math.sqrt(q * q * q + r * r))
     w = w * w
     denominator = w * w + w * q + q * q
     return (2.0 * r * w + m * denominator) / (denominator * d)
-
-
-@jit(inline=True)
-def _elliptic_fixed(M, e):
-    """(E or NaN if not certified, 1 if (M, e) is outside the domain else 0): pass 1, branch free."""
-    invalid = not (abs(M) <= _MAX_M and 0.0 <= e < 1.0)
-    e = e + 0.0
-    hi, lo = _reduce(M, 0.0)
-    sign = -1.0 if (hi < 0.0 or (hi == 0.0 and math.copysign(1.0, M) < 0.0)) else 1.0
-    m, m_lo = abs(hi), sign * lo
-    one_minus_e = 1.0 - e
-    upper = min(min(m + e, np.pi), m / one_minus_e)
-    x = min(max(_markley_starter(m, e), m), upper)
-    f, df, d2f = _elliptic_residual(x, m, m_lo, e, one_minus_e)
-    x = min(max(x - 2.0 * f * df / (2.0 * df * df - f * d2f), m), upper)
-    f, df, _ = _elliptic_residual(x, m, m_lo, e, one_minus_e)
-    step = f / df
-    x = min(max(x - step, m), upper)
-    x = x if abs(step) <= _ACCEPT * x else np.nan
-    x = m / one_minus_e if (m < _TINY and e > 0.0) else x
-    x = m if e == 0.0 else x
-    return sign * x, invalid
 
 
 @jit(inline=True)
@@ -157,11 +127,11 @@ def _hyperbolic_trig(x):
     """(sinh x, sinh x - x, cosh x - 1) for x >= 0, free of cancellation and branch free: series below 2,
     one exp (orbits.core._fast_math) above."""
     x2 = x * x
-    series_sinh_minus_x = _horner(_SINH_MINUS_X, x2) * x2 * x
-    series_cosh_minus_one = _horner(_COSH_MINUS_ONE, x2) * x2
+    series_sinh_minus_x = _horner(SINH_MINUS_X, x2) * x2 * x
+    series_cosh_minus_one = _horner(COSH_MINUS_ONE, x2) * x2
     exp = _exp(x)
     sinh = 0.5 * (exp - 1.0 / exp)
-    if x < _SERIES_LIMIT:
+    if x < SERIES_LIMIT:
         return x + series_sinh_minus_x, series_sinh_minus_x, series_cosh_minus_one
     return sinh, sinh - x, 0.5 * (exp + 1.0 / exp) - 1.0
 
@@ -223,17 +193,77 @@ def _elliptic_safeguarded(M, e):
     return sign * _halley(_ELLIPTIC, start, m, upper, m, m_lo, e, one_minus_e)
 
 
+@jit(inline=True)
+def _sixth_order_step(f, f1, s, c, sign):
+    """kepler.sixth_order_step: (the root offset of the Taylor polynomial of order five, the Newton step)."""
+    inverse = 1.0 / f1
+    t = -f * inverse
+    a2, a3 = (0.5 * inverse) * s, (inverse * (1.0 / 6.0)) * c
+    a4, a5 = (sign * (1.0 / 12.0)) * a2, (sign * 0.05) * a3
+    a2_squared = a2 * a2
+    b3 = 2.0 * a2_squared - a3
+    b4 = a2 * (5.0 * a3 - 5.0 * a2_squared) - a4
+    b5 = a2_squared * (14.0 * a2_squared - 21.0 * a3) + (6.0 * a2 * a4 + 3.0 * a3 * a3) - a5
+    return t * (1.0 + t * (-a2 + t * (b3 + t * (b4 + t * b5)))), t
+
+
+@jit
+def _elliptic_reduce_block(M, e, m, m_lo, sign, start):
+    """Stage 1 of the single pass on a block (vectorised, without contraction: the reduction's double-double
+    parts must stay exact): m + m_lo = |M reduced| in [0, pi], its sign and Markley's starter. Returns how many
+    (M, e) are outside the domain."""
+    invalid = 0
+    for j in range(M.size):
+        M_j, e_j = M[j], e[j]
+        invalid += not (abs(M_j) <= MAX_MEAN_ANOMALY and 0.0 <= e_j < 1.0)
+        hi, lo = _reduce(M_j, 0.0)
+        s = -1.0 if (hi < 0.0 or (hi == 0.0 and math.copysign(1.0, M_j) < 0.0)) else 1.0
+        m_j = abs(hi)
+        m[j], m_lo[j], sign[j] = m_j, s * lo, s
+        start[j] = _markley_starter(m_j, e_j + 0.0)
+    return invalid
+
+
+@jit(contract=True)
+def _elliptic_solve_block(e, m, m_lo, sign, start, out):
+    """Stage 2 (vectorised, with fused multiply-adds): one trigonometric evaluation at the starter and the
+    sixth-order step (kepler._elliptic_single_pass); NaN where the step is not certified."""
+    for j in range(out.size):
+        e_j, m_j = e[j] + 0.0, m[j]
+        one_minus_e = 1.0 - e_j
+        upper = min(m_j + e_j, np.pi)  # E - M = e sin E is in [0, e]
+        x = min(max(start[j], m_j), upper)
+        sin, x_minus_sin, one_minus_cos = _trig(x)
+        f = ((one_minus_e * x - m_j) + e_j * x_minus_sin) - m_lo[j]
+        f1 = one_minus_e + e_j * one_minus_cos
+        step, t = _sixth_order_step(f, f1, e_j * sin, e_j * (1.0 - one_minus_cos), -1.0)
+        x = min(max(x + step, m_j), upper) if abs(t) <= SINGLE_PASS_ACCEPT * x else np.nan
+        x = m_j / one_minus_e if (m_j < TINY_MEAN_ANOMALY and e_j > 0.0) else x
+        x = m_j if e_j == 0.0 else x
+        out[j] = sign[j] * x
+
+
+_BLOCK = 1024  # elements per block: the stages' scratch rows stay in the L1 cache
+
+
 @jit
 def elliptic(start, stop, M, e, out):
-    """out[i] = E(M[i], e[i]) for start <= i < stop; returns invalid * 2**32 + unconverged."""
+    """out[i] = E(M[i], e[i]) for start <= i < stop; returns invalid * 2**32 + unconverged. The single pass in two
+    stages per block of _BLOCK elements, then the safeguarded iteration on the elements it leaves NaN. Loops run
+    over views with range(n), which LLVM vectorises with a run-time alias check whatever the arrays' layout."""
+    M, e, out = M[start:stop], e[start:stop], out[start:stop]
+    m, m_lo, sign, starter = np.empty(_BLOCK), np.empty(_BLOCK), np.empty(_BLOCK), np.empty(_BLOCK)
     invalid = 0
-    for i in range(start, stop):
-        out[i], bad = _elliptic_fixed(M[i], e[i])
-        invalid += bad
+    for first in range(0, out.size, _BLOCK):
+        last = min(first + _BLOCK, out.size)
+        size = last - first
+        invalid += _elliptic_reduce_block(M[first:last], e[first:last], m[:size], m_lo[:size], sign[:size],
+                                          starter[:size])
+        _elliptic_solve_block(e[first:last], m[:size], m_lo[:size], sign[:size], starter[:size], out[first:last])
     if invalid:
         return invalid * _INVALID
     unconverged = 0
-    for i in range(start, stop):
+    for i in range(out.size):
         if np.isnan(out[i]):
             out[i] = _elliptic_safeguarded(M[i], e[i])
             unconverged += np.isnan(out[i])
@@ -246,11 +276,11 @@ def _hyperbolic_one(M, e):
     if M == 0.0:
         return 0.0
     em1 = e - 1.0
-    if M < _TINY:
+    if M < TINY_MEAN_ANOMALY:
         return M / em1
     lower = math.asinh(M / e)
     upper_log = lower + math.log(e) - math.log(em1)
-    if lower > _LOG_FORM_LIMIT:
+    if lower > LOG_FORM_LIMIT:
         return _halley(_HYPERBOLIC_LOG, lower, lower, upper_log, M, math.log(0.5 * e), e, em1)
     hi = max(min(min(_cubic_root(em1, e / 6.0, M), M / em1), upper_log), lower)
     start = lower if lower > 3.0 else hi
@@ -299,25 +329,28 @@ def _hyperbolic_fixed(M, e):
     f, df, _ = _residual(_HYPERBOLIC_SERIES, x, M, 0.0, e, em1)
     step = f / df
     polished = x - step if (np.isfinite(x - step) and f != 0) else x
-    certified = done and abs(step) <= 2.0**-40 * x and lower <= _LOG_FORM_LIMIT
+    certified = done and abs(step) <= 2.0**-40 * x and lower <= LOG_FORM_LIMIT
     H = polished if certified else np.nan
-    H = M / em1 if M < _TINY else H
+    H = M / em1 if M < TINY_MEAN_ANOMALY else H
     return 0.0 if M == 0.0 else H
 
 
 @jit
 def hyperbolic(start, stop, M, e, out):
     """out[i] = H(M[i], e[i]); returns invalid * 2**32 + unconverged. Pass 1 (_hyperbolic_fixed) runs
-    on every element, vectorised; pass 2 (the safeguarded iteration) on those it leaves NaN."""
+    on every element, vectorised (over views, with range(n)); pass 2 (the safeguarded iteration) on those it
+    leaves NaN."""
+    M, e, out = M[start:stop], e[start:stop], out[start:stop]
     invalid = 0
-    for i in range(start, stop):
-        invalid += not (np.isfinite(M[i]) and 1.0 < e[i] < np.inf)
-        H = _hyperbolic_fixed(abs(M[i]), e[i])
-        out[i] = -H if math.copysign(1.0, M[i]) < 0.0 else H
+    for i in range(out.size):
+        M_i, e_i = M[i], e[i]
+        invalid += not (np.isfinite(M_i) and 1.0 < e_i < np.inf)
+        H = _hyperbolic_fixed(abs(M_i), e_i)
+        out[i] = -H if math.copysign(1.0, M_i) < 0.0 else H
     if invalid:
         return invalid * _INVALID
     unconverged = 0
-    for i in range(start, stop):
+    for i in range(out.size):
         if np.isnan(out[i]):
             H = _hyperbolic_one(abs(M[i]), e[i])
             out[i] = -H if math.copysign(1.0, M[i]) < 0.0 else H
@@ -345,9 +378,11 @@ def _barker_one(w):
 
 @jit
 def parabolic(start, stop, W, out):
-    """out[i] = D(W[i]), Barker's equation; returns invalid * 2**32."""
+    """out[i] = D(W[i]), Barker's equation; returns invalid * 2**32 (vectorised over views, with range(n))."""
+    W, out = W[start:stop], out[start:stop]
     invalid = 0
-    for i in range(start, stop):
-        invalid += not np.isfinite(W[i])
-        out[i] = math.copysign(_barker_one(abs(W[i])), W[i])
+    for i in range(out.size):
+        W_i = W[i]
+        invalid += not np.isfinite(W_i)
+        out[i] = math.copysign(_barker_one(abs(W_i)), W_i)
     return invalid * _INVALID

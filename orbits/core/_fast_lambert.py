@@ -16,19 +16,18 @@ import math
 
 from orbits.core._fast import jit
 from orbits.core._fast_math import _horner
-from orbits.core.series import factorial_series
+from orbits.core._lambert_shared import (
+    AT_MINIMUM,
+    C3_ELLIPSE,
+    C3_HYPERBOLA,
+    MAX_ITERATIONS,
+    NEAR_MINIMUM,
+    PARABOLA_ZONE,
+    SERIES_LIMIT,
+    STEP_TOLERANCE,
+    ZERO_REVOLUTION_TOLERANCE,
+)
 
-# The constants of orbits.core.lambert, repeated here so that the kernel's cache key (the _fast*.py sources
-# and orbits.core._fast._KERNEL_DEPENDENCIES) covers them; tests/core/test_lambert.py checks they agree.
-MAX_ITERATIONS = 40
-STEP_TOLERANCE = 2.0**-40
-ZERO_REVOLUTION_TOLERANCE = 1e-7
-PARABOLA_ZONE = 1e-3
-NEAR_MINIMUM = 0.1
-AT_MINIMUM = 16 * 2.0**-52
-SERIES_LIMIT = 2.0
-_C3_ELLIPSE = factorial_series(3, -1.0, 12)
-_C3_HYPERBOLA = factorial_series(3, 1.0, 12)
 _NAN = math.nan
 
 
@@ -36,7 +35,7 @@ _NAN = math.nan
 def _c3(z, sin_z, elliptic):
     """(z - sin z) / z**3 (elliptic) or (sinh z - z) / z**3, z >= 0, given sin z or sinh z."""
     if z < SERIES_LIMIT:
-        return _horner(_C3_ELLIPSE, z * z) if elliptic else _horner(_C3_HYPERBOLA, z * z)
+        return _horner(C3_ELLIPSE, z * z) if elliptic else _horner(C3_HYPERBOLA, z * z)
     return ((z - sin_z) if elliptic else (sin_z - z)) / (z * z * z)
 
 

@@ -10,7 +10,8 @@ vectoriser. Accuracy, measured against mpmath on 1e6 points of each range:
 - atan2_approx(y, x) to 2e-8, a starter.
 - log_approx(x), positive normal x: exponent bits plus 2 atanh((m - 1) / (m + 1)) to t**9, |error|
   < 3e-6; only for starting guesses.
-- cbrt_approx(x) 5e-10 relative (division free), cbrt_normal(x) within about 1 ulp (one Halley step more).
+- cbrt_rough(x) 2e-5 and cbrt_approx(x) 5e-10 relative (division free), cbrt_normal(x) within about 1 ulp (one
+  Halley step more).
 """
 
 import math
@@ -67,16 +68,30 @@ def _horner(coefficients, x):
 
 
 @jit(inline=True)
-def _cbrt_approx(x):
-    """Cube root of a positive normal x to about 5e-10 relative (a starter; vectorisable, no libm, no division).
-
-    The inverse cube root z = x**(-1/3) from a guess on the bit pattern (a constant minus a third of the
-    bits, within 3.4 %), three Newton steps z (4 - x z**3) / 3 (divisions cost the vectorised kernels
-    more than multiplications), then x z**2.
-    """
+def _inverse_cbrt_rough(x):
+    """x**(-1/3) for a positive normal x to about 1e-5 relative (vectorisable, no libm, no division): a guess on
+    the bit pattern (a constant minus a third of the bits, within 3.4 %) and two Newton steps z (4 - x z**3) / 3,
+    each squaring the relative error (times 2)."""
     z = _from_bits(np.int64(0x553EF0FF289DD796) - np.int64(np.float64(_bits(x)) * (1.0 / 3.0)))
-    for _ in range(3):
-        z = z * (4.0 - x * z * z * z) * (1.0 / 3.0)
+    z = z * (4.0 - x * z * z * z) * (1.0 / 3.0)
+    return z * (4.0 - x * z * z * z) * (1.0 / 3.0)
+
+
+@jit(inline=True)
+def _cbrt_rough(x):
+    """Cube root of a positive normal x to about 2e-5 relative, x z**2 with z = _inverse_cbrt_rough(x): enough for a
+    starter whose own error is larger (Markley's, 2.8e-4)."""
+    z = _inverse_cbrt_rough(x)
+    return x * z * z
+
+
+@jit(inline=True)
+def _cbrt_approx(x):
+    """Cube root of a positive normal x to about 5e-10 relative (a starter; vectorisable, no libm, no division):
+    _inverse_cbrt_rough and a third Newton step (divisions cost the vectorised kernels more than multiplications),
+    then x z**2."""
+    z = _inverse_cbrt_rough(x)
+    z = z * (4.0 - x * z * z * z) * (1.0 / 3.0)
     return x * z * z
 
 

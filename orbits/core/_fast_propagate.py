@@ -31,7 +31,6 @@ import math
 
 import numpy as np
 
-from orbits.core import kepler
 from orbits.core._fast import jit
 from orbits.core._fast_kepler import _INVALID, _halley_step, _markley_starter, _reduce, _trig
 from orbits.core._fast_math import (
@@ -45,23 +44,19 @@ from orbits.core._fast_math import (
     _two_product,
     _two_sum,
 )
-from orbits.core._roots import MAX_ITERATIONS
-from orbits.core.kepler import MAX_MEAN_ANOMALY, TWO_PI_1, TWO_PI_2
-from orbits.core.propagate import (
+from orbits.core._kepler_shared import MAX_MEAN_ANOMALY, SINH_MINUS_X, TWO_PI_1, TWO_PI_2, X_MINUS_SIN
+from orbits.core._propagate_shared import (
     BRACKET_DOUBLINGS,
     BRACKET_WIDTH,
+    C2_SERIES,
+    C3_SERIES,
     ELLIPTIC_ERROR,
     ELLIPTIC_STEP,
     FIXED_STEPS,
     SERIES_LIMIT,
     SMALLEST_MEAN_MOTION_SQUARED,
 )
-from orbits.core.propagate import C2_SERIES as _C2_SERIES
-from orbits.core.propagate import C3_SERIES as _C3_SERIES
-
-_X_MINUS_SIN = tuple(float(c) for c in kepler._X_MINUS_SIN)  # (x - sin x) / x**3 in powers of x**2
-_SINH_MINUS_X = tuple(float(c) for c in kepler._SINH_MINUS_X)
-
+from orbits.core._roots import MAX_ITERATIONS
 
 # --- double-double arithmetic (orbits.core._dd), on scalars ---------------------------------------
 
@@ -124,8 +119,8 @@ def _dd_dot(ax, ay, az, bx, by, bz):
 
 @jit(inline=True)
 def _reduce_by_periods(rx, ry, rz, vx, vy, vz, mu, dt):
-    """(dt - k P with k = round(dt / P) on ellipses, dt on open orbits; alpha = 2 / r - v**2 / mu [1/m]),
-    both from double-double arithmetic (propagate._reduce_by_periods)."""
+    """(dt - k P with k = round(dt / P) on ellipses, dt on open orbits; alpha = 2 / r - v**2 / mu [1/m]; k; P),
+    from double-double arithmetic (propagate._reduce_by_periods)."""
     r2_hi, r2_lo = _dd_dot(rx, ry, rz, rx, ry, rz)
     r_hi, r_lo = _dd_sqrt(r2_hi, r2_lo)
     v2_hi, v2_lo = _dd_dot(vx, vy, vz, vx, vy, vz)
@@ -143,7 +138,7 @@ def _reduce_by_periods(rx, ry, rz, vx, vy, vz, mu, dt):
     turns = np.rint(dt / p_hi)
     q_hi, q_lo = _two_product(turns, p_hi)
     hi, lo = _dd_add(dt, 0.0, -q_hi, -(q_lo + turns * p_lo))
-    return (hi + lo if bound else dt), alpha
+    return (hi + lo if bound else dt), alpha, (turns if bound else 0.0), (p_hi if bound else np.nan)
 
 
 # --- Stumpff functions and the universal Kepler equation -----------------------------------------
@@ -154,17 +149,17 @@ def _stumpff(z):
     """propagate.stumpff, branch free: series for |z| <= 1, else sin and cos (z > 1) or exp (z < -1) of
     s = sqrt(|z|) from orbits.core._fast_math, in the same formulas; overflows to inf beyond z = -5e5.
     Returns (c0, c1, c2, c3, exp sqrt(max(-z, 1)), its inverse): the hyperbolic terms reuse the exponential."""
-    c2_series, c3_series = _horner(_C2_SERIES, z), _horner(_C3_SERIES, z)
+    c2_series, c3_series = _horner(C2_SERIES, z), _horner(C3_SERIES, z)
     s = math.sqrt(max(z, 1.0))
     sin, cos = _sin_cos(s)
     one_minus_cos = sin * sin / (1.0 + cos) if cos > 0.0 else 1.0 - cos
-    s_minus_sin = s * s * s * _horner(_X_MINUS_SIN, z) if s < SERIES_LIMIT else s - sin
+    s_minus_sin = s * s * s * _horner(X_MINUS_SIN, z) if s < SERIES_LIMIT else s - sin
     t = math.sqrt(max(-z, 1.0))
     exp = _exp(t)
     inverse = 1.0 / exp
     sinh, cosh = 0.5 * (exp - inverse), 0.5 * (exp + inverse)
     cosh_minus_one = sinh * ((1.0 - inverse) / (1.0 + inverse))
-    sinh_minus_t = t * t * t * _horner(_SINH_MINUS_X, -z) if t < SERIES_LIMIT else sinh - t
+    sinh_minus_t = t * t * t * _horner(SINH_MINUS_X, -z) if t < SERIES_LIMIT else sinh - t
     if abs(z) <= 1.0:
         return 1.0 - z * c2_series, 1.0 - z * c3_series, c2_series, c3_series, exp, inverse
     if z > 0.0:
@@ -323,8 +318,8 @@ def _fixed_step(x, lo, hi, tau, r0, sigma0, alpha, grow, decay):
 @jit(inline=True)
 def _scaled(rx, ry, rz, vx, vy, vz, mu, dt):
     """The scaled problem (|r0| = 1, mu = 1, dt reduced and made positive by time reversal):
-    (length, speed, back, x, y, z, u, v, w, tau, r0, sigma0, alpha, reduced dt)."""
-    dt, alpha_si = _reduce_by_periods(rx, ry, rz, vx, vy, vz, mu, dt)
+    (length, speed, back, x, y, z, u, v, w, tau, r0, sigma0, alpha, reduced dt, periods taken off, period)."""
+    dt, alpha_si, turns, period = _reduce_by_periods(rx, ry, rz, vx, vy, vz, mu, dt)
     length = math.sqrt(rx * rx + ry * ry + rz * rz)
     speed = math.sqrt(mu / length)
     x, y, z = rx / length, ry / length, rz / length
@@ -334,7 +329,7 @@ def _scaled(rx, ry, rz, vx, vy, vz, mu, dt):
     alpha = alpha_si * length  # not 2 / r0 - |w|**2, whose cancellation near e = 1 costs digits
     back = -1.0 if tau < 0.0 else 1.0
     u, v, w, tau = back * u, back * v, back * w, abs(tau)
-    return length, speed, back, x, y, z, u, v, w, tau, r0, x * u + y * v + z * w, alpha, dt
+    return length, speed, back, x, y, z, u, v, w, tau, r0, x * u + y * v + z * w, alpha, dt, turns, period
 
 
 @jit(inline=True)
@@ -363,7 +358,7 @@ def _valid(rx, ry, rz, vx, vy, vz, mu, dt):
 @jit(inline=True)
 def _state_at(chi, scaled):
     """(r, v) as six floats from the Lagrange f and g at chi, as propagate._lagrange; NaN where chi is NaN."""
-    length, speed, back, x, y, z, u, v, w, tau, r0, sigma0, alpha, dt = scaled
+    length, speed, back, x, y, z, u, v, w, tau, r0, sigma0, alpha, dt, _, _ = scaled
     grow, decay = _coefficients(scaled)
     g0, g1, g2, g3, e_sinh, e_cosh = _g_functions(chi, alpha, grow, decay)
     inverse, _, inverse_15 = _inverse_powers(alpha)

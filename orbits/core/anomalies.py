@@ -5,13 +5,15 @@ Float64 arrays, radians, broadcasting. Conventions:
 - hyperbolic (e > 1): M = e sinh H - H, tan(nu/2) = sqrt((e+1)/(e-1)) tanh(H/2); |nu| < arccos(-1/e);
 - parabolic (e = 1): D = tan(nu/2), Barker's W = D + D**3 / 3 plays the part of M; |nu| < pi.
 The mixed-conic functions (mean_from_true, true_from_mean, time_since_periapsis) choose the branch
-per element from e.
+per element from e. Each checks its inputs (check_true_anomalies, check_eccentricities) for direct callers; the
+unit-aware API, which has checked them where they entered, calls the `_unchecked` twins.
 """
 
 import numpy as np
 from numpy.typing import ArrayLike
 
 from orbits.core.checks import check_finite
+from orbits.core.elements import require_inside_asymptotes
 from orbits.core.errors import OrbitDomainError
 from orbits.core.kepler import (
     eccentric_anomaly,
@@ -53,7 +55,12 @@ def true_from_hyperbolic(H: ArrayLike, e: ArrayLike) -> float | np.ndarray:
 def hyperbolic_from_true(nu: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     """H = 2 atanh(sqrt((e-1)/(e+1)) tan(nu/2)) (rad), e > 1 and 1 + e cos nu > 0."""
     nu, e = _as_arrays(nu, e)
-    _check_inside_asymptotes(nu, e)
+    check_finite(nu, "true anomaly nu", "rad")
+    require_inside_asymptotes(e, nu)
+    return _hyperbolic_from_true(nu, e)
+
+
+def _hyperbolic_from_true(nu, e):
     t = np.sqrt(e - 1.0) * np.sin(0.5 * nu) / (np.sqrt(e + 1.0) * np.cos(0.5 * nu))
     return 2.0 * np.arctanh(t)
 
@@ -73,51 +80,57 @@ def parabolic_from_true(nu: ArrayLike) -> float | np.ndarray:
     """D = tan(nu/2) for |nu| < pi; nu = +/-pi lies at infinite distance and is rejected."""
     nu = np.asarray(nu, dtype=float)
     check_finite(nu, "true anomaly nu", "rad")
+    _require_finite_on_parabola(nu)
+    return np.tan(0.5 * nu)
+
+
+def _require_finite_on_parabola(nu):
     if np.any(np.abs(nu) >= np.pi):
         bad = nu[np.abs(nu) >= np.pi].flat[0]
         raise OrbitDomainError(
             f"true anomaly nu = {float(bad)!r} rad lies at infinite distance on a parabola; allowed |nu| < pi rad"
         )
-    return np.tan(0.5 * nu)
 
 
-def _check_inside_asymptotes(nu, e):
-    """Reject hyperbolic true anomalies on or beyond the asymptotes (1 + e cos nu <= 0)."""
-    check_finite(nu, "true anomaly nu", "rad")
-    outside = (e > 1.0) & (1.0 + e * np.cos(nu) <= 0.0)
-    if np.any(outside):
-        i = np.argwhere(outside)[0]
-        bad_nu, bad_e = nu[tuple(i)], e[tuple(i)]
-        limit = np.arccos(-1.0 / bad_e)
-        raise OrbitDomainError(
-            f"true anomaly nu = {float(bad_nu)!r} rad lies on or beyond the asymptote of a hyperbola with "
-            f"e = {float(bad_e)!r}; allowed |nu| < arccos(-1/e) = {float(limit)!r} rad"
-        )
-
-
-def _check_eccentricity_nonnegative(e):
+def check_eccentricities(e: np.ndarray) -> None:
+    """Raise unless every e is finite and >= 0."""
     check_finite(e, "eccentricity e", "(dimensionless)")
     if np.any(e < 0):
         raise OrbitDomainError(f"eccentricity e = {float(e[e < 0].flat[0])!r} is negative; allowed e >= 0")
 
 
+def check_true_anomalies(nu: np.ndarray, e: np.ndarray) -> None:
+    """Raise unless e is finite and >= 0 and nu is a finite point of its conic: |nu| < pi on a parabola, inside
+    the asymptotes of a hyperbola (arrays of one shape)."""
+    check_eccentricities(e)
+    check_finite(nu, "true anomaly nu", "rad")
+    _require_finite_on_parabola(nu[e == 1.0])
+    require_inside_asymptotes(e, nu)
+
+
 def mean_from_true(nu: ArrayLike, e: ArrayLike) -> np.ndarray:
     """Mean anomaly from the true anomaly for any conic: M (e != 1, rad) or Barker's W (e = 1)."""
     nu, e = _as_arrays(nu, e)
-    _check_eccentricity_nonnegative(e)
+    check_true_anomalies(nu, e)
+    return mean_from_true_unchecked(nu, e)
+
+
+def mean_from_true_unchecked(nu: ArrayLike, e: ArrayLike) -> np.ndarray:
+    """mean_from_true for inputs that passed check_true_anomalies."""
+    nu, e = _as_arrays(nu, e)
     out = np.empty_like(nu)
     ell, par, hyp = e < 1.0, e == 1.0, e > 1.0
     out[ell] = mean_from_eccentric(eccentric_from_true(nu[ell], e[ell]), e[ell])
-    d = parabolic_from_true(nu[par])
+    d = np.tan(0.5 * nu[par])
     out[par] = d + d**3 / 3.0
-    out[hyp] = mean_from_hyperbolic(hyperbolic_from_true(nu[hyp], e[hyp]), e[hyp])
+    out[hyp] = mean_from_hyperbolic(_hyperbolic_from_true(nu[hyp], e[hyp]), e[hyp])
     return out
 
 
 def true_from_mean(M: ArrayLike, e: ArrayLike) -> np.ndarray:
     """True anomaly (rad) from the mean anomaly M (e != 1) or Barker's W (e = 1), for any conic."""
     M, e = _as_arrays(M, e)
-    _check_eccentricity_nonnegative(e)
+    check_eccentricities(e)
     out = np.empty_like(M)
     ell, par, hyp = e < 1.0, e == 1.0, e > 1.0
     out[ell] = true_from_eccentric(eccentric_anomaly(M[ell], e[ell]), e[ell])
@@ -141,7 +154,6 @@ def time_since_periapsis(nu: ArrayLike, p: ArrayLike, e: ArrayLike, mu: ArrayLik
     return mean_from_true(nu, e) / mean_motion(p, e, mu)
 
 
-def true_at_time(t: ArrayLike, p: ArrayLike, e: ArrayLike, mu: ArrayLike) -> np.ndarray:
-    """True anomaly (rad) reached t seconds after periapsis passage, for any conic."""
-    t, p, e, mu = _as_arrays(t, p, e, mu)
-    return true_from_mean(mean_motion(p, e, mu) * t, e)
+def time_since_periapsis_unchecked(nu: ArrayLike, p: ArrayLike, e: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
+    """time_since_periapsis for inputs that passed check_true_anomalies."""
+    return mean_from_true_unchecked(nu, e) / mean_motion(p, e, mu)

@@ -106,7 +106,16 @@ def state_to_elements(
     Returns a tuple of arrays with the broadcast batch shape. Conventions: see the module docstring.
     Raises DegenerateOrbitError for radial states (r x v = 0).
     """
-    r, v, mu = check_state(r, v, mu)
+    return state_to_elements_unchecked(*check_state(r, v, mu))
+
+
+def state_to_elements_unchecked(
+    r: ArrayLike, v: ArrayLike, mu: ArrayLike
+) -> tuple[float | np.ndarray, float | np.ndarray, float | np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """state_to_elements for a state that passed check_state's rules (finite, |r| > 0, mu > 0), broadcast here."""
+    r, v, mu = (np.asarray(x, dtype=float) for x in (r, v, mu))
+    shape = np.broadcast_shapes(r.shape, v.shape, mu.shape + (1,))
+    r, v, mu = np.broadcast_to(r, shape), np.broadcast_to(v, shape), np.broadcast_to(mu, shape[:-1])
     h = np.cross(r, v)
     h2 = _dot(h, h)
     if np.any(h2 == 0):
@@ -142,20 +151,52 @@ def check_conic(p: np.ndarray, e: np.ndarray, nu: np.ndarray) -> None:
         raise OrbitDomainError(f"semi-latus rectum p = {float(p[p <= 0].flat[0])!r} m must be positive")
     if np.any(e < 0):
         raise OrbitDomainError(f"eccentricity e = {float(e[e < 0].flat[0])!r} must be >= 0")
+    require_inside_asymptotes(e, nu)
+
+
+def require_inside_asymptotes(e: ArrayLike, nu: ArrayLike) -> None:
+    """Raise unless 1 + e cos nu > 0: on an open conic (e >= 1) the true anomaly lies strictly between the
+    asymptotes, |nu| < arccos(-1/e) (mod 2 pi), where the point is at a finite distance (e >= 0 and finite nu are
+    the caller's)."""
+    e, nu = np.broadcast_arrays(np.asarray(e, dtype=float), np.asarray(nu, dtype=float))
     denominator = 1.0 + e * np.cos(nu)
     beyond = (e >= 1.0) & (denominator <= 0.0)
     if np.any(beyond):
         i = tuple(np.argwhere(beyond)[0])
         raise OrbitDomainError(
-            f"true anomaly nu = {float(nu[i])!r} rad is on or beyond the asymptote of the conic with "
-            f"e = {float(e[i])!r} (1 + e cos nu = {float(denominator[i])!r} must be > 0): the point is at infinity"
+            f"true anomaly nu = {float(nu[i])!r} rad lies on or beyond the asymptote of the conic with "
+            f"e = {float(e[i])!r}; allowed |nu| < arccos(-1/e) = {float(np.arccos(-1.0 / e[i]))!r} rad (there "
+            f"1 + e cos nu = {float(denominator[i])!r} must be > 0: the point is at infinity)"
         )
+
+
+def check_elements(p: ArrayLike, e: ArrayLike, inc: ArrayLike, nu: ArrayLike, mu: ArrayLike) -> None:
+    """The rules on elements for direct core callers: finite p > 0, e >= 0, nu inside an open conic's
+    asymptotes (check_conic), i in [0, pi] and finite mu > 0. The unit-aware API checks each value once at its
+    edge (orbits.inputs) and calls elements_to_state_unchecked."""
+    p, e, inc, nu, mu = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (p, e, inc, nu, mu)))
+    check_conic(p, e, nu)
+    check_finite(mu, "gravitational parameter mu", "m3 / s2")
+    if np.any(mu <= 0):
+        raise OrbitDomainError(f"gravitational parameter mu = {float(mu[mu <= 0].flat[0])!r} m3 / s2 must be positive")
+    if np.any((inc < 0) | (inc > np.pi)):
+        bad = inc[(inc < 0) | (inc > np.pi)].flat[0]
+        raise OrbitDomainError(f"inclination i = {float(bad)!r} rad is outside [0, pi] rad")
 
 
 def elements_to_state(
     p: ArrayLike, e: ArrayLike, inc: ArrayLike, raan: ArrayLike, argp: ArrayLike, nu: ArrayLike, mu: ArrayLike
 ) -> tuple[np.ndarray, np.ndarray]:
-    """State vectors r [m], v [m/s] from p [m], e, i, Omega, omega, nu [rad] and mu [m**3/s**2].
+    """State vectors r [m], v [m/s] of checked elements (check_elements, then elements_to_state_unchecked)."""
+    check_elements(p, e, inc, nu, mu)
+    return elements_to_state_unchecked(p, e, inc, raan, argp, nu, mu)
+
+
+def elements_to_state_unchecked(
+    p: ArrayLike, e: ArrayLike, inc: ArrayLike, raan: ArrayLike, argp: ArrayLike, nu: ArrayLike, mu: ArrayLike
+) -> tuple[np.ndarray, np.ndarray]:
+    """State vectors r [m], v [m/s] from p [m], e, i, Omega, omega, nu [rad] and mu [m**3/s**2], unchecked (the
+    caller has applied check_elements' rules).
 
     r = p / (1 + e cos nu) (cos u n_hat + sin u m_hat) and
     v = sqrt(mu / p) (-(sin u + e sin omega) n_hat + (cos u + e cos omega) m_hat), u = omega + nu,
@@ -164,13 +205,6 @@ def elements_to_state(
     p, e, inc, raan, argp, nu, mu = np.broadcast_arrays(
         *(np.asarray(x, dtype=float) for x in (p, e, inc, raan, argp, nu, mu))
     )
-    check_conic(p, e, nu)
-    check_finite(mu, "gravitational parameter mu", "m3 / s2")
-    if np.any(mu <= 0):
-        raise OrbitDomainError(f"gravitational parameter mu = {float(mu[mu <= 0].flat[0])!r} m3 / s2 must be positive")
-    if np.any((inc < 0) | (inc > np.pi)):
-        bad = inc[(inc < 0) | (inc > np.pi)].flat[0]
-        raise OrbitDomainError(f"inclination i = {float(bad)!r} rad is outside [0, pi] rad")
     sin_i, cos_i = _sin_cos(inc)
     sin_o, cos_o = np.sin(raan), np.cos(raan)
     n_hat = np.stack([cos_o, sin_o, np.zeros_like(cos_o)], axis=-1)

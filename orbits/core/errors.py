@@ -26,6 +26,14 @@ class SceneError(OrbitsError, ValueError):
     """A scene file or dictionary is invalid; the message names the source, the field and what is allowed."""
 
 
+class ParameterError(OrbitsError, ValueError):
+    """A model scene's parameter, or a combination of them (`name` None), that the model cannot run."""
+
+    def __init__(self, name: str | None, message: str):
+        super().__init__(message)
+        self.name = name
+
+
 class UnknownNameError(OrbitDomainError, KeyError):
     """A name (a body, a quantity, a Lagrange point) that is not one of those known; the message lists them.
 
@@ -38,3 +46,8 @@ class UnknownNameError(OrbitDomainError, KeyError):
 class OrbitsWarning(UserWarning):
     """Base class of the warnings orbits gives on purpose: the answer stands, but something about it needs saying
     (a picture whose closest approach lies inside a body). The command line prints each as one line."""
+
+
+class InsideBodyWarning(OrbitsWarning):
+    """A closest approach lies inside the primary (or inside both bodies' radii): a collision the two-body answer
+    passes through."""

@@ -14,11 +14,13 @@ How the accuracy is reached:
 - The residual is evaluated without cancellation: E - e sin E = (1 - e) E + e (E - sin E), where
   1 - e is exact for e >= 1/2 and E - sin E comes from its Taylor series for |E| < 2; likewise
   e sinh H - H = (e - 1) H + e (sinh H - H). Large H use the logarithmic form of the equation.
-- Two passes, the same in NumPy and in the compiled kernels. The fixed pass: for E, Markley's starter, one
-  Halley and one Newton step, certified by the size of the Newton step; for H (series form), four safeguarded
-  Halley steps and a Newton polish, certified likewise. The safeguarded pass, on what the fixed one leaves:
-  from the root of the cubic model (1 - e) E + e E**3 / 6 = M (found without cancellation), Halley's method
-  inside a shrinking bracket, so it cannot diverge; a solve that does not converge raises ConvergenceError.
+- Two passes, the same in NumPy and in the compiled kernels. For E, a single pass: Markley's starter (within
+  2.8e-4 relative for every e < 1), one evaluation of sin E, E - sin E and 1 - cos E (trig_reflected), and one
+  sixth-order step from the residual's derivatives (sixth_order_step), certified by the size of its Newton step;
+  for H (series form), four safeguarded Halley steps and a Newton polish, certified likewise. The safeguarded
+  pass, on what the first leaves: from the root of the cubic model (1 - e) E + e E**3 / 6 = M (found without
+  cancellation), Halley's method inside a shrinking bracket, so it cannot diverge; a solve that does not
+  converge raises ConvergenceError.
 
 Speed: the three solvers run compiled kernels (orbits/core/_fast_kepler.py, numba, cached on disk) when
 numba is installed, with the same reduction, residuals and safeguards; these NumPy implementations run
@@ -32,36 +34,30 @@ from numpy.typing import ArrayLike
 
 from orbits.core import _fast
 from orbits.core._dd import two_product, two_sum
+from orbits.core._kepler_shared import (
+    HYPERBOLIC_FIXED_STEPS,
+    INVERSE_TWO_PI,
+    LOG_FORM_LIMIT,
+    MARKLEY_SCALE,
+    MAX_MEAN_ANOMALY,
+    ONE_MINUS_COS,
+    PI_1,
+    PI_2,
+    SERIES_LIMIT,
+    SINGLE_PASS_ACCEPT,
+    SINH_MINUS_X,
+    TINY_MEAN_ANOMALY,
+    TWO_PI_1,
+    TWO_PI_2,
+    TWO_PI_3,
+    X_MINUS_SIN,
+)
 from orbits.core._roots import halley_in_bracket, halley_step
 from orbits.core.checks import check_eccentricity, check_finite
 from orbits.core.errors import OrbitDomainError
-from orbits.core.series import factorial_series, horner
+from orbits.core.series import horner
 
-# 2 pi as an unevaluated sum of three doubles (checked against mpmath in the tests).
-TWO_PI_1 = 6.283185307179586
-TWO_PI_2 = 2.4492935982947064e-16
-TWO_PI_3 = -5.989539619436679e-33
-
-#: The fixed first pass of the elliptic solver certifies E when its Newton step is below this, relative.
-FIXED_PASS_ACCEPT = 2.0**-30
-
-#: Safeguarded Halley steps of the hyperbolic solver's fixed first pass (1 to 4, mean 2.1, on the benchmark's set).
-HYPERBOLIC_FIXED_STEPS = 4
-
-#: Largest |M| (rad) reduced exactly: 2**50 revolutions.
-MAX_MEAN_ANOMALY = 2.0**50 * TWO_PI_1
-
-_SERIES_LIMIT = 2.0  # |x| below which x - sin x and sinh x - x come from their series
-_LOG_FORM_LIMIT = 20.0  # H above which the hyperbolic equation is solved in logarithmic form
 _OTHER_CONICS = "; use eccentric_anomaly for e < 1, parabolic_anomaly (Barker) for e = 1, hyperbolic_anomaly for e > 1"
-_TINY_MEAN_ANOMALY = 1e-280  # below this, E = M / (1 - e) and H = M / (e - 1) are exact roots
-_MARKLEY_SCALE = 1.0 / (np.pi**2 - 6.0)
-_INVERSE_TWO_PI = 1.0 / TWO_PI_1
-
-
-#: x**3 times these series in x**2 are x - sin x and sinh x - x (14 terms: below 2**-53 relative for |x| < 2)
-_X_MINUS_SIN = factorial_series(3, -1.0, 14)
-_SINH_MINUS_X = factorial_series(3, 1.0, 14)
 
 
 def _series(x, coefficients):
@@ -73,16 +69,16 @@ def _series(x, coefficients):
 def x_minus_sin(x: ArrayLike) -> np.ndarray:
     """x - sin x without cancellation (series for |x| < 2), float64 arrays."""
     x = np.asarray(x, dtype=float)
-    return np.where(np.abs(x) < _SERIES_LIMIT, _series(x, _X_MINUS_SIN), x - np.sin(x))
+    return np.where(np.abs(x) < SERIES_LIMIT, _series(x, X_MINUS_SIN), x - np.sin(x))
 
 
 def sinh_minus_x(x: ArrayLike) -> np.ndarray:
     """sinh x - x without cancellation (series for |x| < 2), float64 arrays."""
     x = np.asarray(x, dtype=float)
-    small = np.abs(x) < _SERIES_LIMIT
+    small = np.abs(x) < SERIES_LIMIT
     with np.errstate(over="ignore"):
         large = np.sinh(np.where(small, 0.0, x)) - x
-    return np.where(small, _series(x, _SINH_MINUS_X), large)
+    return np.where(small, _series(x, SINH_MINUS_X), large)
 
 
 def reduce_mean_anomaly(M: ArrayLike) -> tuple[float | np.ndarray, float | np.ndarray]:
@@ -106,7 +102,7 @@ def reduce_two_pi(M: ArrayLike, M_lo: ArrayLike) -> tuple[float | np.ndarray, fl
     """(hi, lo) = M + M_lo - 2 pi k in [-pi, pi] as a double-double, k = round(M / 2 pi), for a double-double
     M + M_lo (|M_lo| <= ulp(M)) with |M| <= MAX_MEAN_ANOMALY (unchecked): 2 pi in three parts and exact
     products (two_product), so the result keeps about 2**-100 of |M|."""
-    k = np.rint(M * _INVERSE_TWO_PI)  # a multiplication (the kernels' divisions cost); k off by one at +-pi is
+    k = np.rint(M * INVERSE_TWO_PI)  # a multiplication (the kernels' divisions cost); k off by one at +-pi is
     p1, e1 = two_product(k, TWO_PI_1)  # shifted back below
     p2, e2 = two_product(k, TWO_PI_2)
     hi = M - p1  # exact (Sterbenz) since p1 is within a factor 2 of M whenever k != 0
@@ -126,7 +122,7 @@ def markley_starter(m: ArrayLike, e: ArrayLike) -> np.ndarray:
     (Markley) on e <= 0.99, so one Halley step and one Newton step reach the root (the compiled elliptic
     solver's pass 1, and the elliptic pass of orbits.core.propagate). Written with two divisions, as the
     kernels (orbits/core/_fast_kepler.py) compute it."""
-    alpha = (3.0 * np.pi**2 + 1.6 * np.pi * (np.pi - m) / (1.0 + e)) * _MARKLEY_SCALE
+    alpha = (3.0 * np.pi**2 + 1.6 * np.pi * (np.pi - m) / (1.0 + e)) * MARKLEY_SCALE
     d = 3.0 * (1.0 - e) + alpha * e
     q = 2.0 * alpha * d * (1.0 - e) - m * m
     r = 3.0 * alpha * d * (d - 1.0 + e) * m + m * m * m
@@ -190,23 +186,72 @@ def _eccentric_anomaly_numpy(M, e):
 
 
 def _solve_elliptic_positive(m_hi, m_lo, e):
-    """E in [0, pi] for reduced M = m_hi + m_lo in [0, pi] (m_lo tiny): the fixed pass on every element, the
+    """E in [0, pi] for reduced M = m_hi + m_lo in [0, pi] (m_lo tiny): the single pass on every element, the
     safeguarded iteration on those it does not certify (as the compiled solver)."""
     one_minus_e = 1.0 - e
     E = np.where(e == 0.0, m_hi, 0.0)
-    tiny = (m_hi < _TINY_MEAN_ANOMALY) & (e > 0.0)
+    tiny = (m_hi < TINY_MEAN_ANOMALY) & (e > 0.0)
     E = np.where(tiny, m_hi / one_minus_e, E)
     solve = (e > 0.0) & ~tiny & (m_hi > 0.0)
     if not np.any(solve):
         return E
     m, m_lo, e, one_minus_e = m_hi[solve], m_lo[solve], e[solve], one_minus_e[solve]
-    upper = np.minimum(np.minimum(m + e, np.pi), m / one_minus_e)  # E - M = e sin E in [0, e], E <= M / (1 - e)
-    x, certified = _elliptic_fixed_pass(m, m_lo, e, one_minus_e, upper)
+    x, certified = _elliptic_single_pass(m, m_lo, e, one_minus_e)
     redo = np.flatnonzero(~certified)
     if redo.size:
-        x[redo] = _elliptic_safeguarded(m[redo], m_lo[redo], e[redo], one_minus_e[redo], upper[redo])
+        r = (m[redo], m_lo[redo], e[redo], one_minus_e[redo])
+        upper = np.minimum(np.minimum(r[0] + r[2], np.pi), r[0] / r[3])  # E - M = e sin E in [0, e], E <= M / (1 - e)
+        x[redo] = _elliptic_safeguarded(*r, upper)
     E[solve] = x
     return E
+
+
+def trig_reflected(x: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(sin x, x - sin x, 1 - cos x) for x in [0, pi + 2], each free of cancellation, from one evaluation of two
+    series: in z = x below 2, else in z = pi - x (|z| < 2), where sin x = sin z, 1 - cos x = 2 - (1 - cos z) and
+    x - sin x has no cancellation. Each within about 1 ulp."""
+    x = np.asarray(x, dtype=float)
+    reflect = x >= SERIES_LIMIT
+    z = np.where(reflect, (PI_1 - x) + PI_2, x)
+    z2 = z * z
+    z_minus_sin = horner(X_MINUS_SIN, z2) * z2 * z
+    one_minus_cos = horner(ONE_MINUS_COS, z2) * z2
+    sin = z - z_minus_sin
+    return sin, np.where(reflect, x - sin, z_minus_sin), np.where(reflect, 2.0 - one_minus_cos, one_minus_cos)
+
+
+def sixth_order_step(f, f1, s, c, sign):
+    """(d, t): the root d of the Taylor polynomial f + f1 d + s d**2 / 2 + c d**3 / 6 + sign (s d**4 / 24 +
+    c d**5 / 120) of a Kepler residual (sign -1 for the elliptic equation, whose derivatives after f'' = e sin E
+    and f''' = e cos E are -e sin E and -e cos E; +1 for the hyperbolic one), by series reversion in the Newton
+    step t = -f / f1:
+        d = t - a2 t**2 + (2 a2**2 - a3) t**3 + (5 a2 a3 - 5 a2**3 - a4) t**4
+            + (14 a2**4 - 21 a2**2 a3 + 6 a2 a4 + 3 a3**2 - a5) t**5,   a_k = f^(k) / (k! f1).
+    One division; the error is of order t**6 (sixth-order convergence)."""
+    inverse = 1.0 / f1
+    t = -f * inverse
+    a2, a3 = (0.5 * inverse) * s, (inverse * (1.0 / 6.0)) * c
+    a4, a5 = (sign * (1.0 / 12.0)) * a2, (sign * 0.05) * a3  # sign s / (24 f1), sign c / (120 f1)
+    a2_squared = a2 * a2
+    b3 = 2.0 * a2_squared - a3
+    b4 = a2 * (5.0 * a3 - 5.0 * a2_squared) - a4
+    b5 = a2_squared * (14.0 * a2_squared - 21.0 * a3) + (6.0 * a2 * a4 + 3.0 * a3 * a3) - a5
+    return t * (1.0 + t * (-a2 + t * (b3 + t * (b4 + t * b5)))), t
+
+
+def _elliptic_single_pass(m, m_lo, e, one_minus_e):
+    """(E, certified): Markley's starter E1 (within 2.8e-4 relative for every 0 < e < 1, measured on 8e5 pairs),
+    one evaluation of sin, E1 - sin E1 and 1 - cos E1 (trig_reflected), the residual f = (1 - e) E1 - m +
+    e (E1 - sin E1) - m_lo free of cancellation, and one sixth-order step from its derivatives (sixth_order_step).
+    Certified when the Newton step t is below SINGLE_PASS_ACCEPT E1: the step's truncation error is then below
+    about 132 (t / E1)**6 E1 < 2**-58 E1 (E f'' / f' <= 2 on [0, pi])."""
+    upper = np.minimum(m + e, np.pi)  # E - M = e sin E is in [0, e]
+    x = np.clip(markley_starter(m, e), m, upper)
+    sin, x_minus_sin, one_minus_cos = trig_reflected(x)
+    f = ((one_minus_e * x - m) + e * x_minus_sin) - m_lo
+    f1 = one_minus_e + e * one_minus_cos
+    step, t = sixth_order_step(f, f1, e * sin, e * (1.0 - one_minus_cos), -1.0)
+    return np.clip(x + step, m, upper), np.abs(t) <= SINGLE_PASS_ACCEPT * x
 
 
 def _elliptic_residual(x, m, m_lo, e, one_minus_e):
@@ -214,19 +259,6 @@ def _elliptic_residual(x, m, m_lo, e, one_minus_e):
     f = ((one_minus_e * x - m) + e * x_minus_sin(x)) - m_lo
     df = one_minus_e + e * (2.0 * np.sin(0.5 * x) ** 2)  # 1 - e cos x, cancellation free
     return f, df, e * np.sin(x)
-
-
-def _elliptic_fixed_pass(m, m_lo, e, one_minus_e, upper):
-    """(E, certified): Markley's starter, one Halley step and one Newton step, each kept in [m, upper]. Certified
-    when the Newton step is below FIXED_PASS_ACCEPT E: on [0, pi] the residual is convex with E f'' / (2 f') <= 1,
-    so that step leaves an error below 2**-58 E before rounding."""
-    x = np.clip(markley_starter(m, e), m, upper)
-    f, df, d2f = _elliptic_residual(x, m, m_lo, e, one_minus_e)
-    x = np.clip(x - 2.0 * f * df / (2.0 * df * df - f * d2f), m, upper)
-    f, df, _ = _elliptic_residual(x, m, m_lo, e, one_minus_e)
-    step = f / df
-    x = np.clip(x - step, m, upper)
-    return x, np.abs(step) <= FIXED_PASS_ACCEPT * x
 
 
 def _elliptic_safeguarded(m, m_lo, e, one_minus_e, upper):
@@ -267,10 +299,10 @@ def _solve_hyperbolic_positive(M, e):
     form) on what it does not certify (as the compiled solver)."""
     shape, M, e = M.shape, M.reshape(-1), e.reshape(-1)
     H = np.zeros_like(M)
-    tiny = (M < _TINY_MEAN_ANOMALY) & (M > 0)
+    tiny = (M < TINY_MEAN_ANOMALY) & (M > 0)
     H[tiny] = M[tiny] / (e[tiny] - 1.0)
     lower = np.arcsinh(M / e)
-    log_form = lower > _LOG_FORM_LIMIT
+    log_form = lower > LOG_FORM_LIMIT
     series = (M > 0) & ~tiny & ~log_form
     if np.any(series):
         H[series], certified = _hyperbolic_fixed_pass(M[series], e[series])

@@ -58,29 +58,20 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from orbits.core import _fast
+from orbits.core._lambert_shared import (
+    AT_MINIMUM,
+    C3_ELLIPSE,
+    C3_HYPERBOLA,
+    MAX_ITERATIONS,
+    NEAR_MINIMUM,
+    PARABOLA_ZONE,
+    SERIES_LIMIT,
+    STEP_TOLERANCE,
+    ZERO_REVOLUTION_TOLERANCE,
+)
 from orbits.core.checks import check_finite, require_positive
 from orbits.core.errors import ConvergenceError, DegenerateOrbitError, OrbitDomainError
-from orbits.core.series import factorial_series, horner
-
-#: Householder iterations allowed (Izzo's starts need 2-4; the bracket's bisections a few more)
-MAX_ITERATIONS = 40
-#: a step below this (relative to max(1, |x|)) ends the iteration: the root is then known to far below an ulp
-STEP_TOLERANCE = 2.0**-40
-#: for N = 0 a step below this already ends it: the fourth-order step leaves an error ~ step**4 (1e-28), and even
-#: the first-order convergence of the derivatives' Taylor zone (relative error < 1e-9) leaves < 1e-16
-ZERO_REVOLUTION_TOLERANCE = 1e-7
-#: within this distance of the parabola x = 1 the derivatives come from their Taylor series at x = 1
-PARABOLA_ZONE = 1e-3
-#: below this relative excess over T_min(N) the iteration starts from the quadratic model of T at x_min
-NEAR_MINIMUM = 0.1
-#: a time of flight this close (relative) below T_min(N) counts as T_min: the rounding of T_min itself
-AT_MINIMUM = 16 * np.finfo(float).eps
-#: (z - sin z) / z**3 and (sinh z - z) / z**3 in powers of z**2, to z**22 (the first term left out is
-#: 2**24 / 27! < 1.5e-21 of the sum for z < 2)
-_C3_ELLIPSE = factorial_series(3, -1.0, 12)
-_C3_HYPERBOLA = factorial_series(3, 1.0, 12)
-#: below this angle C(z) comes from its series, above it from (z -+ sin z) / z**3 (no cancellation there)
-SERIES_LIMIT = 2.0
+from orbits.core.series import horner
 
 BRANCHES = ("left", "right")
 
@@ -201,7 +192,7 @@ def _c3(z, sin_z, elliptic):
     """(z - sin z) / z**3 (elliptic) or (sinh z - z) / z**3 (hyperbolic), z >= 0, given sin z or sinh z."""
     series = z < SERIES_LIMIT
     q = np.where(series, z * z, 1.0)
-    taylor = np.where(elliptic, horner(_C3_ELLIPSE, q), horner(_C3_HYPERBOLA, q))
+    taylor = np.where(elliptic, horner(C3_ELLIPSE, q), horner(C3_HYPERBOLA, q))
     big = np.where(series, 1.0, z)
     direct = np.where(elliptic, big - sin_z, sin_z - big) / (big * big * big)
     return np.where(series, taylor, direct)

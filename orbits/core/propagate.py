@@ -52,49 +52,30 @@ importing numba. This version also re-runs any batch the kernel flags, so that i
 messages. Timings are in the README's Benchmarks section.
 """
 
+from typing import NamedTuple
+
 import numpy as np
 from numpy.typing import ArrayLike
 
 from orbits.core import _dd, _fast
+from orbits.core._kepler_shared import MAX_MEAN_ANOMALY, SINH_MINUS_X, TWO_PI_1, TWO_PI_2, X_MINUS_SIN
+from orbits.core._propagate_shared import (
+    BRACKET_DOUBLINGS,
+    BRACKET_WIDTH,
+    C2_SERIES,
+    C3_SERIES,
+    ELLIPTIC_ERROR,
+    ELLIPTIC_STEP,
+    FIXED_STEPS,
+    SERIES_LIMIT,
+    SMALLEST_MEAN_MOTION_SQUARED,
+)
 from orbits.core._roots import halley_in_bracket
 from orbits.core.checks import check_finite
 from orbits.core.elements import check_state
 from orbits.core.errors import DegenerateOrbitError
-from orbits.core.kepler import (
-    _SINH_MINUS_X,
-    _X_MINUS_SIN,
-    MAX_MEAN_ANOMALY,
-    TWO_PI_1,
-    TWO_PI_2,
-    markley_starter,
-    reduce_two_pi,
-    x_minus_sin,
-)
-from orbits.core.series import factorial_series, horner
-
-#: c_k(z) = sum_j (-z)**j / (2j + k)! for k = 2, 3, to 12 terms (|z| <= 1)
-C2_SERIES, C3_SERIES = factorial_series(2, -1.0, 12), factorial_series(3, -1.0, 12)
-
-#: Below this s = sqrt(|z|), s - sin s and sinh s - s come from their series s**3 P(z) (they cancel above 1/2).
-SERIES_LIMIT = 2.0
-
-#: Halley steps of pass 1 (then certified): the starter needs 2.5-3 on average and at most 5 on the benchmark's
-#: mixed states (orbits/core/_fast_propagate.py).
-FIXED_STEPS = 5
-
-#: Doublings of hi = tau / r0 that pass 2 may take to bracket the root (F grows at least linearly in chi).
-BRACKET_DOUBLINGS = 2100
-
-#: The elliptic pass certifies x when the Newton step d is below 2**-26 x and its own error, |F''| d**2 / (2 F'),
-#: below 2**-56 x.
-ELLIPTIC_STEP, ELLIPTIC_ERROR = 2.0**-26, 2.0**-55
-
-#: The bracket [m - 2 e, m + 2 e] of x, widened for the rounding of e.
-BRACKET_WIDTH = 2.0 * (1.0 + 2.0**-20)
-
-#: Smallest n**2 (1/s**2) the elliptic pass takes: below it (a ~ 1e96 m about the Sun) n**2 nears the subnormal
-#: range, and such states go to the universal passes.
-SMALLEST_MEAN_MOTION_SQUARED = 1e-280
+from orbits.core.kepler import markley_starter, reduce_two_pi, x_minus_sin
+from orbits.core.series import horner
 
 
 def stumpff(z: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -113,7 +94,7 @@ def stumpff(z: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarra
     s = np.sqrt(zp)
     sin, cos = np.sin(s), np.cos(s)
     one_minus_cos = np.where(cos > 0.0, sin * sin / (1.0 + np.maximum(cos, 0.0)), 1.0 - cos)
-    s_minus_sin = np.where(s < SERIES_LIMIT, s * s * s * horner(_X_MINUS_SIN, zp), s - sin)
+    s_minus_sin = np.where(s < SERIES_LIMIT, s * s * s * horner(X_MINUS_SIN, zp), s - sin)
     c0[pos], c1[pos], c2[pos], c3[pos] = cos, sin / s, one_minus_cos / zp, s_minus_sin / (s * zp)
     zn = -z[neg]
     t = np.sqrt(zn)
@@ -122,7 +103,7 @@ def stumpff(z: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarra
         inverse = 1.0 / exp
         sinh, cosh = 0.5 * (exp - inverse), 0.5 * (exp + inverse)
         cosh_minus_one = sinh * ((1.0 - inverse) / (1.0 + inverse))
-        sinh_minus_t = np.where(t < SERIES_LIMIT, t * t * t * horner(_SINH_MINUS_X, zn), sinh - t)
+        sinh_minus_t = np.where(t < SERIES_LIMIT, t * t * t * horner(SINH_MINUS_X, zn), sinh - t)
         c0[neg], c1[neg], c2[neg], c3[neg] = cosh, sinh / t, cosh_minus_one / zn, sinh_minus_t / (t * zn)
     return c0, c1, c2, c3
 
@@ -290,7 +271,7 @@ def _solve_universal(tau, r0, sigma0, alpha, p, grow, decay):
 
 
 def _reduce_by_periods(r0, v0, mu, dt):
-    """(dt - k P with k = round(dt / P) on ellipses, unchanged on open orbits; alpha [1/m]), where
+    """(dt - k P with k = round(dt / P) on ellipses, unchanged on open orbits; alpha [1/m]; k; P), where
     alpha = 2 / |r0| - |v0|**2 / mu and P = 2 pi / sqrt(mu alpha**3).
 
     alpha and P are formed in double-double arithmetic: a rounding error of 1e-16 in P would otherwise
@@ -305,14 +286,14 @@ def _reduce_by_periods(r0, v0, mu, dt):
     alpha_si = alpha[0] + alpha[1]
     bound = alpha[0] > 0
     if not np.any(bound):
-        return dt, alpha_si
+        return dt, alpha_si, np.zeros_like(dt), np.full_like(dt, np.nan)
     alpha = (np.where(bound, alpha[0], 1.0), np.where(bound, alpha[1], 0.0))
     n = _dd.mul(_dd.sqrt((mu, zero)), _dd.mul(alpha, _dd.sqrt(alpha)))
     period = _dd.div((TWO_PI_1 + zero, TWO_PI_2 + zero), n)
     turns = np.where(bound, np.rint(dt / period[0]), 0.0)
     p_hi, p_lo = _dd.two_product(turns, period[0])
     reduced = _dd.add((dt, zero), (-p_hi, -(p_lo + turns * period[1])))
-    return reduced[0] + reduced[1], alpha_si
+    return reduced[0] + reduced[1], alpha_si, turns, np.where(bound, period[0], np.nan)
 
 
 def propagate(r0: ArrayLike, v0: ArrayLike, mu: ArrayLike, dt: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
@@ -511,12 +492,36 @@ def _propagate_numpy(r0, v0, mu, dt):
     return r.reshape(batch + (3,)), v.reshape(batch + (3,))
 
 
-def _universal_passes(r0, v0, mu, dt):
-    """(r, v) by the universal-variable passes, for flat (n, 3) r0, v0 and (n,) mu, dt."""
-    dt, alpha_si = _reduce_by_periods(r0, v0, mu, dt)
+class Scaled(NamedTuple):
+    """The universal passes' problem, flat arrays over the states: SI scales (length = |r0| [m], speed = sqrt(mu /
+    |r0|) [m/s]), the scaled state x = r0 / length, w = v0 / speed (w negated where the flight runs backwards),
+    tau = |reduced dt| speed / length, r0 = |x|, sigma0 = x . w, alpha = 2 / r0 - |w|**2 (from double-double
+    arithmetic), p = |x x w|**2, the hyperbolic coefficients (grow, decay), backwards, the reduced dt [s], and
+    the whole periods `turns` taken off it, of length `period` [s] (0 and NaN on open orbits)."""
+
+    length: np.ndarray
+    speed: np.ndarray
+    x: np.ndarray
+    w: np.ndarray
+    tau: np.ndarray
+    r0: np.ndarray
+    sigma0: np.ndarray
+    alpha: np.ndarray
+    p: np.ndarray
+    grow: np.ndarray
+    decay: np.ndarray
+    backwards: np.ndarray
+    dt: np.ndarray
+    turns: np.ndarray
+    period: np.ndarray
+
+
+def scaled_problem(r0: np.ndarray, v0: np.ndarray, mu: np.ndarray, dt: np.ndarray) -> Scaled:
+    """The Scaled problem of flat (n, 3) r0 [m], v0 [m/s] and (n,) mu [m**3/s**2], dt [s] (checked by the caller)."""
+    dt, alpha_si, turns, period = _reduce_by_periods(r0, v0, mu, dt)
     length = np.sqrt(np.sum(r0 * r0, axis=-1))
-    speed_scale = np.sqrt(mu / length)
-    x, w, tau = r0 / length[..., None], v0 / speed_scale[..., None], dt * speed_scale / length
+    speed = np.sqrt(mu / length)
+    x, w, tau = r0 / length[..., None], v0 / speed[..., None], dt * speed / length
     r_scaled = np.sqrt(np.sum(x * x, axis=-1))
     alpha = alpha_si * length
     backwards = np.signbit(tau)
@@ -526,10 +531,21 @@ def _universal_passes(r0, v0, mu, dt):
     h_scaled = np.cross(x, w)
     p = np.sum(h_scaled * h_scaled, axis=-1)
     grow, decay = _hyperbolic_coefficients(r_scaled, sigma0, alpha, p)
-    chi = _solve_universal(tau, r_scaled, sigma0, alpha, p, grow, decay)
-    r_new, f, g, f_dot, g_dot = _lagrange(chi, r_scaled, sigma0, alpha, grow, decay)
-    x_new = f[..., None] * x + g[..., None] * w
-    w_new = f_dot[..., None] * x + g_dot[..., None] * w
-    w_new = np.where(backwards[..., None], -w_new, w_new)
-    r, v = x_new * length[..., None], w_new * speed_scale[..., None]
-    return np.where(dt[..., None] == 0, r0, r), np.where(dt[..., None] == 0, v0, v)  # dt = 0: exactly r0, v0
+    return Scaled(length, speed, x, w, tau, r_scaled, sigma0, alpha, p, grow, decay, backwards, dt, turns, period)
+
+
+def universal_anomaly(s: Scaled) -> np.ndarray:
+    """chi >= 0 with r0 G1 + sigma0 G2 + G3 = tau for the Scaled problem s (pass 1, then pass 2 where needed)."""
+    return _solve_universal(s.tau, s.r0, s.sigma0, s.alpha, s.p, s.grow, s.decay)
+
+
+def _universal_passes(r0, v0, mu, dt):
+    """(r, v) by the universal-variable passes, for flat (n, 3) r0, v0 and (n,) mu, dt."""
+    s = scaled_problem(r0, v0, mu, dt)
+    chi = universal_anomaly(s)
+    r_new, f, g, f_dot, g_dot = _lagrange(chi, s.r0, s.sigma0, s.alpha, s.grow, s.decay)
+    x_new = f[..., None] * s.x + g[..., None] * s.w
+    w_new = f_dot[..., None] * s.x + g_dot[..., None] * s.w
+    w_new = np.where(s.backwards[..., None], -w_new, w_new)
+    r, v = x_new * s.length[..., None], w_new * s.speed[..., None]
+    return np.where(s.dt[..., None] == 0, r0, r), np.where(s.dt[..., None] == 0, v0, v)  # dt = 0: exactly r0, v0

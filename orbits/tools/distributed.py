@@ -14,7 +14,7 @@ by ``import orbits``.
 Pointing it at a real cluster: start ``dask scheduler`` on one machine and ``dask worker tcp://HOST:8786``
 on the others (each with orbits installed), then pass ``address="tcp://HOST:8786"`` (or
 ``orbits validate --sweep --scheduler tcp://HOST:8786``). To time a sweep, see
-orbits.tools.bench.bench_validate; results are in the README's benchmark section.
+orbits.tools.bench.validate.bench_validate; results are in the README's benchmark section.
 """
 
 import contextlib
@@ -34,7 +34,7 @@ if TYPE_CHECKING:
 
 #: LocalCluster default: two single-threaded workers. They are threads of this process by default: worker
 #: processes take longer to start, and each then imports orbits and compiles its heyoka integrators again,
-#: which a sweep of the short built-in scenes does not win back (orbits.tools.bench.bench_validate times
+#: which a sweep of the short built-in scenes does not win back (orbits.tools.bench.validate.bench_validate times
 #: both). Processes pay off for sweeps of many long scenes; pass processes=True, or use a real cluster.
 LOCAL_WORKERS = 2
 

@@ -232,6 +232,27 @@ def propagate(r0: "ArrayLike", v0: "ArrayLike", mu: float, t: float) -> tuple[li
     return r, v
 
 
+def transition_matrix(r0: "ArrayLike", v0: "ArrayLike", mu: float, t: float, digits: int = 50) -> list[list[mpf]]:
+    """d(r, v) / d(r0, v0) at time t, 6 x 6 (rows r, v; columns r0, v0), by central differences of propagate:
+    each of the six inputs is moved by +-1e-20 of its size (of |r0| or |v0| for a zero component), so the
+    truncation error (1e-40) and the rounding of the working precision (at least 60 digits: 1e-40) leave the
+    matrix right to the given digits. Returns rows of mpf."""
+    with mp.workdps(digits + 20):
+        x0 = [mpf(x) for x in list(r0) + list(v0)]
+        sizes = [mpmath.sqrt(_dot(x0[:3], x0[:3]))] * 3 + [mpmath.sqrt(_dot(x0[3:], x0[3:]))] * 3
+        columns = []
+        for j in range(6):
+            step = (abs(x0[j]) or sizes[j]) * mpf(10) ** -20
+            ends = []
+            for sign in (1, -1):
+                x = list(x0)
+                x[j] += sign * step
+                r, v = propagate(x[:3], x[3:], mu, t)
+                ends.append(r + v)
+            columns.append([(a - b) / (2 * step) for a, b in zip(*ends)])
+        return [[columns[j][i] for j in range(6)] for i in range(6)]
+
+
 def ulp_error(x: float | mpf, ref: float | mpf) -> mpf:
     """|x - ref| in float64 ulps: the spacing at the float nearest |ref| (smallest subnormal if ref == 0)."""
     with mp.workdps(BASE_DPS):

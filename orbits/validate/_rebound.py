@@ -18,7 +18,7 @@ import time
 import numpy as np
 
 from orbits.core.errors import OrbitDomainError
-from orbits.nbody import NBodyProblem, NBodyResult, report
+from orbits.nbody import ExponentialDrag, NBodyProblem, NBodyResult, ZonalHarmonics, report
 
 INTEGRATORS = ("ias15", "whfast", "bs")
 #: IAS15's step-size rules. PRS23 (the default) stalls on a ring of small bodies about a dominant central mass
@@ -44,19 +44,24 @@ def integrate(
         raise OrbitDomainError(
             f"integrator = {integrator!r} is not offered by the rebound backend; choose one of {INTEGRATORS}"
         )
-    start = time.perf_counter()
-    sim = _simulation(rebound, problem)
-    extras = _post_newtonian(sim, problem, integrator)  # kept alive while the simulation runs
+    if integrator == "whfast" and problem.kicks:
+        raise OrbitDomainError("impulses (kicks) need an adaptive integrator: integrate them with ias15 or bs, "
+                               "not whfast")
     if integrator in ("ias15", "bs"):
         if dt is not None:
             raise OrbitDomainError(f"dt = {dt} is a WHFast setting; {integrator} chooses its own steps (pass dt=None)")
-        settings = (_configure_ias15(sim, epsilon, adaptive_mode) if integrator == "ias15"
-                    else _configure_bs(sim, epsilon))
-        setup_time = time.perf_counter() - start
-        times, positions, velocities, wall_time = _run_ias15(sim, problem.times)
+        configure = ((lambda sim: _configure_ias15(sim, epsilon, adaptive_mode)) if integrator == "ias15"
+                     else (lambda sim: _configure_bs(sim, epsilon)))
+        times, positions, velocities, wall_time, setup_time, settings = _run_adaptive(rebound, problem, integrator,
+                                                                                      configure)
         time_mode = "exact finish time: integrate(t, exact_finish_time=1) lands sim.t on each requested time"
     else:
+        start = time.perf_counter()
+        sim = _simulation(rebound, problem.gm, problem.positions, problem.velocities, problem.n_active)
+        extras = _reboundx_effects(sim, problem, integrator)  # refuses velocity-dependent terms under WHFast
         settings = _configure_whfast(sim, dt)
+        if extras is not None:
+            settings = {**settings, **extras[1]}
         com = _move_to_com(sim)
         setup_time = time.perf_counter() - start
         times, positions, velocities, wall_time = _run_whfast(sim, problem.times, dt)
@@ -66,8 +71,6 @@ def integrate(
             "steps x dt: sim.steps(n) to the step count n nearest each requested time; times are "
             "n * dt, not the drifting sim.t"
         )
-    if extras is not None:
-        settings = {**settings, **extras[1]}
     return NBodyResult(
         backend="rebound",
         integrator=integrator,
@@ -82,38 +85,163 @@ def integrate(
     )
 
 
-def _simulation(rebound, problem: NBodyProblem):
-    """Build a G = 1 simulation holding the problem's bodies as Cartesian states; test particles are type 0."""
+def _simulation(rebound, gm: np.ndarray, positions: np.ndarray, velocities: np.ndarray, n_active: int):
+    """Build a G = 1 simulation holding the bodies as Cartesian states; test particles are type 0."""
     sim = rebound.Simulation()
     sim.G = 1.0
-    for m, r, v in zip(problem.gm, problem.positions, problem.velocities):
+    for m, r, v in zip(gm, positions, velocities):
         sim.add(m=float(m), x=float(r[0]), y=float(r[1]), z=float(r[2]), vx=float(v[0]), vy=float(v[1]), vz=float(v[2]))
-    if problem.n_active < problem.n_bodies:
-        sim.N_active = problem.n_active
+    if n_active < gm.size:
+        sim.N_active = n_active
         sim.testparticle_type = 0
     return sim
 
 
-def _post_newtonian(sim, problem: NBodyProblem, integrator: str):
-    """Attach REBOUNDx's "gr" effect (body 0's 1PN field, Anderson et al. 1975) when the problem asks for it;
-    return (the REBOUNDx extras, their settings) or None."""
-    if problem.speed_of_light is None:
+def _run_adaptive(rebound, problem: NBodyProblem, integrator: str, configure):
+    """IAS15 or BS over the problem's arcs: a new simulation at each impulse (IAS15 keeps predictor state that a
+    kick would invalidate), started from the kicked state at the arc's start time; return (times reached,
+    positions, velocities, wall time, setup time, settings)."""
+    reached = np.empty_like(problem.times)
+    positions = np.empty((problem.times.size, problem.n_bodies, 3))
+    velocities = np.empty_like(positions)
+    r, v = np.array(problem.positions, dtype=float), np.array(problem.velocities, dtype=float)
+    wall_time = setup_time = 0.0
+    for arc in problem.arcs():
+        start = time.perf_counter()
+        for kick in arc.kicks:
+            v[kick.body] += kick.delta_v
+        sim = _simulation(rebound, problem.gm, r, v, problem.n_active)
+        sim.t = arc.start
+        extras = _reboundx_effects(sim, problem, integrator)  # kept alive while the simulation runs
+        settings = configure(sim)
+        if extras is not None:
+            settings = {**settings, **extras[1]}
+        if problem.kicks:
+            settings = {**settings, "impulses": len(problem.kicks), "at an impulse": "a new simulation from the "
+                        "kicked state"}
+        setup_time += time.perf_counter() - start
+        start = time.perf_counter()
+        for k in arc.outputs:
+            sim.integrate(float(problem.times[k]), exact_finish_time=1)
+            reached[k] = sim.t
+            positions[k], velocities[k] = _snapshot(sim)
+            report(problem.times[k], problem.times[-1])
+        if sim.t < arc.end:
+            sim.integrate(arc.end, exact_finish_time=1)
+        r, v = _snapshot(sim)
+        wall_time += time.perf_counter() - start
+    return reached, positions, velocities, wall_time, setup_time, settings
+
+
+def _reboundx_effects(sim, problem: NBodyProblem, integrator: str):
+    """Attach the REBOUNDx effects the problem asks for: "gr" (body 0's 1PN field, Anderson et al. 1975),
+    "gravitational_harmonics" for ZonalHarmonics, and a force of this module for ExponentialDrag; return (the
+    REBOUNDx extras and what must stay alive with them, their settings) or None."""
+    if problem.speed_of_light is None and not problem.forces:
         return None
-    if integrator == "whfast":
-        raise OrbitDomainError("the post-Newtonian term is velocity dependent: integrate it with ias15 or bs, "
-                               "not whfast")
+    velocity_dependent = problem.speed_of_light is not None or any(
+        isinstance(f, ExponentialDrag) for f in problem.forces)
+    if integrator == "whfast" and velocity_dependent:
+        raise OrbitDomainError("the post-Newtonian term and drag are velocity dependent: integrate them with ias15 "
+                               "or bs, not whfast")
     try:
         import reboundx
     except ImportError:
-        raise OrbitDomainError("the post-Newtonian term needs REBOUNDx: pip install reboundx "
+        raise OrbitDomainError("the post-Newtonian term and the extra forces need REBOUNDx: pip install reboundx "
                                "(it comes with orbits[ephemeris])") from None
     extras = reboundx.Extras(sim)
-    gr = extras.load_force("gr")
-    extras.add_force(gr)
-    gr.params["c"] = problem.speed_of_light
-    sim.particles[0].params["gr_source"] = 1
-    return extras, {"post_newtonian": "REBOUNDx gr, source body 0", "speed_of_light": problem.speed_of_light,
-                    "reboundx": reboundx.__version__}
+    settings, alive = {"reboundx": reboundx.__version__}, [extras]
+    if problem.speed_of_light is not None:
+        gr = extras.load_force("gr")
+        extras.add_force(gr)
+        gr.params["c"] = problem.speed_of_light
+        sim.particles[0].params["gr_source"] = 1
+        settings.update(post_newtonian="REBOUNDx gr, source body 0", speed_of_light=problem.speed_of_light)
+    for force in problem.forces:
+        if isinstance(force, ZonalHarmonics):
+            alive.append(_zonal_harmonics(extras, sim, force, problem.n_active))
+            settings[f"zonal_harmonics[{force.source}]"] = ("REBOUNDx gravitational_harmonics (J2, J4), axis z"
+                                                            + ("; J3 a REBOUNDx force in Python" if force.j3 else ""))
+        else:
+            alive.append(_drag(extras, problem, force))
+            settings[f"drag[{force.source}]"] = "exponential atmosphere, a REBOUNDx force written in Python"
+    return alive, settings
+
+
+def _zonal_harmonics(extras, sim, force: ZonalHarmonics, n_active: int):
+    """REBOUNDx's gravitational_harmonics on the source body (its spin axis z, the effect's default)."""
+    harmonics = extras.load_force("gravitational_harmonics")
+    extras.add_force(harmonics)
+    source = sim.particles[force.source]
+    source.params["J2"] = force.j2
+    source.params["J4"] = force.j4
+    source.params["R_eq"] = force.radius
+    if force.j3 == 0.0:
+        return harmonics
+    return harmonics, _third_zonal(extras, n_active, force)
+
+
+def _third_zonal(extras, n_active: int, force: ZonalHarmonics):
+    """J3, which REBOUNDx's harmonics lack, as a REBOUNDx force in Python (c = z**2 / r**2, d = r_j - r_source):
+    a_xy = (5/2) mu J3 R**3 (7c - 3) z d_xy / r**7, a_z = (1/2) mu J3 R**3 (35 c**2 - 30 c + 3) / r**5, with the
+    reaction -(m_j / m_source) a on the source."""
+    import math
+
+    source, j3r3 = force.source, force.j3 * force.radius**3
+
+    def accelerate(simulation, effect, particles, n):
+        centre = particles[source]
+        mu = simulation.contents.G * centre.m
+        for j in range(n):
+            if j == source:
+                continue
+            p = particles[j]
+            dx, dy, dz = p.x - centre.x, p.y - centre.y, p.z - centre.z
+            r2 = dx * dx + dy * dy + dz * dz
+            r5 = r2 * r2 * math.sqrt(r2)
+            c = dz * dz / r2
+            planar = 2.5 * mu * j3r3 * (7.0 * c - 3.0) * dz / (r5 * r2)
+            ax, ay, az = planar * dx, planar * dy, 0.5 * mu * j3r3 * ((35.0 * c - 30.0) * c + 3.0) / r5
+            p.ax += ax
+            p.ay += ay
+            p.az += az
+            if j < n_active:
+                share = p.m / centre.m
+                centre.ax -= share * ax
+                centre.ay -= share * ay
+                centre.az -= share * az
+
+    third = extras.create_force("third_zonal_harmonic")
+    third.force_type = "pos"
+    third.update_accelerations = accelerate
+    extras.add_force(third)
+    return third, accelerate
+
+
+def _drag(extras, problem: NBodyProblem, force: ExponentialDrag):
+    """A velocity-dependent REBOUNDx force: a = -(1/2) rho B |v| v on each test particle, relative to the source."""
+    import math
+
+    first, source = problem.n_active, force.source
+    reference, base, scale_height = force.reference, force.base, force.scale_height
+
+    def accelerate(simulation, effect, particles, n):
+        centre = particles[source]
+        for j in range(first, n):
+            p = particles[j]
+            dx, dy, dz = p.x - centre.x, p.y - centre.y, p.z - centre.z
+            vx, vy, vz = p.vx - centre.vx, p.vy - centre.vy, p.vz - centre.vz
+            r = math.sqrt(dx * dx + dy * dy + dz * dz)
+            k = -0.5 * reference * math.exp(-(r - base) / scale_height) * math.sqrt(vx * vx + vy * vy + vz * vz)
+            p.ax += k * vx
+            p.ay += k * vy
+            p.az += k * vz
+
+    drag = extras.create_force("exponential_drag")
+    drag.force_type = "vel"
+    drag.update_accelerations = accelerate
+    extras.add_force(drag)
+    return drag, accelerate
 
 
 def _configure_ias15(sim, epsilon: float, adaptive_mode: str = "PRS23") -> dict:
@@ -182,20 +310,6 @@ def _snapshot(sim) -> tuple[np.ndarray, np.ndarray]:
     return xyz, vxyz
 
 
-def _run_ias15(sim, times: np.ndarray):
-    """Integrate to each time with exact_finish_time=1; return (times reached, positions, velocities, wall)."""
-    reached = np.empty_like(times)
-    positions = np.empty((times.size, sim.N, 3))
-    velocities = np.empty_like(positions)
-    start = time.perf_counter()
-    for k, t in enumerate(times):
-        sim.integrate(float(t), exact_finish_time=1)
-        reached[k] = sim.t
-        positions[k], velocities[k] = _snapshot(sim)
-        report(t, times[-1])
-    return reached, positions, velocities, time.perf_counter() - start
-
-
 def _step_counts(times: np.ndarray, dt: float) -> np.ndarray:
     """Return the whole step count nearest each time; raise if two times share a count (dt too coarse)."""
     counts = np.rint(times / dt).astype(np.int64)
@@ -222,3 +336,14 @@ def _run_whfast(sim, times: np.ndarray, dt: float):
         positions[k], velocities[k] = _snapshot(sim)
         report(n, counts[-1])
     return counts * float(dt), positions, velocities, time.perf_counter() - start
+
+
+def kepler_solver():
+    """rebound's M_to_E as a function of a list of (e, M) pairs returning the list of E (its per-call Python API:
+    the peer of orbits' Kepler solver in the benchmarks)."""
+    import rebound
+
+    def solve(pairs: list) -> list:
+        return [rebound.M_to_E(e, mean) for e, mean in pairs]
+
+    return solve

@@ -1,11 +1,9 @@
-"""N-body checks of impulsive manoeuvres and gravity assists: rebound (IAS15) and heyoka (Taylor) integrate the
-coast arcs between the burns, the burns are applied as instant velocity changes, and the end state is compared
-with the closed form (orbits.core.manoeuvres.ImpulsePlan, orbits.core.assist).
+"""N-body checks of impulsive manoeuvres and gravity assists: each is posed as an NBodyProblem (the burns as
+kicks, orbits.nbody.Kick) and integrated by every registered backend through orbits.validate.backends, like any
+scene; the end state is compared with the closed form (orbits.core.manoeuvres.ImpulsePlan, orbits.core.assist).
 
 Work in code units: the start radius is the unit of length and sqrt(r**3 / mu) the unit of time, so the primary
-has GM = 1 and every coordinate is of order 1. rebound starts a new simulation for every arc (IAS15 keeps
-predictor state that a hand-made kick would invalidate); heyoka keeps one Taylor integrator and has its state
-kicked between propagate_until calls. rebound and heyoka are imported inside the functions that integrate.
+has GM = 1 and every coordinate is of order 1. The vehicle is a massless test particle.
 
 Measured (tests/validation/test_manoeuvres_integration.py): every manoeuvre's end state matches the prediction
 within 1.5e-14 relative in both backends,
@@ -23,6 +21,9 @@ from orbits.core.elements import state_to_elements
 from orbits.core.flyby import deflection_angle, impact_parameter
 from orbits.core.manoeuvres import ImpulsePlan
 from orbits.core.propagate import propagate
+from orbits.nbody import Kick, NBodyProblem
+from orbits.validate import backends
+from orbits.validate.plan import CodeUnits
 
 BACKENDS = ("rebound", "heyoka")
 
@@ -52,79 +53,23 @@ class ImpulseCheck:
                    self.inclination_error)
 
 
-def _scales(plan: ImpulsePlan) -> tuple[float, float, float]:
-    """(length, time, speed) units in which the plan's primary has GM = 1 and the start radius is 1."""
-    length = float(np.linalg.norm(plan.r0))
-    time = float(np.sqrt(length**3 / plan.mu))
-    return length, time, length / time
+def plan_problem(plan: ImpulsePlan) -> tuple[NBodyProblem, CodeUnits]:
+    """The plan as an NBodyProblem in code units (start radius 1, GM 1): the primary at rest, the vehicle a test
+    particle, each burn a kick, one output at the plan's end; and the code units."""
+    scale = CodeUnits(float(np.linalg.norm(plan.r0)), plan.mu)
+    kicks = tuple(Kick(t / scale.time, 1, dv / scale.speed) for t, dv in zip(plan.times, plan.delta_v, strict=True))
+    problem = NBodyProblem(gm=[1.0, 0.0], positions=[np.zeros(3), plan.r0 / scale.length],
+                           velocities=[np.zeros(3), plan.v0 / scale.speed], n_active=1,
+                           times=[plan.duration / scale.time], kicks=kicks)
+    return problem, scale
 
 
-def _arcs(plan: ImpulsePlan, time_unit: float) -> list[float]:
-    """The code-unit end times of the coast arcs: each burn after the first, then the end of the plan."""
-    return [t / time_unit for t in (*plan.times[1:], plan.duration)]
-
-
-def _kicks(plan: ImpulsePlan, speed_unit: float) -> np.ndarray:
-    return plan.delta_v / speed_unit
-
-
-def integrate_plan_rebound(plan: ImpulsePlan, epsilon: float = 1e-9) -> tuple[np.ndarray, np.ndarray, str]:
-    """(r, v) in SI at the end of the plan, and rebound's version: IAS15 with accuracy `epsilon` on each arc."""
-    import rebound
-
-    length, time_unit, speed = _scales(plan)
-    r, v = plan.r0 / length, plan.v0 / speed
-    start = 0.0
-    for kick, end in zip(_kicks(plan, speed), _arcs(plan, time_unit), strict=True):
-        v = v + kick
-        sim = rebound.Simulation()
-        sim.G = 1.0
-        sim.integrator = "ias15"
-        sim.integrator.epsilon = epsilon
-        sim.add(m=1.0)
-        sim.add(m=0.0, x=r[0], y=r[1], z=r[2], vx=v[0], vy=v[1], vz=v[2])
-        sim.N_active = 1
-        sim.integrate(end - start, exact_finish_time=1)
-        probe, centre = sim.particles[1], sim.particles[0]
-        r = np.array(probe.xyz) - np.array(centre.xyz)
-        v = np.array(probe.vxyz) - np.array(centre.vxyz)
-        start = end
-    return r * length, v * speed, rebound.__version__
-
-
-_KEPLER = {}  # the compiled heyoka integrators, by name
-
-
-def _kepler_integrator(heyoka):
-    """One compiled Taylor integrator of r'' = -r / |r|**3 (GM = 1), kept for the process."""
-    if "ta" not in _KEPLER:
-        x, y, z, vx, vy, vz = heyoka.make_vars("x", "y", "z", "vx", "vy", "vz")
-        inv_r3 = (x * x + y * y + z * z) ** -1.5
-        system = [(x, vx), (y, vy), (z, vz), (vx, -x * inv_r3), (vy, -y * inv_r3), (vz, -z * inv_r3)]
-        _KEPLER["ta"] = heyoka.taylor_adaptive(system, [1.0, 0.0, 0.0, 0.0, 1.0, 0.0], high_accuracy=True)
-    return _KEPLER["ta"]
-
-
-def integrate_plan_heyoka(plan: ImpulsePlan) -> tuple[np.ndarray, np.ndarray, str]:
-    """(r, v) in SI at the end of the plan, and heyoka's version: taylor_adaptive at its default tolerance
-    (machine epsilon) with high_accuracy, the state kicked between propagate_until calls."""
-    import copy
-
-    import heyoka
-
-    length, time_unit, speed = _scales(plan)
-    ta = copy.copy(_kepler_integrator(heyoka))
-    ta.time = 0.0
-    ta.state[:] = np.concatenate([plan.r0 / length, plan.v0 / speed])
-    for kick, end in zip(_kicks(plan, speed), _arcs(plan, time_unit), strict=True):
-        ta.state[3:] += kick
-        outcome = ta.propagate_until(end)[0]
-        if outcome != heyoka.taylor_outcome.time_limit:
-            raise RuntimeError(f"heyoka stopped at t = {ta.time} with outcome {outcome}; it must reach t = {end}")
-    return ta.state[:3] * length, ta.state[3:] * speed, heyoka.__version__
-
-
-_INTEGRATORS = {"rebound": integrate_plan_rebound, "heyoka": integrate_plan_heyoka}
+def _end_state(name: str, problem: NBodyProblem, scale: CodeUnits) -> tuple[np.ndarray, np.ndarray, str]:
+    """(r, v) in SI of the vehicle relative to the primary at the problem's last time, and the backend's version."""
+    result = backends.integrate(name, problem)
+    r = result.positions[-1, 1] - result.positions[-1, 0]
+    v = result.velocities[-1, 1] - result.velocities[-1, 0]
+    return r * scale.length, v * scale.speed, result.version
 
 
 def _elements(r, v, mu):
@@ -132,12 +77,13 @@ def _elements(r, v, mu):
     return p / ((1.0 - e) * (1.0 + e)), e, inc
 
 
-def check_plan(plan: ImpulsePlan, backends: tuple[str, ...] = BACKENDS) -> list[ImpulseCheck]:
+def check_plan(plan: ImpulsePlan, names: tuple[str, ...] = BACKENDS) -> list[ImpulseCheck]:
     """Integrate `plan` with each backend and compare its end state and orbit with the plan's prediction."""
     a_ref, e_ref, inc_ref = _elements(plan.final_r, plan.final_v, plan.mu)
+    problem, scale = plan_problem(plan)
     checks = []
-    for name in backends:
-        r, v, version = _INTEGRATORS[name](plan)
+    for name in names:
+        r, v, version = _end_state(name, problem, scale)
         a, e, inc = _elements(r, v, plan.mu)
         checks.append(ImpulseCheck(
             backend=name, version=version, final_r=r, final_v=v,
@@ -198,55 +144,22 @@ def assist_scene(mass_ratio: float, v_inf: np.ndarray, focusing: float) -> tuple
     return np.array([1.0, mass_ratio, 0.0]), positions, velocities
 
 
-def _three_body_rebound(gm, positions, velocities, duration):
-    """Heliocentric probe states at -duration and +duration (IAS15, test-particle probe)."""
-    import rebound
-
-    ends = []
-    for sign in (-1.0, 1.0):
-        sim = rebound.Simulation()
-        sim.G = 1.0
-        sim.integrator = "ias15"
-        for m, r, v in zip(gm, positions, velocities, strict=True):
-            sim.add(m=m, x=r[0], y=r[1], z=r[2], vx=v[0], vy=v[1], vz=v[2])
-        sim.N_active = 2
-        sim.integrate(sign * duration, exact_finish_time=1)
-        sun, probe = sim.particles[0], sim.particles[2]
-        ends.append((np.array(probe.xyz) - sun.xyz, np.array(probe.vxyz) - sun.vxyz))
-    return ends, rebound.__version__
-
-
-def _three_body_integrator(heyoka):
-    """One compiled Taylor integrator of Sun, planet (masses as parameters) and a massless probe, kept."""
-    if "three" not in _KEPLER:
-        system = heyoka.model.nbody(3, masses=[heyoka.par[0], heyoka.par[1]], Gconst=1.0)
-        _KEPLER["three"] = heyoka.taylor_adaptive(system, np.zeros(18), pars=[1.0, 0.0], high_accuracy=True)
-    return _KEPLER["three"]
-
-
-def _three_body_heyoka(gm, positions, velocities, duration):
-    """Heliocentric probe states at -duration and +duration (taylor_adaptive, the probe massless)."""
-    import copy
-
-    import heyoka
-
-    ta = copy.copy(_three_body_integrator(heyoka))
-    ta.pars[:] = gm[:2]
-    ends = []
-    for sign in (-1.0, 1.0):
-        ta.time = 0.0
-        ta.state[:] = np.hstack([positions, velocities]).ravel()
-        ta.propagate_until(sign * duration)
-        s = ta.state.reshape(3, 6)
-        ends.append((s[2, :3] - s[0, :3], s[2, 3:] - s[0, 3:]))
-    return ends, heyoka.__version__
-
-
-_THREE_BODY = {"rebound": _three_body_rebound, "heyoka": _three_body_heyoka}
+def _probe_at(name: str, gm: np.ndarray, positions: np.ndarray, velocities: np.ndarray,
+              duration: float) -> tuple[tuple[np.ndarray, np.ndarray], str]:
+    """The probe's heliocentric (r, v) after `duration` (code units; negative: back in time) of the Sun-planet-probe
+    problem, and the backend's version. Newtonian gravity is reversible: the state at -t is the state at +t of
+    the problem with every velocity reversed, with the velocities reversed back."""
+    sign = 1.0 if duration >= 0 else -1.0
+    problem = NBodyProblem(gm=gm, positions=positions, velocities=sign * velocities, n_active=2,
+                           times=[abs(duration)])
+    result = backends.integrate(name, problem)
+    r = result.positions[-1]
+    v = sign * result.velocities[-1]
+    return (r[2] - r[0], v[2] - v[0]), result.version
 
 
 def check_assist(mass_ratio: float, v_inf: np.ndarray, focusing: float = 1.0, duration: float = 0.3,
-                 backends: tuple[str, ...] = BACKENDS) -> list[AssistCheck]:
+                 names: tuple[str, ...] = BACKENDS) -> list[AssistCheck]:
     """Integrate the Sun-planet-probe flyby of assist_scene from t = 0 back and forth by `duration` (code units)
     and compare the change of the probe's heliocentric velocity with the patched conic's v_inf_out - v_inf_in.
 
@@ -260,8 +173,9 @@ def check_assist(mass_ratio: float, v_inf: np.ndarray, focusing: float = 1.0, du
     angle = _turning_angle(speed, focusing * mass_ratio / speed**2, mass_ratio)
     predicted = outgoing_velocity(v_inf, np.zeros(3), [0.0, 0.0, 1.0], angle) - v_inf
     checks = []
-    for name in backends:
-        (before, after), version = _THREE_BODY[name](gm, positions, velocities, duration)
+    for name in names:
+        before, version = _probe_at(name, gm, positions, velocities, -duration)
+        after, _ = _probe_at(name, gm, positions, velocities, duration)
         v_in = propagate(before[0], before[1], 1.0, duration)[1]
         v_out = propagate(after[0], after[1], 1.0, -duration)[1]
         checks.append(AssistCheck(name, version, mass_ratio, v_out - v_in, predicted))

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from orbits.core import lagrange
-from orbits.core.errors import OrbitsError, SceneError
+from orbits.core.errors import OrbitsError, ParameterError, SceneError
 from orbits.nbody import NBodyProblem
 from orbits.scene import MODEL_KEYS, show, unknown_keys
 from orbits.validate.builders import (
@@ -215,6 +215,8 @@ def _ring_builder(n):
     def build(outputs=400):
         return _ring(n, outputs)
 
+    build.__doc__ = (f"A ring of {n} equal masses on one circle, perturbed by float64 round-off: it breaks up at the "
+                     f"rate of its fastest unstable mode.")
     return build
 
 
@@ -297,9 +299,31 @@ def builtin_names() -> list[str]:
     return sorted(MODELS)
 
 
+def summary(name: str) -> str:
+    """The model scene's one-line summary: its builder's first sentence (nothing is built)."""
+    doc = " ".join((MODELS[name].__doc__ or "").split())
+    return doc.split(". ")[0].rstrip(".") + "." if doc else ""
+
+
+#: model scenes registered by other modules whose rebound run needs REBOUNDx (its effects or forces)
+NEEDS_REBOUNDX: set[str] = set()
+
+
+def register(builders: dict[str, Callable[..., ModelScene]], rules: dict[str, dict[str, Callable[[object], object]]],
+             needs_reboundx: set[str] = frozenset()) -> None:
+    """Add model scenes defined in another module (orbits.validate.perturbed): their builders, the rules of their
+    parameters (as PARAMETER_RULES) and which of them need REBOUNDx."""
+    MODELS.update(builders)
+    PARAMETER_RULES.update(rules)
+    NEEDS_REBOUNDX.update(needs_reboundx)
+
+
 def missing_extra(name: str) -> str | None:
     """Why the built-in model scene `name` cannot run on this install, or None: solar_system needs JPL DE421
-    (skyfield-data and jplephem) and, for rebound's 1PN term, REBOUNDx, all in the extra orbits[ephemeris]."""
+    (skyfield-data and jplephem) and, for rebound's 1PN term, REBOUNDx, all in the extra orbits[ephemeris]; the
+    scenes in NEEDS_REBOUNDX need REBOUNDx."""
+    if name in NEEDS_REBOUNDX and importlib.util.find_spec("reboundx") is None:
+        return "needs REBOUNDx: pip install 'orbits[ephemeris]'"
     if name != "solar_system":
         return None
     from orbits import ephemeris
@@ -326,14 +350,6 @@ MAX_OFFSET = 1e-4
 MIN_MASS_RATIO = 1e-7
 #: a smaller offset is lost in the round-off (1e-16) of positions of order 1
 MIN_OFFSET = 1e-14
-
-
-class ParameterError(OrbitsError, ValueError):
-    """A model parameter, or a combination of them (`name` None), that the model cannot run."""
-
-    def __init__(self, name: str | None, message: str):
-        super().__init__(message)
-        self.name = name
 
 
 def _number(value: object) -> float | None:

@@ -21,12 +21,20 @@ from orbits.core.errors import SceneError
 from orbits.nbody import NBodyProblem
 from orbits.scene import Scene
 from orbits.validate import models
+from orbits.validate import perturbed as _perturbed  # noqa: F401  (registers the perturbed-orbit model scenes)
 from orbits.validate.plan import CodeUnits, Measurement, Plan, Trajectory, plan
 
 
 def builtin_names() -> list[str]:
     """Names of every built-in scene, data scenes first, in the order `orbits validate` runs them."""
     return data_scenes.builtin_names() + models.builtin_names()
+
+
+def summaries() -> dict[str, str]:
+    """{name: one line} of every built-in scene, in the order `orbits validate` runs them: a data scene's
+    description, a model scene's builder's first sentence (nothing is integrated or built)."""
+    lines = {name: str(data_scenes.read(name)[0].get("description", "")) for name in data_scenes.builtin_names()}
+    return {**lines, **{name: models.summary(name) for name in models.builtin_names()}}
 
 
 def unavailable_builtins() -> dict[str, str]:

@@ -1,4 +1,5 @@
-"""orbits.lambert (orbits/transfers.py): the unit-aware Lambert solver: units, the result object, errors, repr."""
+"""orbits.lambert (orbits/manoeuvres/lambert.py): the unit-aware Lambert solver: units, the result object, errors,
+repr."""
 
 import astropy.units as u
 import numpy as np
@@ -8,7 +9,7 @@ import orbits
 from orbits import DegenerateOrbitError, OrbitDomainError, lambert
 from orbits.constants import BODIES
 from orbits.core import lambert as core
-from orbits.tools.bench_lambert import arrival_error
+from orbits.tools.bench.lambert import arrival_error
 
 
 def test_units_in_and_out_match_the_si_core():
@@ -67,7 +68,7 @@ def test_quantities_and_html():
 def test_the_public_name_is_the_function_whatever_was_imported_first():
     import importlib
 
-    importlib.import_module("orbits.transfers")
+    importlib.import_module("orbits.manoeuvres.lambert")
     assert orbits.lambert is lambert and callable(lambert)
 
 

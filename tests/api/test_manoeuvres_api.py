@@ -1,4 +1,4 @@
-"""Unit-aware rockets, manoeuvres and gravity assists (orbits.rocket, orbits.manoeuvres): doctests, published and
+"""Unit-aware rockets, manoeuvres and gravity assists (orbits.manoeuvres): doctests, published and
 notes' values, identities between the objects, broadcasting, reprs, tables and every input error."""
 
 import doctest
@@ -9,8 +9,9 @@ import numpy as np
 import pytest
 
 import orbits
-import orbits.manoeuvres
-import orbits.rocket
+import orbits.manoeuvres.assist
+import orbits.manoeuvres.impulsive
+import orbits.manoeuvres.rocket
 from orbits import (
     BiElliptic,
     CosmicVelocities,
@@ -31,7 +32,7 @@ from orbits import (
 KMS = u.km / u.s
 
 
-@pytest.mark.parametrize("module", [orbits.rocket, orbits.manoeuvres])
+@pytest.mark.parametrize("module", [orbits.manoeuvres.rocket, orbits.manoeuvres.impulsive, orbits.manoeuvres.assist])
 def test_doctests(module):
     assert doctest.testmod(module).failed == 0
 
@@ -62,7 +63,7 @@ def test_single_stage_rocket():
     assert rocket.burn_time.to_value(u.s) == pytest.approx(60e3 * 300 * 9.80665 / 2e6, rel=1e-15)
     assert rocket.gravity_loss().to_value(u.m / u.s) == pytest.approx(9.80665 * rocket.burn_time.value, rel=1e-15)
     assert repr(rocket).startswith("Rocket(1 stage, delta-v = 2.695723 km / s") and "\n" not in repr(rocket)
-    assert set(rocket.quantities()) == set(orbits.rocket.ROCKET_NAMES)
+    assert set(rocket.quantities()) == set(orbits.manoeuvres.rocket.ROCKET_NAMES)
     same = Rocket.single_stage(100 * u.t, 40 * u.t, exhaust_speed=300 * 9.80665 * u.m / u.s)
     assert same.delta_v == rocket.delta_v and "burn_time" not in same.quantities()
 

@@ -8,17 +8,18 @@ import astropy.units as u
 import numpy as np
 import pytest
 
-import orbits.mechanics.collisions
-import orbits.mechanics.oscillations
-import orbits.mechanics.projectile
-import orbits.mechanics.rotation
-from orbits import BODIES, OrbitDomainError
-from orbits.mechanics import (
+import orbits.collisions
+import orbits.oscillations
+import orbits.projectile
+import orbits.rotation
+from orbits import (
+    BODIES,
     Collision,
     ConicalPendulum,
     DampedOscillator,
     DrivenOscillator,
     EffectiveGravity,
+    OrbitDomainError,
     Pendulum,
     Projectile,
     RigidBody,
@@ -29,8 +30,8 @@ from orbits.mechanics import (
 )
 
 
-@pytest.mark.parametrize("module", [orbits.mechanics.collisions, orbits.mechanics.rotation,
-                                    orbits.mechanics.projectile, orbits.mechanics.oscillations])
+@pytest.mark.parametrize("module", [orbits.collisions, orbits.rotation, orbits.projectile,
+                                    orbits.oscillations])
 def test_docstring_examples(module):
     assert doctest.testmod(module).failed == 0
 
@@ -198,7 +199,8 @@ def test_pictures_draw_what_the_objects_compute(tmp_path):
     import matplotlib
 
     matplotlib.use("Agg")
-    from orbits.mechanics import Rolling, plots
+    from orbits import Rolling
+    from orbits import plot as plots
     from orbits.plot import save
 
     hit = Collision.head_on(2 * u.kg, 3 * u.m / u.s, 1 * u.kg, -1 * u.m / u.s, 0.5)

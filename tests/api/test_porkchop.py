@@ -1,5 +1,5 @@
-"""orbits.Porkchop (orbits/porkchop.py) and plot.porkchop: cell values against independent references, the grid's
-minima against a published mission-design table, masking, errors and what the picture draws.
+"""orbits.Porkchop (orbits/manoeuvres/porkchop.py) and plot.porkchop: cell values against independent references, the
+grid's minima against a published mission-design table, masking, errors and what the picture draws.
 
 Published values: Burke, Falck and McGuire, "Interplanetary Mission Design Handbook: Earth-to-Mars Mission
 Opportunities 2026 to 2045", NASA/TM-2010-216764, NASA Glenn Research Center (2010), Tables 2 (2026), 3 (2028) and

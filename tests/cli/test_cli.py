@@ -138,12 +138,18 @@ def test_validate_without_the_ephemeris_extra_skips_solar_system_and_says_so(mon
     monkeypatch.setattr(importlib.util, "find_spec", lambda name, *a: None if name == "reboundx" else
                         real_find_spec(name, *a))
     monkeypatch.setattr(validate, "builtin_names", lambda: ["circular", "solar_system"])
+    from orbits.validate import perturbed
+
     assert scenes.unavailable_builtins() == {
-        "solar_system": "needs JPL DE421 (skyfield-data, jplephem) and REBOUNDx: pip install 'orbits[ephemeris]'"}
+        "solar_system": "needs JPL DE421 (skyfield-data, jplephem) and REBOUNDx: pip install 'orbits[ephemeris]'",
+        **{name: "needs REBOUNDx: pip install 'orbits[ephemeris]'" for name in perturbed.SCENES
+           if name != "kozai_lidov"}}
     result = run("validate")
     assert result.exit_code == 0, result.output
-    assert result.stderr.strip() == ("orbits: skipped the built-in scene solar_system: it needs JPL DE421 "
-                                     "(skyfield-data, jplephem) and REBOUNDx: pip install 'orbits[ephemeris]'")
+    said = result.stderr.strip().splitlines()
+    assert ("orbits: skipped the built-in scene solar_system: it needs JPL DE421 (skyfield-data, jplephem) and "
+            "REBOUNDx: pip install 'orbits[ephemeris]'") in said
+    assert len(said) == 1 + len(perturbed.SCENES) - 1  # and each perturbed scene that needs REBOUNDx
     assert "circular" in result.stdout and "solar_system" not in result.stdout
 
 

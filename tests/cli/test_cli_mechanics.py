@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from orbits.mechanics import Collision, Pendulum, Projectile
+from orbits import Collision, Pendulum, Projectile
 from orbits_cli.main import app
 
 runner = CliRunner()

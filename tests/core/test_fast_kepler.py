@@ -225,3 +225,20 @@ def test_one_compilation_for_read_only_and_broadcast_inputs():
     kepler.eccentric_anomaly(np.broadcast_to(M, (2, 10)), np.array([[0.1], [0.2]]))
     kepler.eccentric_anomaly(1.0, 0.5)
     assert len(_fast_kepler.elliptic.signatures) == 1
+
+
+def test_results_do_not_depend_on_where_the_arrays_lie():
+    """Inputs and outputs adjacent in one buffer, offset by 0 to 3 elements, give the results of separate arrays
+    (the kernels loop over views, whatever the layout; their speed is the benchmark's alignment row)."""
+    from orbits.core import _fast_kepler
+
+    rng = np.random.default_rng(61)
+    n = 5000
+    M, e = rng.uniform(-10, 10, n), rng.uniform(0, 1, n)
+    expected = np.empty(n)
+    assert _fast_kepler.elliptic(0, n, M, e, expected) == 0
+    for offset in range(4):
+        buffer = np.empty(3 * n + 4)
+        a, b, out = buffer[:n], buffer[n:2 * n], buffer[2 * n + offset:3 * n + offset]
+        a[:], b[:] = M, e
+        assert _fast_kepler.elliptic(0, n, a, b, out) == 0 and np.array_equal(out, expected)

@@ -1,5 +1,4 @@
-"""Every notebook runs top to bottom without error, in under a minute, and is committed without outputs. Each
-asserts its key numbers in the cells that compute them, so a changed number fails the run."""
+"""Every notebook runs top to bottom without error, in under a minute, and is committed without outputs."""
 
 from pathlib import Path
 
@@ -30,10 +29,3 @@ def test_notebook_is_committed_without_outputs(path):
     notebook = nbformat.read(path, as_version=4)
     assert all(not cell.get("outputs") and not cell.get("execution_count") for cell in notebook.cells
                if cell.cell_type == "code")
-
-
-@pytest.mark.parametrize("path", NOTEBOOKS, ids=[p.stem for p in NOTEBOOKS])
-def test_notebook_asserts_its_key_numbers(path):
-    notebook = nbformat.read(path, as_version=4)
-    code = [cell.source for cell in notebook.cells if cell.cell_type == "code"]
-    assert any(line.lstrip().startswith("assert ") for source in code for line in source.splitlines())

@@ -12,8 +12,8 @@ import astropy.units as u
 import numpy as np
 import pytest
 
+from orbits import Collision, RigidBody
 from orbits.core import collisions, oscillations, projectile, rotation
-from orbits.mechanics import Collision, RigidBody
 
 hy = pytest.importorskip("heyoka")
 

@@ -11,7 +11,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from orbits.tools.bench import WIDTH, _best_time, _mega, _sig, _table, _wrap
+from orbits.tools.bench.harness import best_time
+from orbits.tools.bench.table import WIDTH, mega, plain_table, sig, wrap
 
 #: the DE421 chain of Mars relative to the solar-system barycentre
 _MARS = ((0, 4), (4, 499))
@@ -88,10 +89,10 @@ def bench_ephemeris(n: int = 100_000, seed: int = 0, repeats: int = 3) -> list[E
         return [EphemerisRow("orbits", "needs orbits[ephemeris] (skyfield-data, jplephem)", n, np.nan, np.nan, np.nan)]
     when = _epochs(n, seed)
     ephemeris.state("Mars", when[:2], center="SSB", source="de421")  # open the kernel outside the timing
-    seconds, (r_ref, v_ref) = _best_time(_jplephem(when), repeats)
+    seconds, (r_ref, v_ref) = best_time(_jplephem(when), repeats)
     rows = [EphemerisRow("jplephem (two segments, raw)", "ok", n, n / seconds, 0.0, 0.0)]
     for name, factory in (("orbits.ephemeris.state", _orbits), ("astropy get_body_barycentric_posvel", _astropy)):
-        seconds, (r, v) = _best_time(factory(when), repeats)
+        seconds, (r, v) = best_time(factory(when), repeats)
         rows.append(EphemerisRow(name, "ok", n, n / seconds, float(np.abs(r - r_ref).max()),
                                  float(np.abs(v - v_ref).max())))
     if importlib.util.find_spec("skyfield") is None:
@@ -107,8 +108,8 @@ def format_ephemeris(rows: list[EphemerisRow]) -> str:
         if r.status != "ok":
             cells.append([f"{r.name}: {r.status}", "-", "-", "-", "-"])
             continue
-        cells.append([r.name, _mega(r.per_second), _sig(r.per_second / reference, 3), _sig(r.dr, 2),
-                      _sig(r.dv, 2)])
+        cells.append([r.name, mega(r.per_second), sig(r.per_second / reference, 3), sig(r.dr, 2),
+                      sig(r.dv, 2)])
     header = ["Mars from the barycentre, DE421", "M states/s", "x jplephem", "max |dr| m", "max |dv| m/s"]
     title = f"{rows[0].n:,} random TDB epochs 1900-2050: positions and velocities, one thread, best of the repeats"
-    return "\n".join([*_wrap(title, WIDTH), *_table(header, cells, stack=True)])
+    return "\n".join([*wrap(title, WIDTH), *plain_table(header, cells, stack=True)])

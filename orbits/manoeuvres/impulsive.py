@@ -1,5 +1,5 @@
-"""Impulsive manoeuvres and gravity assists, with astropy units: Hohmann, bi-elliptic, plane changes, phasing, a
-hyperbolic departure (the notes' third cosmic velocity as a burn, XXI.ix) and a planet's slingshot (IX.vii).
+"""Impulsive manoeuvres, with astropy units: Hohmann, bi-elliptic, plane changes, phasing and a hyperbolic
+departure (the notes' third cosmic velocity as a burn, XXI.ix).
 
     >>> import astropy.units as u
     >>> from orbits import BiElliptic, Departure, Hohmann
@@ -16,8 +16,7 @@ hyperbolic departure (the notes' third cosmic velocity as a burn, XXI.ix) and a 
 Every burn is instant; a signed speed change counts along the motion. The speed differences are formed without
 cancellation (orbits.core.manoeuvres, <= 4 ulp against mpmath). Each manoeuvre's `impulse_plan()` lays it out as
 burns at times for orbits.validate.impulses, where rebound and heyoka fly it and land on the predicted orbit to
-1.5e-13 (tests/validation/test_manoeuvres_integration.py). A gravity assist reuses Flyby for the turn of v_inf; a
-Sun-planet-probe integration agrees with it to the order of the planet's mass ratio.
+1.5e-13 (tests/validation/test_manoeuvres_integration.py). Gravity assists live in orbits.manoeuvres.assist.
 """
 
 from collections.abc import Iterable
@@ -28,35 +27,14 @@ import astropy.units as u
 import numpy as np
 
 from orbits import display, inputs, units
-from orbits.constants import Body, body
-from orbits.core import assist as assist_core
-from orbits.core import collisions as collisions_core
+from orbits.constants import Body
 from orbits.core import manoeuvres as core
 from orbits.core.checks import check_finite, first_where
 from orbits.core.errors import OrbitDomainError
 from orbits.core.twobody import circular_speed
 from orbits.escape import CosmicVelocities
-from orbits.flyby import Flyby
 from orbits.orbit import PRIMARY, Orbit
 from orbits.tables import quantity_table
-
-
-def _named(primary):
-    if isinstance(primary, str):
-        return body(primary)
-    return primary if isinstance(primary, Body) else None
-
-
-def _orbit_radius(primary, value, name):
-    """A circular orbit's radius (m): positive and, about a catalogued body, above its equatorial radius."""
-    r = inputs.positive(value, units.M, name)
-    named = _named(primary)
-    if named is not None and np.any(r <= named.radius):
-        bad, = first_where(r <= named.radius, r)
-        raise OrbitDomainError(
-            f"{name} = {bad!r} m is inside {named.name} (allowed: above its radius {named.radius!r} m); an orbit "
-            f"radius counts from the centre: add the radius to an altitude")
-    return r
 
 
 def _turn_angle(value, name):
@@ -124,8 +102,8 @@ class Hohmann(_Table):
         """From the circular orbit of radius r1 to that of radius r2 (lengths from the centre) about a primary
         (name, Body, mass or GM), optionally turning the plane by `inclination_change` (angle in [0, 180] deg)."""
         mu = inputs.gravitational_parameter(primary, PRIMARY)
-        return cls(*_fields(mu, _orbit_radius(primary, r1, "initial orbit radius r1"),
-                            _orbit_radius(primary, r2, "final orbit radius r2"),
+        return cls(*_fields(mu, inputs.orbit_radius(primary, r1, "initial orbit radius r1"),
+                            inputs.orbit_radius(primary, r2, "final orbit radius r2"),
                             _turn_angle(inclination_change, "inclination change")))
 
     @cached_property
@@ -233,8 +211,8 @@ class BiElliptic(_Table):
                 rb: u.Quantity) -> "BiElliptic":
         """From the circle r1 out to the apoapsis rb and down to the circle r2 (lengths from the centre)."""
         mu = inputs.gravitational_parameter(primary, PRIMARY)
-        r1 = _orbit_radius(primary, r1, "initial orbit radius r1")
-        r2 = _orbit_radius(primary, r2, "final orbit radius r2")
+        r1 = inputs.orbit_radius(primary, r1, "initial orbit radius r1")
+        r2 = inputs.orbit_radius(primary, r2, "final orbit radius r2")
         rb = inputs.positive(rb, units.M, "intermediate radius rb")
         low = rb <= np.maximum(r1, r2)
         if np.any(low):
@@ -313,7 +291,7 @@ class PlaneChange(_Table):
     def at(cls, primary: Body | str | u.Quantity, radius: u.Quantity, angle: u.Quantity) -> "PlaneChange":
         """On the circle of radius r (length) about a primary, by `angle` (angle in [0, 180] deg) at a node."""
         mu = inputs.gravitational_parameter(primary, PRIMARY)
-        return cls(*_fields(mu, _orbit_radius(primary, radius, "orbit radius r"),
+        return cls(*_fields(mu, inputs.orbit_radius(primary, radius, "orbit radius r"),
                             _turn_angle(angle, "inclination change")))
 
     @cached_property
@@ -378,7 +356,7 @@ class Phasing(_Table):
         """Catch a target `phase` (angle) ahead on the circle of radius r (length) after `revolutions` (>= 1) of
         the phasing orbit; a negative phase waits for a target behind on a larger orbit."""
         mu = inputs.gravitational_parameter(primary, PRIMARY)
-        r = _orbit_radius(primary, radius, "orbit radius r")
+        r = inputs.orbit_radius(primary, radius, "orbit radius r")
         angle = inputs.angle(phase, "phase")
         k = np.asarray(revolutions)
         if not np.issubdtype(k.dtype, np.integer) or np.any(k < 1):
@@ -391,7 +369,7 @@ class Phasing(_Table):
                 f"phase = {bad!r} rad is outside the allowed range (-inf, {2 * np.pi * turns * MAX_PHASING_FRACTION!r})"
                 f" rad for {int(turns)} revolution(s): the phasing orbit would need a < r / 2; use more revolutions")
         phasing = cls(mu, r, angle, k)
-        phasing._check_clear_of(_named(primary))
+        phasing._check_clear_of(inputs.named_body(primary))
         return phasing
 
     def _check_clear_of(self, named):
@@ -532,126 +510,3 @@ class Departure(_Table):
         return display.one_line("Departure", "r = " + display.summary(self.r << units.M),
                                 "v_inf = " + display.summary(self.speed_at_infinity),
                                 "delta-v = " + display.summary(self.delta_v), f"about {display.body_name(self.mu)}")
-
-
-# ---- gravity assist --------------------------------------------------------------------------------------
-
-
-def elastic_collision(m1: Body | str | u.Quantity, m2: Body | str | u.Quantity | None, v1: u.Quantity,
-                      v2: u.Quantity) -> tuple[u.Quantity, u.Quantity]:
-    """(v1', v2') (m/s) after a head-on elastic collision (IX.vii) of masses m1, m2 (names, masses or GMs; m2 =
-    None for a massless probe) moving at v1, v2 (speeds along the line, any sign). A planet (m1) meeting a probe
-    head on sends it back at 2 v1 - v2: the slingshot."""
-    gm1 = inputs.gravitational_parameter(m1, "mass m1")
-    gm2 = 0.0 if m2 is None else inputs.gravitational_parameter(m2, "mass m2")
-    speeds = [units.to_si(v, units.M_PER_S, name) for v, name in ((v1, "velocity v1"), (v2, "velocity v2"))]
-    for value, name in zip(speeds, ("velocity v1", "velocity v2"), strict=True):
-        check_finite(value, name, "m / s")
-    after_1, after_2 = collisions_core.velocities_after(gm1, speeds[0], gm2, speeds[1], 1.0)
-    return after_1 << units.M_PER_S, after_2 << units.M_PER_S
-
-
-@dataclass(frozen=True, eq=False, repr=False)
-class GravityAssist(_Table):
-    """A planet's flyby seen from the Sun (patched conics): the planet-frame hyperbola is `flyby`, the probe's
-    heliocentric velocity v_in (m/s, (..., 3)) meets the planet moving at v_planet (m/s), and the excess
-    velocity turns counterclockwise about `normal` (3,) by the flyby's deflection (IX.vii: an elastic collision).
-    """
-
-    flyby: Flyby
-    v_in: np.ndarray
-    v_planet: np.ndarray
-    normal: np.ndarray
-
-    NAMES = ["speed_at_infinity", "periapsis_distance", "turning_angle", "incoming_velocity", "outgoing_velocity",
-             "incoming_speed", "outgoing_speed", "delta_v", "delta_v_magnitude", "speed_gain",
-             "specific_energy_change"]
-
-    @classmethod
-    def past(cls, planet: Body | str | u.Quantity, v_in: u.Quantity, v_planet: u.Quantity,
-             periapsis: u.Quantity, normal: u.Quantity | np.ndarray | None = None) -> "GravityAssist":
-        """A probe at heliocentric velocity v_in (speed vector) passes the planet (name, Body, mass or GM) moving at
-        v_planet (speed vector) at closest approach `periapsis` (length), turning counterclockwise about `normal`
-        (a direction, default +z: the planet's orbit normal when both velocities lie in the xy plane)."""
-        v_in = inputs.vector(v_in, units.M_PER_S, "probe velocity v_in")
-        v_planet = inputs.vector(v_planet, units.M_PER_S, "planet velocity v_planet")
-        axis = np.array([0.0, 0.0, 1.0]) if normal is None else np.asarray(normal, dtype=float)
-        excess = v_in - v_planet
-        speed = np.linalg.norm(excess, axis=-1)
-        if np.any(speed == 0):
-            raise OrbitDomainError("v_in equals v_planet: a probe at rest relative to the planet has no flyby "
-                                   "(speed at infinity v_inf = 0 m / s; allowed: > 0)")
-        off_plane = np.linalg.norm(np.cross(axis, excess), axis=-1) <= 1e-12 * np.linalg.norm(axis) * speed
-        if np.any(off_plane) or axis.shape[-1:] != (3,):
-            raise OrbitDomainError(f"normal = {axis.tolist()} must be a 3-vector not parallel to v_in - v_planet: "
-                                   "it fixes the plane in which the excess velocity turns")
-        periapsis = _orbit_radius(planet, periapsis, "periapsis distance rp") << units.M  # not inside a named planet
-        flyby = Flyby.past(planet, speed << units.M_PER_S, periapsis=periapsis)
-        return cls(flyby, v_in, v_planet, axis)
-
-    @cached_property
-    def speed_at_infinity(self) -> u.Quantity:
-        """|v_in - v_planet| (m/s), kept by the elastic turn."""
-        return self.flyby.speed_at_infinity
-
-    @cached_property
-    def periapsis_distance(self) -> u.Quantity:
-        """Closest approach (m) to the planet's centre."""
-        return self.flyby.periapsis_distance
-
-    @cached_property
-    def turning_angle(self) -> u.Quantity:
-        """delta = 2 asin(1 / e) (rad), from Flyby.deflection_angle."""
-        return self.flyby.deflection_angle
-
-    @cached_property
-    def incoming_velocity(self) -> u.Quantity:
-        """v_in (m/s), heliocentric, before the pass."""
-        return self.v_in << units.M_PER_S
-
-    @cached_property
-    def outgoing_velocity(self) -> u.Quantity:
-        """v_planet + the turned v_inf (m/s), heliocentric, after the pass."""
-        angle = self.flyby.deflection_angle.to_value(units.RAD)
-        return assist_core.outgoing_velocity(self.v_in, self.v_planet, self.normal, angle) << units.M_PER_S
-
-    @cached_property
-    def incoming_speed(self) -> u.Quantity:
-        """|v_in| (m/s)."""
-        return np.linalg.norm(self.v_in, axis=-1) << units.M_PER_S
-
-    @cached_property
-    def outgoing_speed(self) -> u.Quantity:
-        """|v_out| (m/s)."""
-        return np.linalg.norm(self.outgoing_velocity.to_value(units.M_PER_S), axis=-1) << units.M_PER_S
-
-    @cached_property
-    def delta_v(self) -> u.Quantity:
-        """v_out - v_in (m/s, vector): the heliocentric velocity change, free of propellant."""
-        return self.outgoing_velocity - self.incoming_velocity
-
-    @cached_property
-    def delta_v_magnitude(self) -> u.Quantity:
-        """2 v_inf / (1 + r_p v_inf**2 / mu) = 2 v_inf sin(delta / 2) (m/s)."""
-        fly = self.flyby
-        return assist_core.delta_v_magnitude(fly.v_inf, fly.periapsis_distance.to_value(units.M),
-                                             fly.mu) << units.M_PER_S
-
-    @cached_property
-    def speed_gain(self) -> u.Quantity:
-        """|v_out| - |v_in| (m/s): positive when the probe passes behind the planet."""
-        return self.outgoing_speed - self.incoming_speed
-
-    @cached_property
-    def specific_energy_change(self) -> u.Quantity:
-        """V . (v_out - v_in) (J/kg): the heliocentric energy per unit mass taken from the planet's motion."""
-        change = np.sum(self.v_planet * self.delta_v.to_value(units.M_PER_S), axis=-1)
-        return change << units.J_PER_KG
-
-    def __repr__(self) -> str:
-        """E.g. "GravityAssist(v_inf = 5.6 km/s, turn = 100 deg, dv = 8 km/s, speed gain = 3 km/s, about Jupiter)"."""
-        return display.one_line("GravityAssist", "v_inf = " + display.summary(self.speed_at_infinity),
-                                "turn = " + display.summary(self.turning_angle),
-                                "dv = " + display.summary(self.delta_v_magnitude),
-                                "speed gain = " + display.summary(self.speed_gain),
-                                f"about {display.body_name(self.flyby.mu)}")

@@ -1,22 +1,22 @@
-"""Pictures of the mechanics objects (notes IX, XI, XX, XXV). matplotlib is imported only when drawing.
+"""Pictures of the mechanics of the notes: collisions in velocity space (IX), rolling down an incline (XI),
+projectile paths (XX), pendulum periods, damped motion and the normal force round a vertical circle (XXV).
 
-Every function draws on a given Axes (or a new Figure) and returns (fig, ax); axis labels carry units; save with
-orbits.plot.save (atomic PNG, SVG or PDF).
+Each function takes the objects it draws ({label: object} or one object: an orbits Collision, Projectile, Pendulum,
+DampedOscillator, VerticalCircle or Rolling) and reads their properties.
 """
 
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import astropy.units as u
 import numpy as np
 
-from orbits import plot
-
-if TYPE_CHECKING:
-    from orbits.mechanics import Collision, DampedOscillator, Pendulum, Projectile, Rolling, VerticalCircle
+from orbits.core.oscillations import pendulum_period, pendulum_period_series
+from orbits.plot import frame
 
 
 def _axes(ax):
-    return plot._axes(ax, figsize=(6.4, 4.8))
+    """(figure, axes): those of `ax`, or a new 6.4 x 4.8 inch figure."""
+    return frame.axes(ax, figsize=(6.4, 4.8))
 
 
 def _finish(ax, x_label, y_label):
@@ -24,10 +24,10 @@ def _finish(ax, x_label, y_label):
     ax.set_xlabel(x_label)
     ax.set_ylabel(y_label)
     ax.grid(alpha=0.3)
-    plot._legend_outside(ax)
+    frame.legend_outside(ax)
 
 
-def collision_velocities(collision: "Collision", ax: Any = None) -> tuple[Any, Any]:
+def collision_velocities(collision: Any, ax: Any = None) -> tuple[Any, Any]:
     """The velocities before (solid, round tip) and after (dashed, square tip) a collision as arrows in velocity
     space, with the centre-of-mass velocity (IX). A head-on collision's arrows lie along the line, one row each;
     an oblique one's are drawn from the origin, tips marked so that collinear arrows and zero vectors show."""
@@ -75,7 +75,7 @@ def collision_velocities(collision: "Collision", ax: Any = None) -> tuple[Any, A
     return fig, ax
 
 
-def projectile_paths(projectiles: "dict[str, Projectile]", ax: Any = None, samples: int = 200) -> tuple[Any, Any]:
+def projectile_paths(projectiles: dict[str, Any], ax: Any = None, samples: int = 200) -> tuple[Any, Any]:
     """y against x for {label: Projectile} (XX), each with its apex (triangle) and landing point (dot), in m."""
     fig, ax = _axes(ax)
     for k, (label, shot) in enumerate(projectiles.items()):
@@ -90,11 +90,9 @@ def projectile_paths(projectiles: "dict[str, Projectile]", ax: Any = None, sampl
     return fig, ax
 
 
-def pendulum_periods(pendulum: "Pendulum | None" = None, ax: Any = None, samples: int = 400) -> tuple[Any, Any]:
+def pendulum_periods(pendulum: Any = None, ax: Any = None, samples: int = 400) -> tuple[Any, Any]:
     """T / T0 against the amplitude up to 179 deg: exact (AGM), and the series 1 + theta0**2 / 16 (XXV.iv); a
     given Pendulum is marked."""
-    from orbits.core.oscillations import pendulum_period, pendulum_period_series
-
     fig, ax = _axes(ax)
     amplitude = np.linspace(0.0, np.radians(179.0), samples)
     ax.plot(np.degrees(amplitude), pendulum_period(1.0, amplitude) / (2 * np.pi), color="C0",
@@ -108,7 +106,7 @@ def pendulum_periods(pendulum: "Pendulum | None" = None, ax: Any = None, samples
     return fig, ax
 
 
-def damped_motion(oscillators: "dict[str, DampedOscillator]", duration: u.Quantity, ax: Any = None,
+def damped_motion(oscillators: dict[str, Any], duration: u.Quantity, ax: Any = None,
                   samples: int = 400) -> tuple[Any, Any]:
     """x(t) for {label: DampedOscillator} over `duration` (XXV.v)."""
     fig, ax = _axes(ax)
@@ -121,12 +119,12 @@ def damped_motion(oscillators: "dict[str, DampedOscillator]", duration: u.Quanti
     return fig, ax
 
 
-def vertical_circle_forces(circles: "dict[str, VerticalCircle]", ax: Any = None,
+def vertical_circle_forces(circles: dict[str, Any], ax: Any = None,
                            samples: int = 721) -> tuple[Any, Any]:
-    """N / (m g) against the angle from the lowest point (-180 to 180 deg) for {label: VerticalCircle} (XXV.vi,
-    ERRATA #101), over the arc each body follows on the circle: all of it when looping, up to the turning angle
-    when swinging (marked), and up to where a string slackens (N = 0, marked): beyond it the body is in free
-    flight, off the circle. A rod's N < 0 pushes outward."""
+    """N / (m g) against the angle from the lowest point (-180 to 180 deg) for {label: VerticalCircle} (XXV.vi),
+    over the arc each body follows on the circle: all of it when looping, up to the turning angle when swinging
+    (marked), and up to where a string slackens (N = 0, marked): beyond it the body is in free flight, off the
+    circle. A rod's N < 0 pushes outward."""
     fig, ax = _axes(ax)
     theta = np.linspace(-np.pi, np.pi, samples)
     for k, (label, circle) in enumerate(circles.items()):
@@ -154,7 +152,7 @@ def vertical_circle_forces(circles: "dict[str, VerticalCircle]", ax: Any = None,
     return fig, ax
 
 
-def rolling_race(rollings: "dict[str, Rolling]", length: u.Quantity, ax: Any = None,
+def rolling_race(rollings: dict[str, Any], length: u.Quantity, ax: Any = None,
                  samples: int = 200) -> tuple[Any, Any]:
     """Distance down an incline against time for {label: Rolling} (XI), each until it has covered `length`."""
     fig, ax = _axes(ax)

@@ -5,11 +5,11 @@ Two data sets, both heliocentric in SI units:
   Throughput (solves per second, one thread) and the median and worst arrival error |r(tof) - r2| / |r2|,
   where r(tof) is the returned v1 propagated at 60 digits (orbits.tools.reference.propagate, mpmath), on the
   first n_ref transfers.
-- "hard" (HARD_CASES): transfer angles within 1e-8 of 0, pi and 2 pi, exactly pi (with a plane normal), the
+- "hard" (hard_cases()): transfer angles within 1e-8 of 0, pi and 2 pi, exactly pi (with a plane normal), the
   parabolic time of flight, N = 1 and 5 at their minimum time (both branches), very short and very long
   flights, at unit and SI scale. The times of the parabolic and minimum-time cases are computed here in mpmath
   from Lagrange's equation. A case fails when the solver raises, returns a non-finite v1, or misses r2 by more
-  than 1e-13 |r2| (the issue's criterion; one ulp of v1 moves the end point by less than 8e-15 on these cases).
+  than 1e-13 |r2| (TOLERANCE; one ulp of v1 moves the end point by less than 8e-15 on these cases).
 
 Peers: lamberthub's izzo2015 (numba) and gooding1990, pykep's lambert_problem and hapsira's izzo, each through
 its per-call Python API (the way their users call them) and marked "not installed" when absent. orbits runs
@@ -25,12 +25,13 @@ from dataclasses import dataclass
 import mpmath
 import numpy as np
 
-from orbits.tools.bench import WIDTH, _mark, _mega, _notes, _orbits_threads, _sig, _table, _wrap, rows_to_json
+from orbits.tools.bench.harness import orbits_threads
+from orbits.tools.bench.table import WIDTH, mark, mega, notes, plain_table, sig, wrap
 
 AU = 1.495978707e11
 MU_SUN = 1.32712440041279419e20  # m3/s2, DE440's GM of the Sun
 DAY = 86400.0
-#: the issue's acceptance bound on the arrival error, relative to |r2|
+#: the acceptance bound on the arrival error, relative to |r2|
 TOLERANCE = 1e-13
 #: transfers on which a per-call peer is timed (its throughput is per call, so it scales)
 PER_CALL_SUBSET = 20_000
@@ -122,7 +123,7 @@ def minimum_time(r1, r2, mu, revolutions, long_way=False) -> float:
 
 
 def hard_cases() -> list[LambertCase]:
-    """The issue's hard cases, at unit scale (mu = 1, |r1| = 1) and at SI scale (1 AU about the Sun)."""
+    """The hard cases (module docstring), at unit scale (mu = 1, |r1| = 1) and at SI scale (1 AU about the Sun)."""
     cases = []
     for scale, mu, unit in ((1.0, 1.0, "unit"), (AU, MU_SUN, "SI")):
         year = 2 * math.pi * math.sqrt(scale**3 / mu)  # the period of the circle of radius `scale`
@@ -191,11 +192,11 @@ def _orbits_solver(threads):
     from orbits.core.lambert import solve
 
     def batch(r1, r2, tof, mu):
-        with _orbits_threads(threads):
+        with orbits_threads(threads):
             return solve(r1, r2, tof, mu).v1
 
     def one(case):
-        with _orbits_threads(threads):
+        with orbits_threads(threads):
             return solve(case.r1, case.r2, case.tof, case.mu, case.revolutions, case.branch, case.prograde,
                          case.normal).v1
 
@@ -345,21 +346,21 @@ def format_lambert(rows: Sequence[LambertRow]) -> str:
     texts, table = {}, []
     for r in rows:
         if r.status == "ok":
-            cells = [_mega(r.throughput_per_s), _sig(r.throughput_per_s / reference, 3), f"{r.median_error:.1e}",
+            cells = [mega(r.throughput_per_s), sig(r.throughput_per_s / reference, 3), f"{r.median_error:.1e}",
                      f"{r.worst_error:.1e}", f"{r.hard_failed}/{r.hard_total}"]
             note = r.note + (f" (compile/setup {r.setup_seconds:.2f} s)" if r.setup_seconds > 0.05 else "")
         else:
             cells = ["-"] * 5
             note = r.status if r.status == "not installed" else f"{r.status}: {r.note}"
-        table.append([r.method + _mark(texts, note), *cells])
-    lines = _table(["method", "M/s", "ratio", "median", "worst", "hard failed"], table)
+        table.append([r.method + mark(texts, note), *cells])
+    lines = plain_table(["method", "M/s", "ratio", "median", "worst", "hard failed"], table)
     legend = ("M/s: millions of Lambert solves per second on one thread (random zero-revolution transfers, "
               "0.5-3 AU, 30-500 d). ratio: throughput over that of orbits. median, worst: arrival error "
               "|r(tof) - r2| / |r2| of v1 propagated at 60 digits (mpmath). hard failed: cases raising, NaN, or "
               f"missing r2 by more than {TOLERANCE:g} |r2|.")
     failures = [f"{r.method} failed: {_grouped(r.failed_cases)}" for r in rows if r.failed_cases]
-    return "\n".join(lines + [""] + _wrap(legend, WIDTH) + _notes(texts, WIDTH)
-                     + [line for text in failures for line in _wrap(text, WIDTH, subsequent="  ")])
+    return "\n".join(lines + [""] + wrap(legend, WIDTH) + notes(texts, WIDTH)
+                     + [line for text in failures for line in wrap(text, WIDTH, subsequent="  ")])
 
 
 def _grouped(names):
@@ -371,4 +372,4 @@ def _grouped(names):
     return ", ".join(f"{kind} ({count})" for kind, count in kinds.items())
 
 
-__all__ = ["LambertCase", "LambertRow", "bench_lambert", "format_lambert", "hard_cases", "rows_to_json"]
+__all__ = ["LambertCase", "LambertRow", "bench_lambert", "format_lambert", "hard_cases"]

@@ -47,8 +47,8 @@ from astropy.utils.masked import Masked
 from orbits import display, ephemeris, inputs, units
 from orbits.core import frames
 from orbits.core.errors import OrbitDomainError
+from orbits.manoeuvres.lambert import lambert
 from orbits.tables import quantity_table
-from orbits.transfers import lambert
 
 #: the Sun's GM (m3/s2) used for the transfers: JPL DE430's, the mass that goes with the ephemeris
 SUN_GM = ephemeris.DE430_GM["Sun"]

@@ -2,7 +2,7 @@
 oscillators, and motion on a vertical circle.
 
     >>> import astropy.units as u
-    >>> from orbits.mechanics import Pendulum, VerticalCircle
+    >>> from orbits import Pendulum, VerticalCircle
     >>> swing = Pendulum.simple(1 * u.m, 170 * u.deg)
     >>> swing.period.round(6), swing.small_angle_period.round(6)
     (<Quantity 4.89436 s>, <Quantity 2.006409 s>)
@@ -23,7 +23,9 @@ import numpy as np
 from orbits import display, inputs, units
 from orbits.core import oscillations as core
 from orbits.core.errors import OrbitDomainError
-from orbits.mechanics._common import ACCELERATION, DIMENSIONLESS, RATE, gravity, non_negative, signed, table
+from orbits.inputs import gravity, non_negative, signed
+from orbits.tables import attribute_table
+from orbits.units import ACCELERATION, DIMENSIONLESS, RATE
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -87,7 +89,7 @@ class Pendulum(display.Displayed):
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those)."""
-        return table(self, ["amplitude_angle", "small_angle_frequency", "small_angle_period", "period",
+        return attribute_table(self, ["amplitude_angle", "small_angle_frequency", "small_angle_period", "period",
                             "period_ratio"], only)
 
 
@@ -166,7 +168,7 @@ class DampedOscillator(display.Displayed):
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those)."""
-        return table(self, ["natural_frequency", "damped_frequency", "quality_factor"], only)
+        return attribute_table(self, ["natural_frequency", "damped_frequency", "quality_factor"], only)
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -232,7 +234,7 @@ class DrivenOscillator(display.Displayed):
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those)."""
-        return table(self, ["amplitude", "phase_lag", "velocity_amplitude", "resonance_frequency",
+        return attribute_table(self, ["amplitude", "phase_lag", "velocity_amplitude", "resonance_frequency",
                             "quality_factor"], only)
 
 
@@ -342,5 +344,5 @@ class VerticalCircle(display.Displayed):
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those); without `only`, what this motion lacks is left out."""
-        return table(self, ["turning_angle", "leaving_angle", "period", "speed_at_top", "normal_force_at_bottom",
-                            "normal_force_at_top"], only)
+        return attribute_table(self, ["turning_angle", "leaving_angle", "period", "speed_at_top",
+                                      "normal_force_at_bottom", "normal_force_at_top"], only)

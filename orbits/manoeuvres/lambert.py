@@ -12,8 +12,6 @@ Izzo's algorithm with the cancellation-free forms of orbits.core.lambert (which 
 revolutions, branch, prograde and the plane normal). Every argument broadcasts: arrays of positions, times of
 flight and revolution counts give arrays of transfers. The arrival point of the returned v1, propagated at 60
 digits, is within 1e-13 |r2| on the hard cases of tests/core/test_lambert.py.
-
-The module is orbits.transfers, so that the public name `orbits.lambert` is always the function.
 """
 
 from collections.abc import Iterable

@@ -1,7 +1,7 @@
 """Collisions of two bodies with a coefficient of restitution (notes IX), with astropy units.
 
     >>> import astropy.units as u
-    >>> from orbits.mechanics import Collision, energy_transfer
+    >>> from orbits import Collision, energy_transfer
     >>> hit = Collision.head_on(2 * u.kg, 3 * u.m / u.s, 1 * u.kg, 0 * u.m / u.s, restitution=1)
     >>> hit.velocity1_after, hit.velocity2_after
     (<Quantity 1. m / s>, <Quantity 4. m / s>)
@@ -21,9 +21,12 @@ import astropy.units as u
 import numpy as np
 
 from orbits import display, inputs, units
+from orbits.constants import Body
 from orbits.core import collisions as core
 from orbits.core.checks import require_positive
-from orbits.mechanics._common import DIMENSIONLESS, planar_vector, signed, table
+from orbits.inputs import planar_vector, signed
+from orbits.tables import attribute_table
+from orbits.units import DIMENSIONLESS
 
 
 def _restitution(value):
@@ -155,7 +158,7 @@ class Collision(display.Displayed):
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those)."""
-        return table(self, COLLISION_NAMES, only)
+        return attribute_table(self, COLLISION_NAMES, only)
 
 
 COLLISION_NAMES = [
@@ -181,3 +184,15 @@ def slingshot(planet_velocity: u.Quantity, craft_velocity: u.Quantity,
     planet = signed(planet_velocity, units.M_PER_S, "planet velocity U")
     craft = signed(craft_velocity, units.M_PER_S, "craft velocity v")
     return core.bounce_off_moving_wall(planet, craft, _restitution(restitution)) << units.M_PER_S
+
+
+def elastic_collision(m1: Body | str | u.Quantity, m2: Body | str | u.Quantity | None, v1: u.Quantity,
+                      v2: u.Quantity) -> tuple[u.Quantity, u.Quantity]:
+    """(v1', v2') (m/s) after a head-on elastic collision (IX.vii) of masses m1, m2 (names, masses or GMs; m2 =
+    None for a massless probe) moving at v1, v2 (speeds along the line, any sign). A planet (m1) meeting a probe
+    head on sends it back at 2 v1 - v2: the slingshot."""
+    gm1 = inputs.gravitational_parameter(m1, "mass m1")
+    gm2 = 0.0 if m2 is None else inputs.gravitational_parameter(m2, "mass m2")
+    speeds = [signed(v, units.M_PER_S, name) for v, name in ((v1, "velocity v1"), (v2, "velocity v2"))]
+    after_1, after_2 = core.velocities_after(gm1, speeds[0], gm2, speeds[1], 1.0)
+    return after_1 << units.M_PER_S, after_2 << units.M_PER_S

@@ -2,7 +2,7 @@
 conical pendulum, and projectiles without drag, with linear (Stokes) drag and with quadratic drag.
 
     >>> import astropy.units as u
-    >>> from orbits.mechanics import Projectile
+    >>> from orbits import Projectile
     >>> ball = Projectile.launch(20 * u.m / u.s, 45 * u.deg)
     >>> ball.range.round(3)  # v**2 sin(2 angle) / g0
     <Quantity 40.789 m>
@@ -25,7 +25,9 @@ from orbits import display, inputs, units
 from orbits.constants import BODIES, EARTH_MEAN_RADIUS, SIDEREAL_DAY
 from orbits.core import projectile as core
 from orbits.core.errors import OrbitDomainError
-from orbits.mechanics._common import ACCELERATION, RATE, angle_in, gravity, non_negative, table
+from orbits.inputs import angle_in, gravity, non_negative
+from orbits.tables import attribute_table
+from orbits.units import ACCELERATION, RATE
 
 DRAGS = ("none", "linear", "quadratic")
 
@@ -211,7 +213,7 @@ class Projectile(display.Displayed):
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those)."""
-        return table(self, PROJECTILE_NAMES, only)
+        return attribute_table(self, PROJECTILE_NAMES, only)
 
 
 PROJECTILE_NAMES = ["time_of_flight", "range", "apex_time", "apex_height", "apex_distance", "landing_speed",
@@ -272,7 +274,7 @@ class EffectiveGravity(display.Displayed):
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those)."""
-        return table(self, ["toward_equator", "downward", "magnitude", "deflection"], only)
+        return attribute_table(self, ["toward_equator", "downward", "magnitude", "deflection"], only)
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -338,4 +340,4 @@ class ConicalPendulum(display.Displayed):
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those)."""
-        return table(self, ["angular_speed", "period", "speed", "circle_radius", "tension"], only)
+        return attribute_table(self, ["angular_speed", "period", "speed", "circle_radius", "tension"], only)

@@ -1,7 +1,7 @@
 """Rotations, rigid bodies' inertia and rolling (notes XI), with astropy units.
 
     >>> import astropy.units as u
-    >>> from orbits.mechanics import RigidBody, Rotation
+    >>> from orbits import RigidBody, Rotation
     >>> turn = Rotation.from_axis_angle([0, 0, 1], 90 * u.deg)
     >>> turn.apply([1, 0, 0] * u.m).round(12)
     <Quantity [0., 1., 0.] m>
@@ -26,7 +26,9 @@ import numpy as np
 from orbits import display, inputs, units
 from orbits.core import rotation as core
 from orbits.core.errors import OrbitDomainError
-from orbits.mechanics._common import DIMENSIONLESS, angle_in, gravity, signed, table
+from orbits.inputs import angle_in, gravity, signed
+from orbits.tables import attribute_table
+from orbits.units import DIMENSIONLESS
 
 INERTIA = units.KG * units.M**2
 
@@ -121,7 +123,7 @@ class Rotation(display.Displayed):
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those)."""
-        return table(self, ROTATION_NAMES, only)
+        return attribute_table(self, ROTATION_NAMES, only)
 
 
 ROTATION_NAMES = ["angle", "axis", "x_angle", "y_angle", "z_angle"]
@@ -262,7 +264,7 @@ class RigidBody(display.Displayed):
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those)."""
-        return table(self, BODY_NAMES, only)
+        return attribute_table(self, BODY_NAMES, only)
 
 
 BODY_NAMES = ["total_mass", "center_of_mass", "principal_moments", "inertia_tensor"]
@@ -312,4 +314,4 @@ class Rolling(display.Displayed):
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those)."""
-        return table(self, ["inertia_factor", "acceleration", "friction_coefficient"], only)
+        return attribute_table(self, ["inertia_factor", "acceleration", "friction_coefficient"], only)

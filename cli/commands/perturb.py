@@ -1,0 +1,241 @@
+"""`orbits perturb`: secular rates about an oblate body, orbit designs (sun-synchronous, frozen, repeat ground
+track), drag decay, the Kozai-Lidov oscillation and general relativity's periapsis advance.
+
+A sub-application with one command per question; main.py mounts it with app.add_typer(perturb.app). Tables show
+rates in deg/day, lengths in km, times in days or years (any --unit NAME=UNIT still wins); JSON is exact SI.
+"""
+
+from typing import Annotated
+
+import typer
+
+from orbits_cli.commands.binary import MASS_HELP, mass_or_body
+from orbits_cli.options import Format, FormatOption, OnlyOption, displays, reports_errors
+
+app = typer.Typer(
+    help="Perturbed orbits: J2 secular rates and designs, drag decay, Kozai-Lidov, the relativistic advance.",
+    no_args_is_help=True,
+)
+
+BodyArgument = Annotated[str, typer.Argument(metavar="BODY", help="a catalogue body with J2 (Earth by default)")]
+SizeOption = Annotated[str | None, typer.Option("--a", help="semi-major axis, e.g. '7078 km'")]
+AltitudeOption = Annotated[str | None, typer.Option("--altitude", help="a - R_eq, e.g. '700 km'")]
+InclinationOption = Annotated[str | None, typer.Option("--inc", help="inclination ('98 deg'; bare numbers are "
+                                                                     "degrees)")]
+
+#: the units tables use for these quantities unless --units si or --unit NAME=UNIT says otherwise
+NATURAL = {
+    "node_rate": "deg / d", "periapsis_rate": "deg / d", "mean_anomaly_rate": "deg / d", "node_rate_target": "deg / d",
+    "nodal_period": "min", "semi_major_axis": "km", "altitude": "km", "base_altitude": "km", "scale_height": "km",
+    "decay_rate": "km / d", "decay_per_revolution": "km", "lifetime": "d", "breakdown_altitude": "km",
+    "timescale": "yr", "period": "yr", "advance_per_orbit": "arcsec", "advance_per_century": "arcsec",
+    "density_at_base": "kg / m3",
+}
+
+
+def emit(title: str, quantities: dict, fmt: Format) -> None:
+    """render.emit with this verb's natural units (for the quantities shown) under the user's own choices."""
+    from orbits_cli import render
+
+    shown = render.DISPLAY
+    if shown.system == "natural":
+        defaults = {name: unit for name, unit in NATURAL.items() if name in quantities}
+        render.use(render.Display(shown.system, {**defaults, **shown.overrides}, shown.digits))
+    try:
+        render.emit(title, quantities, fmt.value)
+    finally:
+        render.use(shown)
+
+
+def _length(text, option):
+    from orbits import inputs
+
+    return None if text is None else inputs.parse_quantity(text, "length", option)
+
+
+def _angle(text, option):
+    from orbits import inputs
+
+    return None if text is None else inputs.parse_angle(text, option)
+
+
+def rates(
+    primary: BodyArgument = "Earth",
+    a: SizeOption = None,
+    altitude: AltitudeOption = None,
+    e: Annotated[float, typer.Option("--e", help="eccentricity")] = 0.0,
+    inc: InclinationOption = "0",
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """J2's secular rates of the node, periapsis and mean anomaly (first order: good to J2 (R/p)**2 relative).
+
+    Example: orbits perturb rates Earth --altitude "400 km" --inc 51.64
+    """
+    from orbits import Orbit, inputs
+    from orbits.perturbations import SecularOrbit, oblate_body
+
+    named = oblate_body(primary)
+    size = _size(named, a, altitude)
+    orbit = Orbit.from_elements(named, a=size, e=e, inc=_angle(inc, "--inc"))
+    secular = SecularOrbit.of(orbit, named)
+    emit(f"J2 secular rates about {named.name} (first order; accuracy J2 (R/p)^2)",
+         secular.quantities(inputs.names(only)), fmt)
+
+
+def _size(named, a, altitude):
+    import astropy.units as u
+
+    if (a is None) == (altitude is None):
+        raise typer.BadParameter("give exactly one of --a and --altitude")
+    return _length(a, "--a") if a is not None else _length(altitude, "--altitude") + named.radius * u.m
+
+
+def sun_synchronous(
+    primary: BodyArgument = "Earth",
+    a: SizeOption = None,
+    altitude: AltitudeOption = None,
+    e: Annotated[float, typer.Option("--e", help="eccentricity")] = 0.0,
+    inc: Annotated[str | None, typer.Option("--inc", help="solve for the size at this inclination instead")] = None,
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """The sun-synchronous orbit: its inclination for a size (or its size for an inclination).
+
+    Example: orbits perturb sun-synchronous --altitude "700 km"      (98.19 deg)
+    """
+    from orbits import inputs
+    from orbits.perturbations import sun_synchronous as design
+
+    result = design(primary, a=_length(a, "--a"), altitude=_length(altitude, "--altitude"), e=e,
+                    inc=_angle(inc, "--inc"))
+    emit(f"Sun-synchronous orbit about {result.primary.name} (node follows the mean Sun)",
+         result.quantities(inputs.names(only)), fmt)
+
+
+def frozen(
+    primary: BodyArgument = "Earth",
+    a: SizeOption = None,
+    altitude: AltitudeOption = None,
+    inc: Annotated[str, typer.Option("--inc", help="inclination")] = "98",
+    argp: Annotated[str, typer.Option("--argp", help="argument of periapsis: 90 or 270 deg")] = "90",
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """The frozen orbit (J2 with J3): the eccentricity that keeps e and omega fixed.
+
+    Example: orbits perturb frozen --altitude "700 km" --inc 98.19
+    """
+    from orbits import inputs
+    from orbits.perturbations import frozen as design
+
+    result = design(primary, a=_length(a, "--a"), altitude=_length(altitude, "--altitude"), inc=_angle(inc, "--inc"),
+                    argp=_angle(argp, "--argp"))
+    emit(f"Frozen orbit about {result.primary.name} (J2 with J3, first order)", result.quantities(inputs.names(only)),
+         fmt)
+
+
+def repeat(
+    primary: BodyArgument = "Earth",
+    revolutions: Annotated[int, typer.Option("--revolutions", help="revolutions (nodal periods) per cycle")] = 15,
+    days: Annotated[int, typer.Option("--days", help="days (turns of the body under the node) per cycle")] = 1,
+    inc: Annotated[str, typer.Option("--inc", help="inclination")] = "98",
+    e: Annotated[float, typer.Option("--e", help="eccentricity")] = 0.0,
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """The repeat-ground-track orbit: k revolutions in d days, J2 included.
+
+    Example: orbits perturb repeat --revolutions 127 --days 10 --inc 66.04      (TOPEX/Jason: 7714.4 km)
+    """
+    from orbits import inputs
+    from orbits.perturbations import repeat_ground_track
+
+    result = repeat_ground_track(primary, revolutions=revolutions, days=days, inc=_angle(inc, "--inc"), e=e)
+    emit(f"Repeat ground track about {result.primary.name}: {revolutions} revolutions in {days} days",
+         result.quantities(inputs.names(only)), fmt)
+
+
+def decay(
+    primary: BodyArgument = "Earth",
+    altitude: Annotated[str, typer.Option("--altitude", help="altitude of the circular orbit")] = "400 km",
+    ballistic: Annotated[str, typer.Option("--ballistic", help="C_D A / m, e.g. '0.01 m2/kg'")] = "0.01 m2/kg",
+    density: Annotated[str | None, typer.Option("--density", help="the band's density at its base")] = None,
+    scale_height: Annotated[str | None, typer.Option("--scale-height", help="the band's scale height H")] = None,
+    base: Annotated[str | None, typer.Option("--base-altitude", help="the band's base altitude")] = None,
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """Drag decay of a circular orbit in an exponential atmosphere band (the Earth's standard table by default).
+
+    Example: orbits perturb decay --altitude "280 km" --ballistic "0.022 m2/kg"
+    """
+    from orbits import inputs
+    from orbits.perturbations import DragDecay
+
+    mass = None if density is None else inputs.parse_quantity(density, "density", "--density")
+    result = DragDecay.of(primary, altitude=_length(altitude, "--altitude"),
+                          ballistic=inputs.parse_quantity(ballistic, "area per mass", "--ballistic"),
+                          density=mass, scale_height=_length(scale_height, "--scale-height"),
+                          base_altitude=_length(base, "--base-altitude"))
+    emit(f"Drag decay about {primary} (circular orbit, exponential band; accuracy (da_rev / H)^2)",
+         result.quantities(inputs.names(only)), fmt)
+
+
+def kozai(
+    m0: Annotated[str, typer.Option("--m0", help=f"the central mass: {MASS_HELP}")] = "Sun",
+    m3: Annotated[str, typer.Option("--m3", help=f"the distant perturber: {MASS_HELP}")] = "Jupiter",
+    a: Annotated[str, typer.Option("--a", help="inner semi-major axis")] = "1 AU",
+    a_out: Annotated[str, typer.Option("--a-out", help="the perturber's semi-major axis")] = "5.2 AU",
+    inc: Annotated[str, typer.Option("--inc", help="inclination to the perturber's orbit")] = "65",
+    e: Annotated[float, typer.Option("--e", help="initial eccentricity (> 0)")] = 0.001,
+    argp: Annotated[str, typer.Option("--argp", help="initial argument of periapsis")] = "90",
+    e_out: Annotated[float, typer.Option("--e-out", help="the perturber's eccentricity")] = 0.0,
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """The quadrupole Kozai-Lidov oscillation of a test particle (e and i range, period, validity).
+
+    Example: orbits perturb kozai --m0 Sun --m3 Jupiter --a "1 AU" --a-out "5.2 AU" --inc 65
+    """
+    from orbits import inputs
+    from orbits.perturbations import KozaiLidov
+
+    result = KozaiLidov.of(mass_or_body(m0, "--m0"), mass_or_body(m3, "--m3"), a=_length(a, "--a"),
+                           a_out=_length(a_out, "--a-out"), inc=_angle(inc, "--inc"), e=e, argp=_angle(argp, "--argp"),
+                           e_out=e_out)
+    emit("Kozai-Lidov oscillation (quadrupole, test particle; octupole and averaging parameters give its error)",
+         result.quantities(inputs.names(only)), fmt)
+
+
+def relativity(
+    name: Annotated[str, typer.Argument(metavar="BODY", help="a catalogue body with a mean orbit")] = "Mercury",
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """General relativity's periapsis advance 6 pi G M / (c^2 a (1 - e^2)) of a body's mean orbit.
+
+    Example: orbits perturb relativity Mercury      (42.98 arcsec per century)
+    """
+    import astropy.units as u
+
+    from orbits import Orbit, inputs
+    from orbits.perturbations import relativistic_periapsis_advance
+    from orbits.tables import check_names
+
+    per_orbit, rate = relativistic_periapsis_advance(Orbit.from_body(name))
+    table = {"advance_per_orbit": per_orbit, "advance_per_century": (rate * 36525 * u.day).to(u.rad),
+             "periapsis_rate": rate}
+    names = inputs.names(only) or list(table)
+    check_names(names, list(table))
+    emit(f"Relativistic periapsis advance of {name} (1PN; relative error G M / (c^2 p))",
+         {n: table[n] for n in names}, fmt)
+
+
+app.command("rates")(reports_errors(displays(rates)))
+app.command("sun-synchronous")(reports_errors(displays(sun_synchronous)))
+app.command("frozen")(reports_errors(displays(frozen)))
+app.command("repeat")(reports_errors(displays(repeat)))
+app.command("decay")(reports_errors(displays(decay)))
+app.command("kozai")(reports_errors(displays(kozai)))
+app.command("relativity")(reports_errors(displays(relativity)))

@@ -1,0 +1,296 @@
+"""What `orbits ... --help` shows, in one place: each command's one-line summary (the command lists), its
+description (the command's docstring, its paragraphs reflowed so that the terminal wraps them between words) and
+two to four examples that run (tests/cli/test_help_pages.py runs every one and holds each page to 80 columns).
+
+`document(app)` writes these onto every command registered on the Typer app and its sub-apps, before typer
+builds them. It imports nothing of the library: `orbits --help` stays fast.
+"""
+
+import textwrap
+
+import typer
+from typer.core import TyperCommand
+
+#: command path -> the line the command lists show
+SUMMARY = {
+    "validate": "Check the analytic answers against rebound and heyoka.",
+    "orbit": "Every quantity of an orbit, from elements, state or body.",
+    "kepler": "Every anomaly from the mean or the true one, any conic.",
+    "cosmology": "Age, distances, H(z) and a(t) of a Friedmann universe.",
+    "binary": "A binary: orbits about the barycentre, K, mass function.",
+    "flyby": "Closest approach and deflection of a hyperbolic flyby.",
+    "lagrange": "Lagrange points, Jacobi constants and their stability.",
+    "ring": "A ring of equal masses: period, stability, break-up.",
+    "rocket": "Delta-v and burn times of a rocket, one stage or several.",
+    "where": "Where a planet is at a date: distance, elongation, RA, Dec.",
+    "lambert": "Lambert's problem: from r1 to r2 in a given time.",
+    "porkchop": "C3 and arrival v_inf over launch and arrival dates.",
+    "collide": "A collision with restitution: velocities and energies.",
+    "projectile": "A projectile, without drag or with linear or quadratic drag.",
+    "pendulum": "The exact large-amplitude pendulum, or a vertical circle.",
+    "info": "Versions, caches and the catalogue of bodies.",
+    "escape": "Escape speed, cosmic velocities, synchronous orbits.",
+    "escape speed": "Escape speed sqrt(2 G M / r) from a body.",
+    "escape cosmic": "The first, second and third cosmic velocities.",
+    "escape geo": "The synchronous orbit of a rotating body.",
+    "escape elongation": "The greatest elongation of an inner planet.",
+    "transfer": "Impulsive transfers: Hohmann, bi-elliptic, phasing, ...",
+    "transfer hohmann": "Hohmann transfer between two circular orbits.",
+    "transfer bi-elliptic": "Bi-elliptic transfer, compared with Hohmann.",
+    "transfer plane-change": "A plane change on a circular orbit.",
+    "transfer phasing": "A phasing manoeuvre to meet a target on the same orbit.",
+    "transfer departure": "Departure onto a hyperbola from a parking orbit.",
+    "transfer assist": "A gravity assist by patched conics.",
+    "perturb": "Secular perturbations: J2, drag, Kozai-Lidov, relativity.",
+    "perturb rates": "J2's secular rates of node, periapsis and mean anomaly.",
+    "perturb sun-synchronous": "The sun-synchronous inclination or size.",
+    "perturb frozen": "The frozen orbit of J2 with J3.",
+    "perturb repeat": "The repeat-ground-track orbit: k revolutions in d days.",
+    "perturb decay": "Drag decay and lifetime of a circular orbit.",
+    "perturb kozai": "The Kozai-Lidov cycle of a hierarchical triple.",
+    "perturb relativity": "General relativity's periapsis advance.",
+    "bench": "Benchmarks: speed and worst error against the peers.",
+    "bench kepler": "Kepler solvers against heyoka, rebound and Newton.",
+    "bench propagate": "Two-body propagation against heyoka's lagrange_prop.",
+    "bench api": "The unit-aware API's cost over the float64 core.",
+    "bench cli": "Command-line cold start in fresh processes.",
+    "bench validate": "Where the time of orbits validate goes.",
+    "bench lambert": "Lambert solvers against lamberthub (and pykep, hapsira).",
+    "bench ephemeris": "DE421 states against jplephem and astropy.",
+    "bench all": "Every benchmark in one run.",
+    "bench precision": "Each integrator's accuracy knob: error against time.",
+}
+
+#: command path -> examples, each "orbits ..." optionally followed by "  # a comment"
+EXAMPLES = {
+    "validate": [
+        "orbits validate",
+        "orbits validate circular eccentric --format json",
+        "orbits validate lagrange_L4_L5 --backend heyoka --plot check.png",
+    ],
+    "orbit": [
+        "orbits orbit Earth",
+        'orbits orbit --primary Earth --a "42164 km" --only period,speed',
+        'orbits orbit --primary Earth --r "7000,0,0 km" --v "0,7.5,1 km/s"',
+        "orbits orbit Mars --epoch 2026-11-25 --format json",
+    ],
+    "kepler": [
+        'orbits kepler --e 0.9 --M "0.1 rad"',
+        'orbits kepler --e 1.5 --nu "60 deg"',
+        "orbits kepler --e 1 --M 2  # a parabola: M is Barker's W",
+    ],
+    "cosmology": [
+        "orbits cosmology",
+        'orbits cosmology --H0 "67.66 km/s/Mpc" --Om 0.30966 --z 0.5,1,1100',
+        "orbits cosmology --model planck18 --z 1 --plot cosmology.png",
+    ],
+    "binary": [
+        'orbits binary --m1 Sun --m2 Jupiter --a "5.2 AU" --e 0.048',
+        'orbits binary --m1 Earth --m2 Moon --a "384399 km" --format json',
+        'orbits binary --K "59 m/s" --period "4.2293 d" --m1 "1 solMass"',
+    ],
+    "flyby": [
+        'orbits flyby --primary Jupiter --v-inf "5.6 km/s" --periapsis "200000 km"',
+        'orbits flyby --primary Earth --v-inf "3 km/s" --b "30000 km" --plot flyby.png',
+    ],
+    "lagrange": [
+        "orbits lagrange Earth Moon",
+        "orbits lagrange Sun Earth --points L1,L2 --format json",
+        'orbits lagrange "1 solMass" "0.1 solMass" --r "1 AU" --plot lagrange.png',
+    ],
+    "ring": [
+        'orbits ring 7 --m "1e20 kg" --r "1e5 km" --central-mass Earth',
+        'orbits ring 3 --m "1 kg" --r "1 m" --format json',
+    ],
+    "rocket": [
+        'orbits rocket --m0 "100 t" --mf "40 t" --isp "300 s" --thrust "2 MN"',
+        'orbits rocket --propellant "80 t" --propellant "15 t" --structure "8 t" \\\n'
+        '    --structure "2 t" --payload "1 t" --isp "280 s" --isp "340 s"',
+    ],
+    "where": [
+        "orbits where Mars --epoch 2026-11-25",
+        "orbits where Venus --observer Mars --epoch 2027-01-01 --format json",
+        "orbits where Jupiter --epoch 2026-11-25 --plot sky.png",
+    ],
+    "lambert": [
+        'orbits lambert --r1 "1,0,0 AU" --r2 "0,1.5,0 AU" --tof "200 d"',
+        'orbits lambert --r1 "1,0,0 AU" --r2 "0,1.5,0 AU" --tof "900 d" \\\n'
+        "    --revolutions 1 --branch left",
+    ],
+    "porkchop": [
+        "orbits porkchop --from EMB --to Mars --step \"5 d\"",
+        "orbits porkchop --from Earth --to Mars --launch 2028-09-01:2029-01-31 \\\n"
+        "    --arrival 2029-06-01:2030-03-01 --step \"10 d\" --plot porkchop.png",
+    ],
+    "collide": [
+        'orbits collide --m1 "2 kg" --v1 "3 m/s" --m2 "1 kg" --v2 "0 m/s" --restitution 0.8',
+        'orbits collide --m1 "2 kg" --v1 "3 m/s" --m2 "1 kg" --v2 "-1 m/s" --plot collide.png',
+    ],
+    "projectile": [
+        'orbits projectile --speed "20 m/s" --angle 45',
+        'orbits projectile --speed "20 m/s" --angle 45 --drag quadratic \\\n'
+        '    --terminal-speed "30 m/s"',
+    ],
+    "pendulum": [
+        'orbits pendulum --length "1 m" --amplitude "170 deg"',
+        'orbits pendulum --length "1 m" --amplitude "30 deg" --plot pendulum.png',
+    ],
+    "info": [
+        "orbits info",
+        "orbits info --format json",
+    ],
+    "escape speed": [
+        "orbits escape speed Moon",
+        'orbits escape speed Earth --distance "384399 km"',
+    ],
+    "escape cosmic": [
+        "orbits escape cosmic",
+        "orbits escape cosmic --format json",
+    ],
+    "escape geo": [
+        "orbits escape geo",
+        "orbits escape geo Jupiter",
+    ],
+    "escape elongation": [
+        'orbits escape elongation --inner "0.723 AU" --outer Earth',
+        "orbits escape elongation --inner Mercury --outer Earth",
+    ],
+    "transfer hohmann": [
+        'orbits transfer hohmann --r1 "6678 km" --r2 "42164 km"',
+        'orbits transfer hohmann --r1 "6678 km" --r2 "42164 km" --inc "28.5 deg"',
+    ],
+    "transfer bi-elliptic": [
+        'orbits transfer bi-elliptic --r1 "7000 km" --r2 "105000 km" --rb "210000 km"',
+        'orbits transfer bi-elliptic --primary Sun --r1 "1 AU" --r2 "30 AU" --rb "60 AU"',
+    ],
+    "transfer plane-change": [
+        'orbits transfer plane-change --r "7000 km" --angle "30 deg"',
+        'orbits transfer plane-change --r "42164 km" --angle "28.5 deg" --format json',
+    ],
+    "transfer phasing": [
+        'orbits transfer phasing --r "7000 km" --phase "20 deg" --revolutions 2',
+        'orbits transfer phasing --r "42164 km" --phase "-60 deg"',
+    ],
+    "transfer departure": [
+        'orbits transfer departure --r "6678 km" --v-inf "3 km/s"',
+        'orbits transfer departure --primary Mars --r "3700 km" --v-inf "2.6 km/s"',
+    ],
+    "transfer assist": [
+        'orbits transfer assist --planet Jupiter --v-in "0,7.4,0 km/s" \\\n'
+        '    --v-planet "0,13.06,0 km/s" --periapsis "200000 km"',
+        'orbits transfer assist --planet Venus --v-in "0,30,3 km/s" \\\n'
+        '    --v-planet "0,35,0 km/s" --periapsis "7000 km"',
+    ],
+    "perturb rates": [
+        'orbits perturb rates Earth --altitude "400 km" --inc 51.64',
+        'orbits perturb rates Mars --a "9378 km" --inc 1.1 --format json',
+    ],
+    "perturb sun-synchronous": [
+        'orbits perturb sun-synchronous --altitude "700 km"',
+        "orbits perturb sun-synchronous --inc 99",
+    ],
+    "perturb frozen": [
+        'orbits perturb frozen --altitude "700 km" --inc 98.19',
+        'orbits perturb frozen --altitude "1336 km" --inc 66',
+    ],
+    "perturb repeat": [
+        "orbits perturb repeat --revolutions 127 --days 10 --inc 66",
+        "orbits perturb repeat --revolutions 15 --days 1 --inc 98",
+    ],
+    "perturb decay": [
+        'orbits perturb decay --altitude "280 km" --ballistic "0.022 m2/kg"',
+        'orbits perturb decay --altitude "400 km" --ballistic "0.005 m2/kg"',
+    ],
+    "perturb kozai": [
+        'orbits perturb kozai --m0 Sun --m3 Jupiter --a "1 AU" --a-out "5.2 AU" --inc 65',
+        'orbits perturb kozai --m0 Earth --m3 Sun --a "50000 km" --a-out "1 AU" --inc 80',
+    ],
+    "perturb relativity": [
+        "orbits perturb relativity Mercury",
+        "orbits perturb relativity Earth --format json",
+    ],
+    "bench kepler": [
+        "orbits bench kepler --easy 10000 --hard 1000 --hyperbolic 1000 --reference 100",
+        "orbits bench kepler",
+    ],
+    "bench propagate": [
+        "orbits bench propagate --states 10000 --reference 50",
+        "orbits bench propagate --output propagate.json",
+    ],
+    "bench api": [
+        "orbits bench api --sizes 1,1000",
+        "orbits bench api",
+    ],
+    "bench cli": [
+        "orbits bench cli --runs 2",
+        "orbits bench cli",
+    ],
+    "bench validate": [
+        "orbits bench validate --no-sweep",
+        "orbits bench validate --output validate.json",
+    ],
+    "bench lambert": [
+        "orbits bench lambert --transfers 10000 --reference 50",
+        "orbits bench lambert",
+    ],
+    "bench ephemeris": [
+        "orbits bench ephemeris --epochs 10000",
+        "orbits bench ephemeris",
+    ],
+    "bench all": [
+        "orbits bench all --quick",
+        "orbits bench all --output bench.json",
+    ],
+    "bench precision": [
+        "orbits bench precision --quick --problem L4",
+        "orbits bench precision --quick --plot precision.png",
+    ],
+}
+
+
+def reflow(text: str) -> str:
+    """A docstring's paragraphs each on one line (separated by blank lines), so the terminal wraps between words."""
+    paragraphs = [" ".join(p.split()) for p in (text or "").strip().split("\n\n")]
+    return "\n\n".join(p for p in paragraphs if p)
+
+
+def epilog(path: str) -> str:
+    """The examples of a command as its help page's last lines."""
+    return "Examples:\n" + "\n".join(f"  {example}" for example in EXAMPLES[path])
+
+
+class ListsScenes(TyperCommand):
+    """A command whose help page lists the built-in scenes before its examples, read when the page is shown (so
+    that no other command loads the validation layer)."""
+
+    @property
+    def epilog(self) -> str:
+        from orbits.validate import summaries
+
+        scenes = "\n".join(textwrap.fill(f"{name}: {line}", width=76, initial_indent="  ", subsequent_indent="      ")
+                           for name, line in summaries().items())
+        return f"Built-in scenes (give their names, or none for all):\n{scenes}\n\n{self._examples}"
+
+    @epilog.setter
+    def epilog(self, value: str) -> None:
+        self._examples = value
+
+
+#: commands whose help pages need more than their examples
+CLASSES = {"validate": ListsScenes}
+
+
+def document(app: typer.Typer, prefix: str = "") -> None:
+    """Give every command of `app` (and of its sub-apps) its summary, reflowed description and examples."""
+    for info in app.registered_commands:
+        path = f"{prefix}{info.name}"
+        info.help = reflow(info.help or info.callback.__doc__)
+        info.short_help = SUMMARY[path]
+        if path in EXAMPLES:
+            info.epilog = epilog(path)
+        if path in CLASSES:
+            info.cls = CLASSES[path]
+    for group in app.registered_groups:
+        path = f"{prefix}{group.name}"
+        group.short_help = SUMMARY[path]
+        document(group.typer_instance, f"{path} ")

@@ -1,0 +1,149 @@
+"""What the benchmarks share to time orbits and its peers: the peer adapter (Method) and its lazy loading, the
+best-of timing, the thread settings of orbits' compiled kernels and of heyoka, and the plain NumPy Newton
+baselines for Kepler's equation.
+
+Every benchmark module may import this one; it imports none of them. orbits' kernels and heyoka are imported
+inside the functions that need them, so that a benchmark whose peer is absent still runs.
+"""
+
+import contextlib
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+NEWTON_TOL = 1e-15  # absolute step tolerance of the plain NumPy Newton baseline
+NEWTON_MAX_ITER = 50
+
+
+def _as_pair(e, M):
+    """Default input preparation: the two arrays as they are."""
+    return e, M
+
+
+@dataclass(frozen=True)
+class Method:
+    """A peer adapter.  prepare(...) puts the inputs in the form the library takes (not timed); for
+    Kepler solvers prepare(e, M) and solve(prepared, hyperbolic), which returns the anomalies or None
+    if the equation is unsupported; for propagators prepare(states) and solve(prepared) -> (r, v)."""
+
+    name: str
+    solve: Callable[..., object]
+    prepare: Callable[[np.ndarray, np.ndarray], object] = _as_pair
+    setup_seconds: float = 0.0
+    note: str = ""
+    subset: int | None = None  # time only this many pairs (per-call APIs)
+
+
+def load_methods(factories):
+    """[(name, Method or None, skip note)] for every (name, factory), importing peers lazily."""
+    loaded = []
+    for name, factory in factories:
+        try:
+            loaded.append((name, factory(), ""))
+        except ImportError as exc:
+            loaded.append((name, None, f"not installed ({exc.name or exc})"))
+    return loaded
+
+
+def best_time(call, repeats):
+    """(best wall time of `repeats` calls, the last result)."""
+    best, result = math.inf, None
+    for _ in range(repeats):
+        start = time.perf_counter()
+        result = call()
+        best = min(best, time.perf_counter() - start)
+    return best, result
+
+
+# --- threads ----------------------------------------------------------------------------------------
+
+
+def cores():
+    """Threads the 'all cores' rows use: orbits.core._fast.num_threads() (ORBITS_NUM_THREADS or the cores)."""
+    from orbits.core import _fast
+
+    return _fast.num_threads()
+
+
+@contextlib.contextmanager
+def orbits_threads(threads):
+    """Run orbits' compiled kernels on `threads` threads (threads=0: the NumPy fallback) inside the block."""
+    from orbits.core import _fast
+
+    previous_threads = _fast.num_threads()
+    _fast.set_num_threads(max(threads, 1))
+    previous_mode = _fast.set_enabled(threads > 0)  # every batch size: the benchmark measures the kernels
+    try:
+        yield
+    finally:
+        _fast.set_num_threads(previous_threads)
+        _fast.set_enabled(previous_mode)
+
+
+def orbits_name(threads):
+    """The row name of orbits run on `threads` threads (0: the NumPy fallback)."""
+    return {0: "orbits (NumPy)", 1: "orbits"}.get(threads, "orbits (all cores)")
+
+
+def orbits_note(threads):
+    """The row note of orbits run on `threads` threads (0: the NumPy fallback)."""
+    if threads == 0:
+        return "NumPy fallback (ORBITS_JIT=0)"
+    return "compiled, 1 thread" if threads == 1 else f"compiled, {threads} threads"
+
+
+# --- plain NumPy baselines --------------------------------------------------------------------------
+
+
+def newton_elliptic(e, M):
+    """Plain vectorised Newton on E - e sin E = M from E0 = M + e sin M."""
+    E = M + e * np.sin(M)
+    with np.errstate(all="ignore"):
+        for _ in range(NEWTON_MAX_ITER):
+            step = (E - e * np.sin(E) - M) / (1.0 - e * np.cos(E))
+            E = E - step
+            if np.all(np.abs(step) <= NEWTON_TOL):
+                break
+    return E
+
+
+def newton_hyperbolic(e, M):
+    """Plain vectorised Newton on e sinh H - H = M from H0 = asinh(M / e)."""
+    H = np.arcsinh(M / e)
+    with np.errstate(all="ignore"):
+        for _ in range(NEWTON_MAX_ITER):
+            step = (e * np.sinh(H) - H - M) / (e * np.cosh(H) - 1.0)
+            H = H - step
+            if np.all(np.abs(step) <= NEWTON_TOL):
+                break
+    return H
+
+
+# --- the machine ------------------------------------------------------------------------------------
+
+
+def machine() -> str:
+    """One line naming this machine's CPU and its widest vector unit, read from the machine itself
+    (/proc/cpuinfo on Linux, the platform module elsewhere), e.g. "AMD EPYC, 2 cores, AVX-512 (512-bit vectors)"."""
+    import os
+    import platform
+
+    name, flags = platform.processor() or platform.machine(), set()
+    try:
+        with open("/proc/cpuinfo", encoding="ascii", errors="replace") as info:
+            for line in info:
+                key, _, value = line.partition(":")
+                if key.strip() == "model name" and name in ("", platform.machine(), platform.processor()):
+                    name = value.strip()
+                elif key.strip() == "flags":
+                    flags = set(value.split())
+    except OSError:
+        pass
+    vectors = next((f"{label} ({bits}-bit vectors)" for flag, label, bits in
+                    (("avx512f", "AVX-512", 512), ("avx2", "AVX2", 256), ("avx", "AVX", 256), ("sse2", "SSE2", 128))
+                    if flag in flags), "vector width unknown")
+    count = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
+    return f"{name}, {count} cores, {vectors}"

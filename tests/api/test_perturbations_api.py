@@ -1,0 +1,63 @@
+"""orbits.perturbations: the unit-aware designs, decay and Kozai-Lidov objects, their one-line errors."""
+
+import astropy.units as u
+import pytest
+
+from orbits import Orbit, OrbitDomainError
+from orbits.perturbations import (
+    DragDecay,
+    KozaiLidov,
+    SecularOrbit,
+    frozen,
+    relativistic_periapsis_advance,
+    repeat_ground_track,
+    sun_synchronous,
+)
+
+
+def test_secular_orbit_rates_and_mean_element_propagation():
+    iss = SecularOrbit.of(Orbit.circular("Earth", 6778 * u.km, inc=51.64 * u.deg))
+    assert iss.node_rate.to_value(u.deg / u.day) == pytest.approx(-4.998, abs=1e-3)
+    later = iss.at(1 * u.day)
+    turned = (later.ascending_node - iss.orbit.ascending_node).to_value(u.deg) - 360.0
+    assert turned == pytest.approx(iss.node_rate.to_value(u.deg / u.day), rel=1e-12)
+    assert set(iss.quantities()) == {"node_rate", "periapsis_rate", "mean_anomaly_rate", "nodal_period", "accuracy"}
+
+
+def test_designs_give_back_their_targets():
+    design = sun_synchronous("Earth", altitude=700 * u.km)
+    # the catalogue GM (IAU 2015 nominal)
+    assert design.inclination.to_value(u.deg) == pytest.approx(98.18776, abs=1e-5)
+    assert design.secular.node_rate.to_value(u.rad / u.s) == pytest.approx(
+        design.extra["node_rate_target"].to_value(u.rad / u.s), rel=1e-14)
+    back = sun_synchronous("Earth", inc=design.inclination)
+    assert back.semi_major_axis.to_value(u.m) == pytest.approx(design.semi_major_axis.to_value(u.m), rel=1e-14)
+    assert frozen("Earth", altitude=700 * u.km, inc=98.19 * u.deg).eccentricity.value == pytest.approx(1.0432e-3,
+                                                                                                       rel=1e-3)
+    track = repeat_ground_track("Earth", revolutions=127, days=10, inc=66.04 * u.deg)
+    assert track.semi_major_axis.to_value(u.km) == pytest.approx(7714.43, rel=4e-5)
+
+
+def test_drag_decay_and_kozai_lidov_objects():
+    decay = DragDecay.of("Earth", altitude=280 * u.km, ballistic=0.022 * u.m**2 / u.kg)
+    assert decay.lifetime.to_value(u.day) == pytest.approx(5.9884, rel=1e-4)
+    assert decay.altitude_after(decay.lifetime).to_value(u.km) == pytest.approx(250.0, abs=1e-6)
+    kozai = KozaiLidov.of("Sun", "Jupiter", a=1 * u.AU, a_out=5.2 * u.AU, inc=65 * u.deg)
+    assert kozai.eccentricity_range[1].value == pytest.approx(kozai.maximum_eccentricity_from_circular.value,
+                                                              rel=1e-5)
+    per_orbit, rate = relativistic_periapsis_advance(Orbit.from_body("Mercury"))
+    assert (rate * 36525 * u.day).to_value(u.arcsec) == pytest.approx(42.98, abs=0.005)
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda: SecularOrbit.of(Orbit.circular("Ceres", 1000 * u.km)), "Ceres has no J2 in the catalogue"),
+    (lambda: sun_synchronous("Earth", a=20_000 * u.km, e=0.1), "no sun-synchronous orbit at a = 20000 km, e = 0.1"),
+    (lambda: sun_synchronous("Earth", altitude=700 * u.km, e=0.99), "lies inside Earth"),
+    (lambda: DragDecay.of("Earth", altitude=300 * u.km, ballistic=0.01 * u.m**2 / u.kg, density=1e-11 * u.kg / u.m**3,
+                          scale_height=50 * u.km, base_altitude=350 * u.km), "below the atmosphere band's base"),
+    (lambda: frozen("Earth", altitude=700 * u.km, inc=63.43494882292201 * u.deg), "critical inclination"),
+])
+def test_bad_inputs_are_one_line_errors(call, message):
+    with pytest.raises(OrbitDomainError, match=message) as err:
+        call()
+    assert "\n" not in str(err.value)

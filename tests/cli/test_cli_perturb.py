@@ -1,0 +1,46 @@
+"""`orbits perturb`: tables in natural units, exact JSON, one-line errors with exit status 2."""
+
+import json
+
+import pytest
+from typer.testing import CliRunner
+
+from orbits_cli.main import app
+
+runner = CliRunner()
+
+
+def run(*args):
+    return runner.invoke(app, list(args), standalone_mode=True)
+
+
+def test_sun_synchronous_table_and_json():
+    table = run("perturb", "sun-synchronous", "--altitude", "700 km")
+    assert table.exit_code == 0 and "98.18776   deg" in table.stdout and "0.9856474   deg / d" in table.stdout
+    data = json.loads(run("perturb", "sun-synchronous", "--altitude", "700 km", "--format", "json").stdout)
+    assert data["inclination"]["unit"] == "rad" and abs(data["inclination"]["value"] - 1.71369) < 1e-5
+
+
+@pytest.mark.parametrize("args, shown", [
+    (("rates", "--altitude", "400 km", "--inc", "51.64"), "-4.998052   deg / d"),
+    (("decay", "--altitude", "280 km", "--ballistic", "0.022 m2/kg"), "5.988406   d"),
+    (("kozai",), "0.8380471"),
+    (("relativity", "Mercury"), "42.98048   arcsec"),
+    (("repeat", "--revolutions", "127", "--days", "10", "--inc", "66.04"), "7714.397   km"),
+])
+def test_verbs(args, shown):
+    result = run("perturb", *args)
+    assert result.exit_code == 0, result.output
+    assert shown in result.stdout
+
+
+@pytest.mark.parametrize("args", [
+    ("rates", "Ceres", "--a", "1000 km"),
+    ("sun-synchronous", "--a", "20000 km", "--e", "0.1"),
+    ("decay", "--altitude", "300 km", "--density", "1e-11 kg/m3", "--scale-height", "50 km", "--base-altitude",
+     "350 km"),
+])
+def test_bad_inputs_exit_2_with_one_line(args):
+    result = run("perturb", *args)
+    assert result.exit_code == 2
+    assert result.stderr.count("\n") == 1 and result.stderr.startswith("orbits: error: ")

@@ -1,0 +1,90 @@
+"""Help pages: every command has a one-line summary and two to four examples that run; every page fits 80 columns
+and wraps its description only between words; `validate --help` lists the built-in scenes."""
+
+import re
+import shlex
+
+import pytest
+from typer.testing import CliRunner
+
+from orbits_cli.main import app
+from orbits_cli.pages import EXAMPLES, SUMMARY
+
+WIDTH = 80
+
+
+def commands(typer_app=app, prefix=""):
+    """(path, callback) of every leaf command, and the paths of the groups."""
+    leaves, groups = [], []
+    for info in typer_app.registered_commands:
+        leaves.append((f"{prefix}{info.name}", info.callback))
+    for group in typer_app.registered_groups:
+        groups.append(f"{prefix}{group.name}")
+        sub_leaves, sub_groups = commands(group.typer_instance, f"{prefix}{group.name} ")
+        leaves += sub_leaves
+        groups += sub_groups
+    return leaves, groups
+
+
+LEAVES, GROUPS = commands()
+PATHS = [path for path, _ in LEAVES]
+
+
+def run(args, **kwargs):
+    return CliRunner().invoke(app, args, env={"COLUMNS": str(WIDTH), "TERM": "dumb"}, **kwargs)
+
+
+def test_every_command_has_a_summary_that_fits_the_command_list():
+    missing = [p for p in PATHS + GROUPS if p not in SUMMARY]
+    assert missing == []
+    long = {p: len(s) for p, s in SUMMARY.items() if len(s) > 60}
+    assert long == {}, "a summary longer than 60 characters wraps in the command list at 80 columns"
+    assert set(SUMMARY) == set(PATHS + GROUPS), "a summary for a command that does not exist"
+
+
+@pytest.mark.parametrize("path", PATHS)
+def test_every_command_has_two_to_four_examples(path):
+    assert 2 <= len(EXAMPLES.get(path, [])) <= 4
+
+
+@pytest.mark.parametrize("path", ["", *GROUPS, *PATHS])
+def test_help_pages_fit_80_columns_and_wrap_between_words(path):
+    result = run([*path.split(), "--help"])
+    assert result.exit_code == 0, result.output
+    wide = [line for line in result.output.splitlines() if len(line) > WIDTH]
+    assert wide == []
+    if path in PATHS:
+        doc = dict(LEAVES)[path].__doc__ or ""
+        first = " ".join(doc.strip().split("\n\n")[0].split())
+        text = " ".join(result.output.split())  # the page's words in order, whatever the line breaks
+        assert first in text, "the description's first paragraph is broken inside a word or reordered"
+        assert text.rstrip().endswith(" ".join(EXAMPLES[path][-1].split())), "the examples end the page"
+
+
+def examples():
+    for path in PATHS:
+        for example in EXAMPLES[path]:
+            yield pytest.param(example, id=f"{path}: {example[:50]}")
+
+
+@pytest.mark.parametrize("example", list(examples()))
+def test_every_example_runs(example, tmp_path, monkeypatch):
+    """Each example exits 0 and, unless it asks for JSON (machine output, strict and on as many columns as its strings
+    need), prints nothing wider than 80 columns (files it writes go to a temporary folder)."""
+    monkeypatch.chdir(tmp_path)
+    command = re.sub(r"\\\n\s*", " ", example.split("  #")[0])
+    args = shlex.split(command)
+    assert args[0] == "orbits"
+    result = run(args[1:])
+    assert result.exit_code == 0, (example, result.output)
+    if "--format" not in args or args[args.index("--format") + 1] != "json":
+        wide = [line for line in result.output.splitlines() if len(line) > WIDTH]
+        assert wide == [], example
+
+
+def test_validate_help_lists_every_built_in_scene():
+    from orbits.validate import builtin_names
+
+    result = run(["validate", "--help"])
+    text = " ".join(result.output.split())
+    assert all(f" {name}: " in text for name in builtin_names())
