@@ -72,14 +72,6 @@ def command(
     differential correction, continued along its family to the requested amplitude, period, Jacobi constant,
     closest approach or resonance. With --members, a table of the family with its stability indices
     nu = lambda + 1/lambda (stable when both are real and |nu| <= 2) and its bifurcations.
-
-    \b
-    Examples:
-      orbits periodic Earth Moon --family halo --point L2 --az "20000 km"
-      orbits periodic Earth Moon --family nrho --resonance 9:2
-      orbits periodic Sun Earth --family lyapunov --point L1 --ax "200000 km" --format json
-      orbits periodic Earth Moon --family dro --ax "70000 km" --plot dro.png
-      orbits periodic Earth Moon --family halo --point L2 --branch southern --members 20 --plot halo.png
     """
     from orbits import inputs
     from orbits.periodic import PeriodicFamily, PeriodicOrbit

@@ -12,7 +12,6 @@ scenes', the impulsive manoeuvres' and the three-body runs', goes through `backe
 the benchmarks the libraries' own closed-form functions.
 """
 
-from orbits.validate import periodic as _periodic  # noqa: F401  (registers the periodic-orbit model scenes)
 from orbits.validate.backends import BACKENDS, available
 from orbits.validate.plan import Measurement
 from orbits.validate.run import Check, SceneReport, ValidationReport, validate, validate_scene

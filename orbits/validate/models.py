@@ -375,10 +375,6 @@ def _count(low: int, high: int, why: str = "") -> Callable[[object], int]:
     return check
 
 
-#: the rule of a count, for the model scenes other modules register (orbits.validate.periodic)
-count_rule = _count
-
-
 def _positive(high: float, unit: str, high_open: bool = False, low: float = 0.0) -> Callable[[object], float]:
     """Rule of a duration, a number of periods or an offset: a finite number in (0, high], or [low, high] for
     low > 0; high_open excludes high."""

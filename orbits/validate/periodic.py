@@ -10,8 +10,8 @@ unstable orbit the growth per period of a second particle started `offset` off t
 unstable eigenvector (unit position part), against the eigenvalue lambda: |dr(kT)| = offset |lambda|**k while the
 departure is linear.
 
-The scenes register themselves with orbits.validate.models (MODELS, PARAMETER_RULES) when this module is imported,
-which orbits.validate does.
+The scenes register themselves with orbits.validate.models when this module is imported, which
+orbits.validate.scenes does.
 """
 
 import math
@@ -220,5 +220,4 @@ def nrho_scene(periods: int = 10) -> ModelScene:
 
 SCENES = {"periodic_lyapunov": lyapunov_scene, "periodic_halo": halo_scene, "periodic_dro": dro_scene,
           "periodic_nrho": nrho_scene}
-models.MODELS.update(SCENES)
-models.PARAMETER_RULES.update({name: {"periods": models.count_rule(1, MAX_PERIODS)} for name in SCENES})
+models.register(SCENES, {name: {"periods": models._count(1, MAX_PERIODS)} for name in SCENES})
