@@ -54,6 +54,7 @@ SUMMARY = {
     "bench kepler": "Kepler solvers against heyoka, rebound and Newton.",
     "bench propagate": "Two-body propagation against heyoka's lagrange_prop.",
     "bench stm": "Two-body state-transition matrices against pykep's.",
+    "bench periodic": "Periodic orbits: one halo and a family, corrections counted.",
     "bench api": "The unit-aware API's cost over the float64 core.",
     "bench cli": "Command-line cold start in fresh processes.",
     "bench validate": "Where the time of orbits validate goes.",
@@ -220,6 +221,10 @@ EXAMPLES = {
     "bench kepler": [
         "orbits bench kepler --easy 10000 --hard 1000 --hyperbolic 1000 --reference 100",
         "orbits bench kepler",
+    ],
+    "bench periodic": [
+        "orbits bench periodic --members 10 --repeats 1 --no-numpy",
+        "orbits bench periodic",
     ],
     "bench propagate": [
         "orbits bench propagate --states 10000 --reference 50",

@@ -597,6 +597,12 @@ class PeriodicFamily(display.Displayed):
         found = families.bifurcations(self._finder.hmap, self._followed)
         return [(kind, self._finder.orbit(member)) for kind, member in found]
 
+    @property
+    def work(self) -> dict:
+        """What following the family has cost so far: trajectories integrated, their accepted steps and
+        right-hand-side evaluations, and Newton iterations."""
+        return _work(self._finder.flow)
+
     def _stack(self, name) -> u.Quantity:
         return u.Quantity([member._lookup(name) for member in self.members])
 

@@ -67,6 +67,22 @@ def stm(
     _emit(rows_to_json(rows), format_stm(rows), fmt, output)
 
 
+def periodic(
+    members: Annotated[int, typer.Option(help="members of the family (2 to 1000)", min=2, max=1000)] = 100,
+    repeats: RepeatsOption = 3,
+    numpy: Annotated[bool, typer.Option("--numpy/--no-numpy", help="also time the NumPy integrator (the family "
+                                        "takes about a minute with it)")] = True,
+    output: OutputOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """Periodic orbits: one corrected halo orbit and a family to the 9:2 NRHO, timed, integrations counted."""
+    from orbits.tools.bench.periodic import bench_periodic, format_periodic
+    from orbits.tools.bench.table import rows_to_json
+
+    rows = bench_periodic(members=members, repeats=repeats, numpy=numpy)
+    _emit(rows_to_json(rows), format_periodic(rows), fmt, output)
+
+
 def api(
     sizes: Annotated[str, typer.Option(help="comma-separated batch sizes (1 = scalars)")] = "1,100000,1000000",
     repeats: RepeatsOption = 5,

@@ -65,7 +65,7 @@ def _draw_views(fig, orbits, colours, labels, title):
     view = axes[0]
     for track, colour, label in zip(tracks, colours, labels):
         view.plot(*(track.T * scale), color=colour, lw=0.8, label=label)
-    for name, where, radius, colour in bodies:
+    for _, where, radius, colour in bodies:
         if np.all(np.abs(where - centre) <= half + radius):
             _sphere(view, where * scale, radius * scale, colour)
     for k, p in enumerate(points):
@@ -82,7 +82,7 @@ def _draw_views(fig, orbits, colours, labels, title):
     for ax, ((i, j), caption) in zip(axes[1:], VIEWS):
         for track, colour in zip(tracks, colours):
             ax.plot(track[:, i] * scale, track[:, j] * scale, color=colour, lw=0.8)
-        for name, where, radius, colour in bodies:
+        for _, where, radius, colour in bodies:
             if not np.all(np.abs(where - centre) <= half + radius):
                 continue  # outside the window (in the projected-out coordinate too): not in front of the orbits
             ax.add_patch(mpatches.Circle((where[i] * scale, where[j] * scale), radius * scale, facecolor=colour,
