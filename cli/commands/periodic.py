@@ -96,6 +96,10 @@ def command(
         else:
             render.print_tables(family_tables(result, quantities), title)
         return
+    if chosen_branch is not None and family not in (Family.halo, Family.nrho):
+        from orbits import OrbitDomainError
+
+        raise OrbitDomainError(f"--branch {chosen_branch}: only halo families have a northern and a southern branch")
     options = {} if chosen_branch is None else {"branch": chosen_branch}
     constructor = getattr(PeriodicOrbit, CONSTRUCTORS[family.value])
     orbit = constructor(system, **({} if family == Family.dro else {"point": point or _default_point(family)}),
