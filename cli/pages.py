@@ -53,13 +53,13 @@ SUMMARY = {
     "bench": "Benchmarks: speed and worst error against the peers.",
     "bench kepler": "Kepler solvers against heyoka, rebound and Newton.",
     "bench propagate": "Two-body propagation against heyoka's lagrange_prop.",
-    "bench stm": "Two-body state-transition matrices against pykep's.",
     "bench periodic": "Periodic orbits: one halo and a family, corrections counted.",
     "bench api": "The unit-aware API's cost over the float64 core.",
     "bench cli": "Command-line cold start in fresh processes.",
     "bench validate": "Where the time of orbits validate goes.",
     "bench lambert": "Lambert solvers against lamberthub (and pykep, hapsira).",
     "bench ephemeris": "DE421 states against jplephem and astropy.",
+    "bench stm": "The state-transition matrix: cost per state and error.",
     "bench all": "Every benchmark in one run.",
     "bench precision": "Each integrator's accuracy knob: error against time.",
 }
@@ -224,11 +224,15 @@ EXAMPLES = {
     ],
     "bench periodic": [
         "orbits bench periodic --members 10 --repeats 1 --no-numpy",
-        "orbits bench periodic",
+        "orbits bench periodic --members 20 --repeats 1 --format json",
     ],
     "bench propagate": [
         "orbits bench propagate --states 10000 --reference 50",
         "orbits bench propagate --output propagate.json",
+    ],
+    "bench stm": [
+        "orbits bench stm --states 10000 --reference 5",
+        "orbits bench stm --states 30000 --reference 5 --output stm.json",
     ],
     "bench api": [
         "orbits bench api --sizes 1,1000",
