@@ -89,11 +89,10 @@ def _draw_views(fig, orbits, colours, labels, title):
                                          edgecolor="0.4", zorder=3))
             if radius < 0.01 * half:
                 ax.plot(where[i] * scale, where[j] * scale, marker="o", ms=4, color=colour, mec="0.3", zorder=3)
-        for k, p in enumerate(points):
-            if np.all(np.abs(p - centre) <= half):
-                ax.plot(p[i] * scale, p[j] * scale, marker="x", color="C3", ls="none", zorder=4)
-                ax.annotate(f"L{k + 1}", (p[i] * scale, p[j] * scale), textcoords="offset points", xytext=(4, 4),
-                            fontsize="small")
+        for (a, b), names in _projected_points(points, centre, half, (i, j)).items():
+            ax.plot(a * scale, b * scale, marker="x", color="C3", ls="none", zorder=4)
+            ax.annotate(", ".join(names), (a * scale, b * scale), textcoords="offset points", xytext=(4, 4),
+                        fontsize="small")
         ax.set_xlim((centre[i] - half) * scale, (centre[i] + half) * scale)
         ax.set_ylim((centre[j] - half) * scale, (centre[j] + half) * scale)
         ax.set_aspect("equal")
@@ -112,6 +111,17 @@ def _draw_views(fig, orbits, colours, labels, title):
     return axes
 
 
+def _projected_points(points, centre, half, axes) -> dict:
+    """{(a, b): ["L1", ...]}: the Lagrange points inside the window, projected onto `axes`, those that fall on one
+    spot (L1, L2 and L3 seen along x) named together."""
+    spots = {}
+    for k, p in enumerate(points):
+        if np.all(np.abs(p - centre) <= half):
+            key = tuple(round(float(p[a]) / half, 6) * half for a in axes)
+            spots.setdefault(key, []).append(f"L{k + 1}")
+    return spots
+
+
 def _sphere(ax, centre, radius, colour):
     """A body to scale in a 3-D view: a sphere's surface."""
     if radius <= 0.0:
@@ -125,7 +135,7 @@ def _sphere(ax, centre, radius, colour):
 def periodic_orbit(orbit: Any, fig: Any = None) -> tuple[Any, np.ndarray]:
     """An orbits.PeriodicOrbit over one period in the rotating frame: 3-D and the x-y, x-z and y-z projections, the
     primaries to scale and the Lagrange points within the window marked. Returns (figure, its four axes)."""
-    fig = frame.figure(fig, (11.0, 10.0))
+    fig = frame.figure(fig, (12.5, 10.5))
     title = (f"{orbit.describe()} orbit: T = {display.quantity_text(orbit.period, digits=5)}, "
              f"C = {display.number(orbit.dimensionless_jacobi_constant, 7)} (units of (n r)^2)")
     return fig, np.array(_draw_views(fig, [orbit], ["C0"], [orbit.describe()], title))
@@ -137,7 +147,7 @@ def periodic_family(family: Any, fig: Any = None) -> tuple[Any, np.ndarray]:
     (stability_diagram). Returns (figure, its five axes)."""
     import matplotlib as mpl
 
-    fig = frame.figure(fig, (11.0, 15.0))
+    fig = frame.figure(fig, (12.5, 15.5))
     top, bottom = fig.subfigures(2, 1, height_ratios=[2.0, 1.0])
     c = np.array([m.dimensionless_jacobi_constant for m in family.members])
     norm = mpl.colors.Normalize(c.min(), c.max() if c.max() > c.min() else c.min() + 1e-12)
