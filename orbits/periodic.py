@@ -32,7 +32,7 @@ import numpy as np
 from orbits import display, inputs, units
 from orbits.constants import BODIES, body_with_gm
 from orbits.core import continuation, cr3bp, families, lagrange, libration, shooting
-from orbits.core.errors import OrbitDomainError
+from orbits.core.errors import ConvergenceError, OrbitDomainError
 from orbits.lagrange import RestrictedThreeBody
 from orbits.tables import quantity_table
 
@@ -174,7 +174,13 @@ class _Finder:
         self.measures = families.Measures(self.flow)
         self.core, self.northern = core, northern
         self.size = families.start_size(self.binary.mu, core, point)
-        self.hmap, self.first, self.direction = families.first_member(self.flow, core, point, northern, self.size)
+        try:
+            self.hmap, self.first, self.direction = families.first_member(self.flow, core, point, northern,
+                                                                          self.size)
+        except ConvergenceError as err:
+            raise OrbitDomainError(f"the {self.describe()} family's first member (amplitude "
+                                   f"{display.quantity_text(self.size * self.binary.r * u.m)}) could not be "
+                                   f"corrected from its first guess at mu = {self.binary.mu:.6g}: {err}") from None
 
     def stop(self, member: shooting.Crossing) -> str | None:
         """Why the family ends at `member`: it passes within a primary's radius (None otherwise)."""
@@ -506,9 +512,8 @@ class PeriodicOrbit(display.Displayed):
     def __repr__(self) -> str:
         """E.g. "PeriodicOrbit(Earth-Moon L2 southern halo, Az = 20000 km, T = 14.73 d, C = 3.0566)"."""
         parts = [self.describe()]
-        if self.request is not None and self.request[0] not in ("period",):
-            name, value = self.request
-            parts.append(f"{_LABEL[name]} = {value if name == 'resonance' else display.summary(value)}")
+        if self.request is not None and self.request[0] not in ("period", "jacobi"):
+            parts.append(f"{_LABEL[self.request[0]]} = {_shown(self.request)}")
         parts.append("T = " + display.summary(self.period))
         parts.append(f"C = {display.number(self.dimensionless_jacobi_constant)}")
         return display.one_line("PeriodicOrbit", *parts)

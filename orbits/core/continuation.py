@@ -1,6 +1,8 @@
 """Continuation along a family of symmetric periodic orbits, and the stability indices that mark its bifurcations.
 
-A family is a curve of solutions u = (kept components, tau) of the half-period map F(u) = 0 (orbits.core.shooting).
+A family is a curve of solutions u = (kept components, tau) of the half-period map F(u) = 0 (orbits.core.shooting),
+measured in the scaled metric v = weights u (the state components in units of the flow's length scale), so that
+steps mean the same for a Sun-Earth halo (1e-3 r) as for an Earth-Moon one (0.1 r).
 
 Natural-parameter continuation steps one component of u through given values, predicting each member by linear
 extrapolation from the last two and correcting with that component held; it cannot pass a turning point of that
@@ -86,14 +88,20 @@ class Branch:
 
 
 def step_along(hmap: shooting.HalfPeriodMap, member: shooting.Crossing, direction, ds: float) -> shooting.Crossing:
-    """The member at arclength ds along unit `direction` from `member`: the prediction member.u + ds direction corrected
-    on the plane through it normal to `direction` (ConvergenceError if the corrector fails)."""
-    predicted = member.u + ds * direction
+    """The member at arclength ds along unit `direction` (in the scaled metric of hmap.scaled) from `member`: the
+    prediction corrected on the plane through it normal to `direction` (ConvergenceError if the corrector fails)."""
+    predicted = hmap.scaled(member.u) + ds * direction
 
     def condition(u):
-        return float(direction @ (u - predicted)), direction
+        return float(direction @ (hmap.scaled(u) - predicted)), direction * hmap.weights
 
-    return hmap.correct(predicted, condition)
+    return hmap.correct(predicted / hmap.weights, condition)
+
+
+def family_tangent(hmap: shooting.HalfPeriodMap, member: shooting.Crossing, previous=None) -> np.ndarray:
+    """The family's unit tangent at `member` in the scaled metric (dF/dv = dF/du / weights), oriented along
+    `previous`."""
+    return tangent(member.jacobian / hmap.weights, previous)
 
 
 def pseudo_arclength(hmap: shooting.HalfPeriodMap, first: shooting.Crossing, direction, step: float, count: int,
@@ -106,7 +114,7 @@ def pseudo_arclength(hmap: shooting.HalfPeriodMap, first: shooting.Crossing, dir
     (the member is kept: a monitored quantity was passed), or when steps shrink below MIN_STEP."""
     max_step = abs(step) * 8.0 if max_step is None else max_step
     members = [first]
-    t = tangent(first.jacobian, np.asarray(direction, dtype=float))
+    t = family_tangent(hmap, first, np.asarray(direction, dtype=float))
     tangents = [t]
     ds = abs(step)
     while len(members) < count:
@@ -117,8 +125,8 @@ def pseudo_arclength(hmap: shooting.HalfPeriodMap, first: shooting.Crossing, dir
             if ds < MIN_STEP:
                 return Branch(members, tangents, _stuck(members[-1]))
             continue
-        new_t = tangent(member.jacobian, t)
-        jumped = np.linalg.norm(member.u - members[-1].u - ds * t) > JUMP * ds
+        new_t = family_tangent(hmap, member, t)
+        jumped = np.linalg.norm(hmap.scaled(member.u - members[-1].u) - ds * t) > JUMP * ds
         if jumped or float(new_t @ t) < 0.5:  # the tangent turned by more than 60 degrees, or the corrector moved
             # the prediction more than JUMP steps (onto another family): too long a step for this bend
             ds *= 0.5
@@ -145,10 +153,10 @@ def _returns(hmap, first, previous, member) -> bool:
     """Whether the step from `previous` to `member` passes within a quarter of its length of `first` or of first's
     image under z -> -z (the binary's plane is a mirror of the problem)."""
     mirror = np.array([-1.0 if k in (2, 5) else 1.0 for k in hmap.symmetry.kept] + [1.0])
-    a, b = previous.u, member.u
+    a, b = hmap.scaled(previous.u), hmap.scaled(member.u)
     chord = b - a
     length = float(np.linalg.norm(chord))
-    for point in (first.u, first.u * mirror):
+    for point in (hmap.scaled(first.u), hmap.scaled(first.u * mirror)):
         along = min(max(float((point - a) @ chord) / length**2, 0.0), 1.0) if length > 0.0 else 0.0
         if np.linalg.norm(a + along * chord - point) <= 0.25 * length:
             return True
@@ -216,7 +224,8 @@ def locate(hmap: shooting.HalfPeriodMap, member: shooting.Crossing, direction, s
            bracket: tuple[float, float]) -> shooting.Crossing:
     """The member between `member` (s = 0) and arclength `span` along unit `direction` where monitor = target, given
     the monitor's values at both ends (`bracket`, of opposite signs after subtracting target): regula falsi with the
-    Illinois modification on s, each trial corrected onto the family at its arclength."""
+    Illinois modification on s (a bisection where the corrector cannot reach the trial), each trial corrected onto
+    the family at its arclength."""
     a, b = 0.0, float(span)
     fa, fb = bracket[0] - target, bracket[1] - target
     if fa * fb > 0.0:
@@ -224,7 +233,11 @@ def locate(hmap: shooting.HalfPeriodMap, member: shooting.Crossing, direction, s
     best = member
     for _ in range(SEARCH_ITERATIONS):
         s = b - fb * (b - a) / (fb - fa)
-        best = step_along(hmap, member, direction, s)
+        try:
+            best = step_along(hmap, member, direction, s)
+        except ConvergenceError:  # a prediction the corrector cannot bring back: bisect instead
+            s = 0.5 * (a + b)
+            best = step_along(hmap, member, direction, s)
         value = monitor(best) - target
         if abs(value) <= SEARCH_TOLERANCE * abs(target) or abs(b - a) <= 1e-15 * abs(span):
             return best

@@ -43,8 +43,8 @@ SAMPLES = 128
 POLISH_ITERATIONS = 8
 POLISH_TOLERANCE = 1e-14
 #: pseudo-arclength continuation: first and largest steps (units of u), and the most members followed
-STEP = 0.02
-MAX_STEP = 0.25
+STEP = 0.1
+MAX_STEP = 1.5
 MAX_MEMBERS = 2000
 #: the metrics a member can be asked for (units of r, 1 / n and (n r)**2)
 METRICS = ("ax", "ay", "az", "period", "jacobi", "closest_primary", "closest_secondary")
@@ -233,7 +233,7 @@ def trace(hmap: shooting.HalfPeriodMap, measures: Measures, first: shooting.Cros
 
     seen = [value(first)]
     if seen[0] == target:
-        return continuation.Branch([first], [continuation.tangent(first.jacobian, direction)], None), first
+        return continuation.Branch([first], [continuation.family_tangent(hmap, first, direction)], None), first
     side = math.copysign(1.0, target - seen[0])
 
     def passed(previous, member):
@@ -251,7 +251,7 @@ def trace(hmap: shooting.HalfPeriodMap, measures: Measures, first: shooting.Cros
         raise BeyondFamily(name, target, min(reached), max(reached), why)
     before, after = branch.members[-2], branch.members[-1]
     t = branch.tangents[-2]
-    member = continuation.locate(hmap, before, t, float(t @ (after.u - before.u)), value, target,
+    member = continuation.locate(hmap, before, t, float(t @ hmap.scaled(after.u - before.u)), value, target,
                                  (reached[-2], reached[-1]))
     return continuation.Branch(branch.members[:-1], branch.tangents[:-1], None), member
 
@@ -270,7 +270,7 @@ def resample(hmap: shooting.HalfPeriodMap, branch: continuation.Branch, last: sh
     members = list(branch.members)
     if members[-1] is not last:
         members.append(last)
-    steps = [float(t @ (b.u - a.u)) for a, b, t in zip(members, members[1:], branch.tangents)]
+    steps = [float(t @ hmap.scaled(b.u - a.u)) for a, b, t in zip(members, members[1:], branch.tangents)]
     lengths = np.concatenate([[0.0], np.cumsum(steps)])
     chosen = []
     for s in np.linspace(0.0, lengths[-1], count):
@@ -303,7 +303,7 @@ def bifurcations(hmap: shooting.HalfPeriodMap, branch: continuation.Branch) -> l
         for k in range(len(members) - 1):
             if values[k] == 0.0 or values[k] * values[k + 1] < 0.0:
                 t = tangents[k]
-                span = float(t @ (members[k + 1].u - members[k].u))
+                span = float(t @ hmap.scaled(members[k + 1].u - members[k].u))
                 try:
                     member = continuation.locate(hmap, members[k], t, span,
                                                  lambda m, f=function: f(monodromy(hmap, m)), 0.0,
@@ -311,10 +311,10 @@ def bifurcations(hmap: shooting.HalfPeriodMap, branch: continuation.Branch) -> l
                 except (ConvergenceError, OrbitDomainError):
                     member = members[k]
                 found.append((kind, member))
-    found.sort(key=lambda item: _position(members, item[1]))
+    found.sort(key=lambda item: _position(hmap, members, item[1]))
     return found
 
 
-def _position(members, member):
+def _position(hmap, members, member):
     """Where a located member falls along the branch: the index of the nearest computed member."""
-    return int(np.argmin([np.linalg.norm(m.u - member.u) for m in members]))
+    return int(np.argmin([np.linalg.norm(hmap.scaled(m.u - member.u)) for m in members]))

@@ -190,6 +190,12 @@ class HalfPeriodMap:
     def __init__(self, flow: Flow, symmetry: Symmetry):
         self.flow, self.symmetry = flow, symmetry
         self.mu = flow.mu
+        #: the continuation's metric: state components in units of the origin's length scale, tau as it is
+        self.weights = np.append(np.full(len(symmetry.kept), 1.0 / flow.origin.scale), 1.0)
+
+    def scaled(self, u) -> np.ndarray:
+        """u in the continuation's metric (weights * u): a step of 1 moves the state by the origin's scale."""
+        return np.asarray(u, dtype=float) * self.weights
 
     def state(self, u) -> np.ndarray:
         """The initial state x0(u): the kept components from u, zero elsewhere."""
