@@ -52,31 +52,6 @@ def acceleration(r: ArrayLike, v: ArrayLike, mu: float) -> np.ndarray:
     return gravity + spin
 
 
-def hessian(r: ArrayLike, mu: float) -> np.ndarray:
-    """Omega_rr, the (..., 3, 3) Hessian of Omega at rotating-frame positions r of shape (..., 3)."""
-    r = np.asarray(r, dtype=float)
-    x, y, z = r[..., 0], r[..., 1], r[..., 2]
-    d1 = np.stack([x + mu, y, z], axis=-1)
-    d2 = np.stack([x - (1.0 - mu), y, z], axis=-1)
-    s1, s2 = np.sum(d1 * d1, axis=-1), np.sum(d2 * d2, axis=-1)
-    g1, g2 = (1.0 - mu) / s1**1.5, mu / s2**1.5
-    h1, h2 = 3.0 * g1 / s1, 3.0 * g2 / s2
-    outer = h1[..., None, None] * d1[..., :, None] * d1[..., None, :] + h2[..., None, None] * d2[..., :, None] * \
-        d2[..., None, :]
-    diagonal = np.stack([1.0 - g1 - g2, 1.0 - g1 - g2, -g1 - g2], axis=-1)
-    return outer + diagonal[..., None] * np.eye(3)
-
-
-def jacobian(state: ArrayLike, mu: float) -> np.ndarray:
-    """A = d(state')/d(state), the (..., 6, 6) matrix of the variational equations at states of shape (..., 6)."""
-    state = np.asarray(state, dtype=float)
-    a = np.zeros(state.shape[:-1] + (6, 6))
-    a[..., :3, 3:] = np.eye(3)
-    a[..., 3:, :3] = hessian(state[..., :3], mu)
-    a[..., 3:, 3:] = 2.0 * _K
-    return a
-
-
 def field(state: ArrayLike, mu: float) -> np.ndarray:
     """The vector field (v, acceleration) at states of shape (..., 6)."""
     state = np.asarray(state, dtype=float)

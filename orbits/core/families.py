@@ -256,12 +256,6 @@ def trace(hmap: shooting.HalfPeriodMap, measures: Measures, first: shooting.Cros
     return continuation.Branch(branch.members[:-1], branch.tangents[:-1], None), member
 
 
-def search(hmap: shooting.HalfPeriodMap, measures: Measures, first: shooting.Crossing, direction, name: str,
-           target: float, stop: Callable[[shooting.Crossing], str | None] | None = None) -> shooting.Crossing:
-    """The member of the family through `first` with metric `name` = target (trace)."""
-    return trace(hmap, measures, first, direction, name, target, stop)[1]
-
-
 def resample(hmap: shooting.HalfPeriodMap, branch: continuation.Branch, last: shooting.Crossing,
              count: int) -> list:
     """`count` >= 2 members evenly spaced in arclength from the branch's first member to `last`, each corrected from

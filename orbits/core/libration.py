@@ -29,8 +29,6 @@ import numpy as np
 from orbits.core import lagrange
 from orbits.core.errors import OrbitDomainError
 
-COLLINEAR = ("L1", "L2", "L3")
-
 
 def collinear_index(point: str) -> int:
     """0, 1, 2 for L1, L2, L3; OrbitDomainError naming the collinear points otherwise."""
