@@ -220,7 +220,7 @@ EXAMPLES = {
     ],
     "bench kepler": [
         "orbits bench kepler --easy 10000 --hard 1000 --hyperbolic 1000 --reference 100",
-        "orbits bench kepler",
+        "orbits bench kepler --easy 100000 --repeats 5 --output kepler.json",
     ],
     "bench periodic": [
         "orbits bench periodic --members 10 --repeats 1 --no-numpy",
@@ -228,7 +228,11 @@ EXAMPLES = {
     ],
     "bench propagate": [
         "orbits bench propagate --states 10000 --reference 50",
-        "orbits bench propagate --output propagate.json",
+        "orbits bench propagate --states 100000 --reference 20 --format json",
+    ],
+    "bench stm": [
+        "orbits bench stm --states 10000 --reference 5",
+        "orbits bench stm --states 30000 --reference 5 --output stm.json",
     ],
     "bench stm": [
         "orbits bench stm --states 10000 --reference 5",
@@ -236,31 +240,31 @@ EXAMPLES = {
     ],
     "bench api": [
         "orbits bench api --sizes 1,1000",
-        "orbits bench api",
+        "orbits bench api --sizes 1,100000 --repeats 3",
     ],
     "bench cli": [
-        "orbits bench cli --runs 2",
-        "orbits bench cli",
+        "orbits bench cli --runs 1 --no-first-run",
+        "orbits bench cli --runs 2 --no-first-run --format json",
     ],
     "bench validate": [
-        "orbits bench validate --no-sweep",
-        "orbits bench validate --output validate.json",
+        "orbits bench validate circular eccentric --no-sweep",
+        "orbits bench validate binary flyby --no-sweep --format json",
     ],
     "bench lambert": [
         "orbits bench lambert --transfers 10000 --reference 50",
-        "orbits bench lambert",
+        "orbits bench lambert --transfers 30000 --reference 20 --output lambert.json",
     ],
     "bench ephemeris": [
         "orbits bench ephemeris --epochs 10000",
-        "orbits bench ephemeris",
+        "orbits bench ephemeris --epochs 1000 --repeats 5",
     ],
     "bench all": [
-        "orbits bench all --quick",
-        "orbits bench all --output bench.json",
+        "orbits bench all --quick --only ephemeris,api",
+        "orbits bench all --quick --only lambert --output bench.json",
     ],
     "bench precision": [
         "orbits bench precision --quick --problem L4",
-        "orbits bench precision --quick --plot precision.png",
+        'orbits bench precision --quick --problem "e=0.9" --plot precision.png',
     ],
 }
 
@@ -302,12 +306,12 @@ def document(app: typer.Typer, prefix: str = "") -> None:
     for info in app.registered_commands:
         path = f"{prefix}{info.name}"
         info.help = reflow(info.help or info.callback.__doc__)
-        info.short_help = SUMMARY[path]
+        info.short_help = SUMMARY.get(path, info.help.split(". ")[0])
         if path in EXAMPLES:
             info.epilog = epilog(path)
         if path in CLASSES:
             info.cls = CLASSES[path]
     for group in app.registered_groups:
         path = f"{prefix}{group.name}"
-        group.short_help = SUMMARY[path]
+        group.short_help = SUMMARY.get(path, group.short_help)
         document(group.typer_instance, f"{path} ")

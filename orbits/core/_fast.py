@@ -93,8 +93,9 @@ def announce(module):
         return
     _state["announced"].add(module)
     if folder is None or not any(Path(folder).rglob(f"{module}.*.nbi")):
-        print(f"orbits: compiling the {module.strip('_').replace('_', ' ')} kernels for this machine, once "
-              f"(a minute at most; later runs load them from {folder or 'memory'})", file=sys.stderr)
+        kept = "see orbits info for where" if folder else "kept in memory for this run"
+        print(f"orbits: compiling the {module.strip('_').replace('fast_', '').replace('_', ' ')} kernels, once "
+              f"({kept})", file=sys.stderr)
 
 
 def _numba_imports():
