@@ -234,10 +234,6 @@ EXAMPLES = {
         "orbits bench stm --states 10000 --reference 5",
         "orbits bench stm --states 30000 --reference 5 --output stm.json",
     ],
-    "bench stm": [
-        "orbits bench stm --states 10000 --reference 5",
-        "orbits bench stm --states 30000 --reference 5 --output stm.json",
-    ],
     "bench api": [
         "orbits bench api --sizes 1,1000",
         "orbits bench api --sizes 1,100000 --repeats 3",

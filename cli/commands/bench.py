@@ -181,6 +181,7 @@ def all_(
             "propagate": {"n": 100_000, "n_ref": 50},
             "stm": {"n": 10_000, "n_ref": 5},
             "lambert": {"n": 100_000, "n_ref": 50},
+            "periodic": {"members": 10, "numpy": False},
             "ephemeris": {"n": 10_000},
             "api": {"sizes": (1, 100_000)},
             "cli": {"runs": 3},
