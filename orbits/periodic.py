@@ -5,15 +5,17 @@ halo orbits and their near-rectilinear continuation, distant retrograde orbits.
     >>> em = RestrictedThreeBody.from_primaries("Earth", "Moon")
     >>> nrho = PeriodicOrbit.near_rectilinear(em, resonance="9:2")      # doctest: +SKIP
     >>> nrho.period.to("d")                                             # doctest: +SKIP
-    <Quantity 6.5530... d>
+    <Quantity 6.55270481 d>
 
 Units of the numeric core (orbits.core.cr3bp): the separation r, the binary's angular velocity n, and so speeds in
 n r and the Jacobi constant in (n r)**2; the rotating frame of orbits.lagrange (origin at the barycentre, x from the
 primary M to the secondary m, z along the binary's spin). Every member is found the same way: the family's first
 member from a first guess near its start (orbits.core.families), continued by pseudo-arclength continuation to the
-requested amplitude, period, Jacobi constant or closest approach, which regula falsi then hits to 1e-13. The
-correction closes each orbit to 1e-12 r or better at its half period (tests/api/test_periodic_api.py measures the
-closure over a full period, in this integration and in rebound's and heyoka's, orbits.validate.periodic).
+requested amplitude, period, Jacobi constant or closest approach, which regula falsi then hits to 1e-13 of itself.
+The states are integrated about the family's own point (orbits.core.cr3bp.Origin), and the correction leaves a
+half-period residual below 1e-11 of that point's distance to the nearer primary (measured 1e-18 to 4e-16); over a
+full period an orbit closes to 1e-11 of its size (tests/api/test_periodic_api.py, tests/core/test_periodic_core.py;
+rebound and heyoka, orbits.validate.periodic: 1e-9).
 
 Families and where they live: "lyapunov" (L1, L2, L3), "halo" (L1, L2; northern or southern: which side of the
 binary's plane the orbit reaches farther to), "vertical" (L1, L2), "dro" (about the secondary), and "nrho", the halo

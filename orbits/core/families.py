@@ -1,5 +1,6 @@
 """The families of periodic orbits of the restricted problem: where each starts, how it is followed, what its members
-measure, and the search for the member with a given amplitude, period or Jacobi constant.
+measure, the search for the member with a given amplitude, period, Jacobi constant or closest approach, and the
+family's bifurcations.
 
 Units of orbits.core.cr3bp (r = 1, n = 1). Each family is a curve of symmetric orbits (orbits.core.shooting):
 
@@ -10,13 +11,14 @@ Units of orbits.core.cr3bp (r = 1, n = 1). Each family is a curve of symmetric o
     vertical   spatial figure-of-eight, about L1 or L2, crossing the x axis perpendicularly; first member from the
                linearised vertical oscillation of z amplitude START_SIZE gamma
     dro        planar, retrograde about the secondary, crossing the x axis perpendicularly between the primaries; first
-               member from the retrograde circle of radius START_SIZE times the secondary's Hill radius (mu/3)**(1/3)
-               in the rotating frame, vy = sqrt(mu / d) + d
+               member from the retrograde circle of radius d = DRO_START_SIZE times the secondary's Hill radius
+               (mu/3)**(1/3), in the rotating frame vy = sqrt(mu / d) + d
 
 The first member is corrected with its defining component held (x for the planar ones, z for the halo, vz for the
 vertical), then the family is followed by pseudo-arclength continuation (orbits.core.continuation) in the direction
-of growing amplitude. A member's extent comes from its trajectory sampled at SAMPLES points, each extreme (of x, y,
-z and of the distance to either primary) polished by Newton's method on its time derivative along the exact flow.
+of growing amplitude, in a flow written about the family's origin (its point, or the secondary for the DRO). A
+member's extent comes from its trajectory sampled at SAMPLES points, each extreme (of x, y, z and of the distance to
+either primary) polished by Newton's method on its time derivative along the exact flow.
 """
 
 import math
@@ -42,7 +44,8 @@ SAMPLES = 128
 #: Newton steps polishing an extreme, and the time step (units of the period) below which it has converged
 POLISH_ITERATIONS = 8
 POLISH_TOLERANCE = 1e-14
-#: pseudo-arclength continuation: first and largest steps (units of u), and the most members followed
+#: pseudo-arclength continuation: first and largest steps (in the scaled metric of HalfPeriodMap.scaled: units of
+#: the origin's length scale), and the most members followed
 STEP = 0.1
 MAX_STEP = 1.5
 MAX_MEMBERS = 2000
