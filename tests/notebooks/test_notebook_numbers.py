@@ -1,0 +1,223 @@
+"""The numbers the notebooks show, checked here (the notebooks teach and hold no assert).
+
+One section per notebook, in its order; each test computes what its notebook computes, through the same public
+API, and holds it to the tolerance the notebook once asserted (the measured figure in a comment). Checks that need
+a long integration are made where their subject is tested, and named at the end of each section.
+"""
+
+import math
+
+import astropy.units as u
+import numpy as np
+import pytest
+
+from orbits import anomalies
+from orbits.tools.reference import kepler_E, ulp_error
+
+# 01 Kepler's equation -------------------------------------------------------------------------------------------
+
+
+def test_kepler_hard_corner_within_4_ulp():
+    """e = 1 - 1e-12, M = 1e-9 rad: measured 0.64 ulp from the 60-digit root."""
+    e, M = 1 - 1e-12, 1e-9
+    E = anomalies(e, mean_anomaly=M * u.rad)["eccentric_anomaly"].to_value(u.rad)
+    assert ulp_error(E, kepler_E(M, e)) <= 4
+
+
+def test_kepler_sweep_of_300_within_4_ulp():
+    """The notebook's 300 cases (seed 0): ordinary, singular corner, huge M. Measured worst 1.00 ulp."""
+    rng = np.random.default_rng(0)
+    Ms = np.concatenate([rng.uniform(-10, 10, 100), 10 ** rng.uniform(-12, -3, 100), 10 ** rng.uniform(3, 12, 100)])
+    es = np.concatenate([rng.uniform(0, 1, 100), 1 - 10 ** rng.uniform(-15, -6, 100), rng.uniform(0, 1, 100)])
+    Es = anomalies(es, mean_anomaly=Ms * u.rad)["eccentric_anomaly"].to_value(u.rad)
+    assert max(float(ulp_error(E, kepler_E(M, e))) for M, e, E in zip(Ms, es, Es)) <= 4
+
+
+def test_hyperbolic_and_parabolic_roots_satisfy_their_equations():
+    """e sinh H - H = 1e6 at e = 1.5: residual measured -3.5e-10, the round-off of evaluating it at 1e6 (one ulp of
+    1e6 is 1.2e-10). Barker's D + D**3/3 = 2: measured exactly 2."""
+    H = anomalies(1.5, mean_anomaly=1e6 * u.rad)["hyperbolic_anomaly"].to_value(u.rad)
+    assert abs(1.5 * np.sinh(H) - H - 1e6) <= 4e-9
+    D = anomalies(1.0, mean_anomaly=2.0)["parabolic_anomaly"].value
+    assert abs(D + D**3 / 3 - 2.0) <= 4.5e-16
+
+
+def test_co_vertex_to_co_vertex_is_the_courses_t1():
+    """T1 / T = 1/2 - e/pi at e = 0.9, from the mean anomaly at E = 90 deg: measured 1.1e-16 apart."""
+    e = 0.9
+    quarter = anomalies(e, true_anomaly=np.arccos(-e) * u.rad)["mean_anomaly"]
+    assert abs((2 * quarter / (360 * u.deg)).to_value(u.one) - (0.5 - e / np.pi)) <= 1e-15
+
+
+# 02 Orbits about a fixed star -----------------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def earth_orbit():
+    from orbits import BODIES, Orbit
+
+    return Orbit.from_elements("Sun", a=1.00000261 * u.AU, e=0.01671123, mass=BODIES["Earth"].mass * u.kg)
+
+
+def test_earths_year_and_eccentricity(earth_orbit):
+    """Kepler III with the Standish (1992) a and the IAU GM of the Sun: 365.25833 d; e = c / a exactly 0.01671123
+    (measured 0 apart)."""
+    assert round(earth_orbit.period.to_value(u.day), 4) == 365.2583
+    assert abs((earth_orbit.focal_distance / earth_orbit.semi_major_axis).to_value(u.one) - 0.01671123) <= 1e-15
+
+
+def test_low_and_geostationary_orbits():
+    """6778 km: 92.56 min. 42164.17 km: 86164.096 s, within 0.06 s of the sidereal day 86164.0905 s, 35786 km above
+    the WGS 84 equatorial radius."""
+    from orbits import Orbit
+
+    leo = Orbit.circular("Earth", 6778 * u.km)
+    geo = Orbit.circular("Earth", 42164.17 * u.km)
+    assert round(leo.period.to_value(u.min), 2) == 92.56
+    assert abs(geo.period.to_value(u.s) - 86164.0905) <= 0.06
+    assert round((geo.radius - 6378.137 * u.km).to_value(u.km)) == 35786
+
+
+def test_a_grid_of_orbits_obeys_keplers_third_law():
+    """The period depends on a alone (the three rows equal exactly); 30 AU: 30**1.5 = 164.32 yr."""
+    from orbits import Orbit
+
+    grid = Orbit.from_elements("Sun", a=np.linspace(0.4, 30, 5) * u.AU, e=np.array([[0.0], [0.5], [0.9]]))
+    assert np.all(grid.period == grid.period[0])
+    assert round(grid.period[0, -1].to_value(u.yr), 2) == 164.32
+
+
+def near_parabolic_comet():
+    from orbits import Orbit
+
+    return Orbit.from_elements("Sun", q=0.5 * u.AU, e=0.999999, nu=-90 * u.deg)
+
+
+def test_the_comets_dots_are_inside_its_picture(earth_orbit):
+    """The comet every 20 days for 200 days, drawn over the window of 10 q: every dot inside the axes, and the
+    window under 20 AU wide (not a 1e6 AU line)."""
+    from orbits.plot import orbits
+
+    comet = near_parabolic_comet()
+    positions, _ = comet.propagate(np.arange(20, 201, 20) * u.day)
+    _, ax = orbits(comet, earth_orbit, labels=["comet, e = 0.999999", "Earth"])
+    shown = positions.to_value(u.AU)
+    ax.plot(shown[:, 0], shown[:, 1], "o")
+    x_low, x_high = sorted(ax.get_xlim())
+    y_low, y_high = sorted(ax.get_ylim())
+    assert np.all((x_low < shown[:, 0]) & (shown[:, 0] < x_high) & (y_low < shown[:, 1]) & (shown[:, 1] < y_high))
+    assert x_high - x_low < 20  # AU
+
+
+def test_the_comets_distances():
+    """At nu = -90 deg r = p = q (1 + e) (measured 0 apart); after 50 and 100 days 0.56844747 and 1.38102567 AU."""
+    r, _ = near_parabolic_comet().propagate([0, 50, 100] * u.day)
+    distances = np.linalg.norm(r, axis=-1).to_value(u.AU)
+    assert abs(distances[0] / (0.5 * (1 + 0.999999)) - 1) <= 1e-15
+    assert list(distances.round(8)) == [0.9999995, 0.56844747, 1.38102567]
+
+
+# 03 Binaries, flybys and escape ---------------------------------------------------------------------------------
+
+
+def test_earth_moon_barycentre_and_month():
+    """The Earth 4670.7 km from the barycentre; Kepler III 27.285 d (the observed sidereal month is 27.322 d)."""
+    from orbits import Binary
+
+    pair = Binary.from_elements("Earth", "Moon", a=384399 * u.km, e=0.0549)
+    assert round(pair.star1.semi_major_axis.to_value(u.km), 1) == 4670.7
+    assert round(pair.period.to_value(u.day), 3) == 27.285
+
+
+def test_binary_star_period_and_speeds():
+    """1 + 0.5 solar masses, a = 1 AU: 298.23 d; the lighter star twice as fast (m1 / m2 = 2; measured 0 apart)."""
+    from orbits import Binary
+
+    binary = Binary.from_elements(1 * u.solMass, 0.5 * u.solMass, a=1 * u.AU, e=0.5, nu=60 * u.deg)
+    assert round(binary.period.to_value(u.day), 2) == 298.23
+    assert abs(binary.star2.periapsis_speed / binary.star1.periapsis_speed - 2) <= 4.5e-16
+
+
+@pytest.fixture(scope="module")
+def binary_on_the_sky():
+    from orbits import Binary
+
+    return Binary.from_elements(1 * u.solMass, 0.5 * u.solMass, a=1 * u.AU, e=0.5, inc=60 * u.deg, raan=30 * u.deg,
+                                argp=100 * u.deg, nu=60 * u.deg, com_v=[0, 0, 20] * u.km / u.s)
+
+
+def test_sky_position_is_the_textbook_projection(binary_on_the_sky):
+    """57.31 mas at position angle 199.69 deg from 10 pc; the textbook projection rho = r sqrt(cos^2(w + nu) +
+    sin^2(w + nu) cos^2 i), tan(theta - Omega) = tan(w + nu) cos i agrees: measured 4.4e-16 in rho, 2.8e-14 deg."""
+    rho, theta = binary_on_the_sky.sky_position()
+    rho_mas = (rho / (10 * u.pc)).to_value(u.mas, u.dimensionless_angles())
+    e, nu, omega, inc, node = 0.5, *np.radians([60, 100, 60, 30])
+    r_au = (1 - e**2) / (1 + e * np.cos(nu))  # 1 AU at 10 pc is 100 mas
+    rho_hand = 100 * r_au * np.hypot(np.cos(omega + nu), np.sin(omega + nu) * np.cos(inc))
+    theta_hand = np.degrees(node + np.arctan2(np.sin(omega + nu) * np.cos(inc), np.cos(omega + nu))) % 360
+    assert round(rho_mas, 2) == 57.31 and round(theta.to_value(u.deg), 2) == 199.69
+    assert abs(rho_mas / rho_hand - 1) <= 3e-15
+    assert abs(theta.to_value(u.deg) - theta_hand) <= 3e-13  # deg
+
+
+def test_radial_velocity_amplitudes_and_mass_function(binary_on_the_sky):
+    """K1 = 12.1595495 km/s, and by hand 2 pi a1 sin i / (P sqrt(1 - e^2)) with astropy's G (measured 2.2e-16
+    apart); K2 / K1 = m1 / m2 = 2; f(M) = (m2 sin i)^3 / (m1 + m2)^2 (measured 0 apart)."""
+    from astropy.constants import G
+
+    seen = binary_on_the_sky
+    k1, k2 = seen.rv_semi_amplitude1, seen.rv_semi_amplitude2
+    e, inc = 0.5, np.radians(60)
+    period = 2 * np.pi * np.sqrt((1 * u.AU) ** 3 / (G * 1.5 * u.solMass))
+    k1_hand = 2 * np.pi * (1 / 3 * u.AU) * np.sin(inc) / (period * np.sqrt(1 - e**2))  # a1 = a m2 / (m1 + m2)
+    assert abs(k1.to_value(u.km / u.s) - 12.15955) <= 1e-4
+    assert abs((k1 / k1_hand).to_value(u.one) - 1) <= 2e-15
+    assert abs(k2 / k1 - 2) <= 4.5e-16
+    assert abs(seen.mass_function.to_value(u.solMass) / ((0.5 * np.sin(inc)) ** 3 / 1.5**2) - 1) <= 1e-15
+
+
+def test_the_curve_gives_back_the_companion(binary_on_the_sky):
+    """Star 1's P, K1 and e with i = 60 deg give back 0.5 solar masses (measured 5.6e-17 apart); sin i = 1 says at
+    least 0.4169."""
+    from orbits import SpectroscopicBinary
+
+    seen = binary_on_the_sky
+    back = SpectroscopicBinary.from_curve(seen.period, seen.rv_semi_amplitude1, 0.5, primary_mass=1 * u.solMass,
+                                          inc=60 * u.deg)
+    assert abs(back.companion_mass.to_value(u.solMass) - 0.5) <= 5e-16
+    assert round(back.minimum_companion_mass.to_value(u.solMass), 4) == 0.4169
+
+
+def test_51_pegasi_b_and_the_suns_reflex():
+    """P = 4.2293 d, K = 59 m/s, e = 0 about one solar mass: m sin i = 0.4696 Jupiter masses, within the published
+    0.47 +- 0.02 (Mayor & Queloz 1995, Nature 378, 355). Jupiter moves the Sun by 12.5 m/s (edge-on)."""
+    from orbits import Binary, SpectroscopicBinary
+
+    peg = SpectroscopicBinary.from_curve(4.2293 * u.day, 59 * u.m / u.s, 0.0, primary_mass=1 * u.solMass)
+    m_sin_i = peg.minimum_companion_mass.to_value(u.jupiterMass)
+    assert abs(m_sin_i - 0.47) <= 0.02
+    assert round(m_sin_i, 4) == 0.4696
+    sun = Binary.from_elements("Sun", "Jupiter", a=5.2026 * u.AU, e=0.0484, inc=90 * u.deg)
+    assert round(sun.rv_semi_amplitude1.to_value(u.m / u.s), 1) == 12.5
+
+
+def test_jupiter_flyby():
+    """5.6 km/s aimed to pass 200,000 km from Jupiter: b = 1,286,818 km, 36.03 km/s at the closest pass, turned by
+    144.66 deg."""
+    from orbits import Flyby
+
+    jupiter = Flyby.past("Jupiter", v_inf=5.6 * u.km / u.s, periapsis=200_000 * u.km)
+    assert round(jupiter.impact_parameter.to_value(u.km)) == 1286818
+    assert round(jupiter.periapsis_speed.to_value(u.km / u.s), 2) == 36.03
+    assert round(jupiter.deflection_angle.to_value(u.deg), 2) == 144.66
+
+
+def test_cosmic_velocities_geostationary_altitude_and_elongation():
+    """The course's 7.9, 11.2 and 16.7 km/s are 7.904, 11.178 and 16.648 km/s; 35786.1 km; Venus 46.3 deg."""
+    from orbits import CosmicVelocities, SynchronousOrbit, max_elongation
+
+    v = CosmicVelocities.from_surface_gravity()
+    speeds = (v.first_cosmic_velocity, v.second_cosmic_velocity, v.third_cosmic_velocity)
+    assert [round(float(x.to_value(u.km / u.s)), 3) for x in speeds] == [7.904, 11.178, 16.648]
+    assert round(SynchronousOrbit.of("Earth").altitude.to_value(u.km), 1) == 35786.1
+    assert round(max_elongation(0.723 * u.AU, 1 * u.AU).to_value(u.deg), 1) == 46.3
