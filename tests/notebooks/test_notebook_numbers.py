@@ -221,3 +221,40 @@ def test_cosmic_velocities_geostationary_altitude_and_elongation():
     assert [round(float(x.to_value(u.km / u.s)), 3) for x in speeds] == [7.904, 11.178, 16.648]
     assert round(SynchronousOrbit.of("Earth").altitude.to_value(u.km), 1) == 35786.1
     assert round(max_elongation(0.723 * u.AU, 1 * u.AU).to_value(u.deg), 1) == 46.3
+
+
+# 04 Lagrange points and rings -----------------------------------------------------------------------------------
+
+
+def test_earth_moon_collinear_points_and_their_e_folding_times():
+    """L1 58,019 km and L2 64,515 km from the Moon; e-folding 1.48, 2.01 and 24.41 d at L1..L3 (against mpmath in
+    tests/api/test_lagrange_rings.py); L4 and L5 stable (mu = 0.01215 < 0.03852)."""
+    from orbits import RestrictedThreeBody
+
+    em = RestrictedThreeBody.from_primaries("Earth", "Moon")
+    assert list(em.distances_to_secondary[:2].to_value(u.km).round()) == [58019, 64515]
+    assert list(em.e_folding_times[:3].to_value(u.day).round(2)) == [1.48, 2.01, 24.41]
+    assert em.triangular_points_stable
+
+
+def test_maxwells_ring_of_eight():
+    """The threshold central mass of 8 bodies of 1e20 kg: 2.122610637695383e22 kg (beta_c = 212.26 = 0.41457 n**3,
+    which tests/core/test_rings.py checks against a Cartesian linearisation); unstable at 0.8 of it, stable at
+    1.25."""
+    from orbits import Ring
+
+    ring = Ring.from_masses(8, 1e20 * u.kg, 1e5 * u.km)
+    assert abs(ring.central_mass_threshold.to_value(u.kg) / 2.122610637695383e22 - 1) <= 1e-12
+    for factor in (0.8, 1.25):
+        heavy = Ring.from_masses(8, 1e20 * u.kg, 1e5 * u.km, central_mass=factor * ring.central_mass_threshold)
+        assert heavy.linearly_stable == (factor > 1)
+
+
+# The integrations of notebook 04 are checked where their subject is tested:
+# - the lagrange_L4_L5 and lagrange_unstable scenes pass: tests/validation/test_model_scenes.py
+#   (test_lagrange_and_ring_scenes_agree_with_both_backends);
+# - the particle leaving L1 at the eigenvalue rate (within 1.7e-3; measured 1.7e-4), the tadpole between 45-50 and
+#   70-75 deg from the Moon, the horseshoe through L3 turning 10-16 deg from the Earth:
+#   tests/api/test_rotating_frame_pictures.py;
+# - a ring of six breaking up at 0.94-1.19 times the predicted time, with both integrators:
+#   tests/validation/test_lagrange_rings_integration.py (test_rings_hold_their_shape_until_the_predicted_breakup).
