@@ -258,3 +258,78 @@ def test_maxwells_ring_of_eight():
 #   tests/api/test_rotating_frame_pictures.py;
 # - a ring of six breaking up at 0.94-1.19 times the predicted time, with both integrators:
 #   tests/validation/test_lagrange_rings_integration.py (test_rings_hold_their_shape_until_the_predicted_breakup).
+
+
+# 05 The expanding universe --------------------------------------------------------------------------------------
+
+
+def test_the_courses_einstein_de_sitter_age():
+    """H = 0.5e-10 / yr: t = 2 / (3 H) = 1.3333e10 yr (measured 1.1e-16 apart), the course's 1.33e10 yr; 48.89 km/s/Mpc."""
+    from orbits import Cosmology
+
+    course = Cosmology.einstein_de_sitter(0.5e-10 / u.yr)
+    assert abs(course.age().to_value(u.yr) / (4e10 / 3) - 1) <= 4e-16
+    assert round(course.age().to_value(u.yr) / 1e10, 2) == 1.33
+    assert round(course.hubble_constant.to_value(u.km / u.s / u.Mpc), 2) == 48.89
+
+
+@pytest.fixture(scope="module")
+def friedmann_models():
+    from orbits import Cosmology
+
+    H0 = 67.66 * u.km / u.s / u.Mpc
+    return {"Einstein-de Sitter": Cosmology.einstein_de_sitter(H0),
+            "open": Cosmology.from_densities(H0, Om0=0.3, Ol0=0.0),
+            "flat": Cosmology.from_densities(H0, Om0=0.31, Ol0=0.69)}
+
+
+def test_friedmann_ages_and_distances(friedmann_models):
+    """H0 = 67.66 km/s/Mpc: ages 9.634, 11.688 and 13.805 Gyr; comoving distances to z = 1: 2596, 2892, 3398 Mpc."""
+    ages = [round(model.age().to_value(u.Gyr), 3) for model in friedmann_models.values()]
+    distances = [round(model.comoving_distance(1).to_value(u.Mpc)) for model in friedmann_models.values()]
+    assert ages == [9.634, 11.688, 13.805] and distances == [2596, 2892, 3398]
+
+
+def test_planck18_distances_agree_with_astropy():
+    """D_L, D_A, m - M, V_C and lookback time at z = 0.1, 0.5, 1, 3 against astropy's FlatLambdaCDM with the same
+    parameters (its own quadrature): measured 6.7e-15 relative at worst."""
+    from astropy.cosmology import FlatLambdaCDM
+
+    from orbits import Cosmology
+
+    planck = Cosmology.planck18()
+    reference = FlatLambdaCDM(67.66, 0.30966, Tcmb0=0)
+    worst = 0.0
+    for z in (0.1, 0.5, 1.0, 3.0):
+        ours = [planck.luminosity_distance(z).to_value(u.Mpc), planck.angular_diameter_distance(z).to_value(u.Mpc),
+                planck.distance_modulus(z).to_value(u.one), planck.comoving_volume(z).to_value(u.Gpc**3),
+                planck.lookback_time(z).to_value(u.Gyr)]
+        theirs = [reference.luminosity_distance(z).to_value(u.Mpc),
+                  reference.angular_diameter_distance(z).to_value(u.Mpc), reference.distmod(z).value,
+                  reference.comoving_volume(z).to_value(u.Gpc**3), reference.lookback_time(z).to_value(u.Gyr)]
+        worst = max(worst, *(abs(a / b - 1) for a, b in zip(ours, theirs)))
+    assert worst < 1e-12
+
+
+def test_planck18_is_fainter_than_einstein_de_sitter_at_z_1(friedmann_models):
+    """m - M at z = 1: Planck 2018 minus Einstein-de Sitter (same H0) = 0.585 mag."""
+    from orbits import Cosmology
+
+    gap = (Cosmology.planck18().distance_modulus(1) - friedmann_models["Einstein-de Sitter"].distance_modulus(1))
+    assert round(gap.to_value(u.one), 2) == 0.59
+
+
+def test_closed_universe_turnaround_and_crunch_are_the_cycloids():
+    """Om = 2, no Lambda: turnaround pi Om / (2 H0 (Om - 1)**1.5) = 45.4009 Gyr and the crunch at twice that
+    (each measured 2.2e-16 apart)."""
+    from orbits import Cosmology
+
+    H0 = 67.66 * u.km / u.s / u.Mpc
+    closed = Cosmology.from_densities(H0, Om0=2.0, Ol0=0.0)
+    turnaround = np.pi * 2.0 / (2 * H0 * (2.0 - 1) ** 1.5)
+    assert abs((closed.turnaround_time / turnaround).to_value(u.one) - 1) < 1e-15
+    assert abs((closed.big_crunch_time / (2 * turnaround)).to_value(u.one) - 1) < 1e-15
+
+
+# The expanding_universe scene passing with both integrators: tests/validation/test_model_scenes.py
+# (test_expanding_universe_agrees_with_both_backends).
