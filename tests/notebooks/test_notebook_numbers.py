@@ -333,3 +333,43 @@ def test_closed_universe_turnaround_and_crunch_are_the_cycloids():
 
 # The expanding_universe scene passing with both integrators: tests/validation/test_model_scenes.py
 # (test_expanding_universe_agrees_with_both_backends).
+
+
+# 06 Validation --------------------------------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def four_scenes():
+    from orbits import scene
+    from orbits.validate import validate
+
+    return validate([scene.load(name) for name in ("circular", "eccentric", "near_parabolic", "flyby")])
+
+
+def test_four_builtin_scenes_pass_within_3e_10(four_scenes):
+    """Every check passes; the worst position error of the four is 3.0e-11 (eccentric, 100 orbits, heyoka)."""
+    assert four_scenes.passed
+    worst = max(max(c.errors.values()) for s in four_scenes.scenes for c in s.checks
+                if c.quantity.startswith("positions"))
+    assert worst <= 3e-10
+
+
+def test_the_residual_picture_of_the_four_scenes(four_scenes):
+    """Left: the two 100-orbit scenes x two integrators on log axes, each ending at 100 periods; right: the two
+    passages x two integrators over the fraction of the run; both legends below their panels, off the data."""
+    from orbits.plot import validation_residuals
+
+    fig, (whole, passages) = validation_residuals(four_scenes)
+    assert whole.get_xscale() == "log" and whole.get_yscale() == "log" and len(whole.get_lines()) == 4
+    assert all(abs(line.get_xdata()[-1] - 100) < 1e-12 for line in whole.get_lines())
+    assert len(passages.get_lines()) == 4 and passages.get_xlim() == (0.0, 1.0)
+    fig.canvas.draw()
+    for ax in (whole, passages):
+        assert ax.get_legend().get_window_extent().y1 <= ax.get_window_extent().y0
+
+
+def test_the_track_picture_names_each_scene(four_scenes):
+    from orbits.plot import validation_tracks
+
+    _, panels = validation_tracks(four_scenes)
+    assert [ax.get_title().split("\n")[0] for ax in panels] == ["circular", "eccentric", "near_parabolic", "flyby"]
