@@ -373,3 +373,78 @@ def test_the_track_picture_names_each_scene(four_scenes):
 
     _, panels = validation_tracks(four_scenes)
     assert [ax.get_title().split("\n")[0] for ax in panels] == ["circular", "eccentric", "near_parabolic", "flyby"]
+
+
+# 07 Collisions, rotation, uniform gravity and oscillations ------------------------------------------------------
+
+
+def test_energy_handed_over_in_a_collision():
+    """Elastic 4 r / (1 + r)**2: 8/9 at r = 2 and 1 at r = 1 (each measured 0 apart); restitution 0.5 keeps a
+    quarter of the internal kinetic energy."""
+    from orbits import Collision, energy_transfer
+
+    assert math.isclose(energy_transfer(2).value, 8 / 9, rel_tol=1e-15)
+    assert math.isclose(energy_transfer(1).value, 1.0, rel_tol=1e-15)
+    hit = Collision.head_on(2 * u.kg, 3 * u.m / u.s, 1 * u.kg, -1 * u.m / u.s, restitution=0.5)
+    assert math.isclose(hit.internal_kinetic_energy_after.value, 0.25 * hit.internal_kinetic_energy_before.value)
+
+
+def test_the_slingshot_as_a_collision():
+    """Jupiter at 13.07 km/s met head-on at 10 km/s: v' = 2 U - v = 36.14 km/s."""
+    from orbits import slingshot
+
+    assert math.isclose(slingshot(13.07 * u.km / u.s, -10 * u.km / u.s).to_value(u.km / u.s), 36.14, rel_tol=1e-12)
+
+
+def test_a_rotation_is_one_turn_about_one_axis():
+    """The principal-angle rotation rebuilt from its axis and angle: measured 1.1e-16 apart."""
+    from orbits import Rotation
+
+    turn = Rotation.from_principal_angles(10 * u.deg, -20 * u.deg, 30 * u.deg)
+    again = Rotation.from_axis_angle(turn.axis, turn.angle)
+    assert np.max(np.abs(again.matrix - turn.matrix)) < 1e-15
+
+
+def test_rolling_race_accelerations():
+    """a = g sin(30 deg) / (1 + k): 5/7, 2/3 and 1/2 of it for the ball, cylinder and hoop."""
+    from orbits import RigidBody
+
+    bodies = {"ball": RigidBody.solid_sphere(1 * u.kg, 0.1 * u.m),
+              "cylinder": RigidBody.solid_cylinder(1 * u.kg, 0.1 * u.m, 0.3 * u.m),
+              "hoop": RigidBody.thin_hoop(1 * u.kg, 0.1 * u.m)}
+    for name, share in (("ball", 5 / 7), ("cylinder", 2 / 3), ("hoop", 1 / 2)):
+        rolling = bodies[name].rolling_down(30 * u.deg)
+        assert math.isclose(rolling.acceleration.value, share * 9.80665 * 0.5, rel_tol=1e-14)
+
+
+def test_effective_gravity_and_a_thrown_ball():
+    """omega**2 R = 0.0339 m/s2 less at the equator than at the pole; the ball at 20 m/s and 45 deg lands 40.789 m
+    away without drag and 30.726 m with quadratic drag (v_t = 30 m/s)."""
+    from orbits import EffectiveGravity, Projectile
+
+    equator, pole = EffectiveGravity.on_earth(0 * u.deg), EffectiveGravity.on_earth(90 * u.deg)
+    assert round((pole.downward - equator.downward).value, 4) == 0.0339
+    ball = Projectile.launch(20 * u.m / u.s, 45 * u.deg)
+    assert round(ball.range.value, 3) == 40.789
+    assert round(ball.with_quadratic_drag(30 * u.m / u.s).range.value, 3) == 30.726
+
+
+def test_pendulum_at_170_degrees():
+    """T / T0 = 4 K(sin^2(85 deg)) / (2 pi) = 2.439363."""
+    from orbits import Pendulum
+
+    assert round(Pendulum.simple(1 * u.m, 170 * u.deg).period_ratio.value, 6) == 2.439363
+
+
+def test_damping_regimes_and_the_vertical_circle():
+    """b = 0.4, 2 and 5 / s at omega0 = 1 rad/s: under-, critically and over-damped. A string at u = sqrt(5 g R)
+    loops with N = 0 at the top (measured 4e-15 N); at u = 2 sqrt(g R) it slackens between 90 and 180 deg (131.8)."""
+    from orbits import DampedOscillator, VerticalCircle
+
+    regimes = [DampedOscillator.of(1 / u.s, b / u.s, 1 * u.m).regime for b in (0.4, 2.0, 5.0)]
+    assert regimes == ["underdamped", "critically damped", "overdamped"]
+    g, radius = 9.80665, 1.0
+    top = VerticalCircle.of(radius * u.m, math.sqrt(5 * g * radius) * u.m / u.s, mass=1 * u.kg)
+    assert top.regime == "loops" and abs(top.normal_force_at_top.value) < 1e-13
+    slack = VerticalCircle.of(radius * u.m, 2 * math.sqrt(g * radius) * u.m / u.s)
+    assert math.pi / 2 < slack.leaving_angle.value < math.pi
