@@ -448,3 +448,47 @@ def test_damping_regimes_and_the_vertical_circle():
     assert top.regime == "loops" and abs(top.normal_force_at_top.value) < 1e-13
     slack = VerticalCircle.of(radius * u.m, 2 * math.sqrt(g * radius) * u.m / u.s)
     assert math.pi / 2 < slack.leaving_angle.value < math.pi
+
+
+# 08 Rockets, manoeuvres and Lambert's problem -------------------------------------------------------------------
+
+
+def test_rocket_equation():
+    """100 t -> 40 t at Isp = 300 s: delta-v = v_e ln(m0 / mf) = 2.695723 km/s (measured 0 apart)."""
+    from orbits import Rocket
+
+    stage = Rocket.single_stage(100 * u.t, 40 * u.t, isp=300 * u.s, thrust=2 * u.MN)
+    v_e = (300 * u.s * 9.80665 * u.m / u.s**2).to_value(u.km / u.s)
+    assert np.isclose(stage.delta_v.to_value(u.km / u.s), v_e * np.log(100 / 40), rtol=1e-15)
+
+
+def test_hohmann_and_bi_elliptic():
+    """6678 -> 42164 km: 3.893 km/s in 5.275 h. Through 60 r2 from 7000 km: Hohmann wins at a radius ratio of 10
+    (by 117.7 m/s), the bi-elliptic route at 20 (by 204.0 m/s)."""
+    from orbits import BiElliptic, Hohmann
+
+    leo_geo = Hohmann.between("Earth", 6678 * u.km, 42164 * u.km)
+    assert round(leo_geo.delta_v.to_value(u.km / u.s), 3) == 3.893
+    assert round(leo_geo.transfer_time.to_value(u.h), 3) == 5.275
+    savings = [BiElliptic.between("Earth", 7000 * u.km, r * 7000 * u.km, 60 * r * 7000 * u.km).saving.value
+               for r in (10, 15, 20)]
+    assert savings[0] < 0 < savings[2]
+
+
+def test_third_cosmic_velocity_and_a_lambert_arc():
+    """Patched conics from the surface: 16.648 km/s. 1 AU -> 1.5 AU a quarter turn apart in 200 d: e = 0.4819."""
+    from orbits import Departure, lambert
+
+    assert round(Departure.third_cosmic().departure_speed.to_value(u.km / u.s), 3) == 16.648
+    transfer = lambert([1, 0, 0] * u.AU, [0, 1.5, 0] * u.AU, 200 * u.day, "Sun")
+    assert round(float(transfer.eccentricity), 4) == 0.4819
+
+
+def test_the_2026_mars_window_on_a_5_day_grid():
+    """NASA/TM-2010-216764 (Burke, Falck and McGuire 2010), 2026 Type II: least C3 9.144 km2/s2; this 5-day grid
+    from the Earth-Moon barycentre finds 9.1482 (a 1-day grid 9.1431, tests/api/test_porkchop.py)."""
+    from orbits import Porkchop
+
+    window = Porkchop.between("EMB", "Mars", launch=("2026-09-01", "2027-01-31"),
+                              arrival=("2027-06-01", "2028-03-01"), step=5 * u.day)
+    assert abs(window.minimum_c3.c3.to_value(u.km**2 / u.s**2) / 9.144 - 1) < 2e-3
