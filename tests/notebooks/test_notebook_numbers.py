@@ -264,7 +264,8 @@ def test_maxwells_ring_of_eight():
 
 
 def test_the_courses_einstein_de_sitter_age():
-    """H = 0.5e-10 / yr: t = 2 / (3 H) = 1.3333e10 yr (measured 1.1e-16 apart), the course's 1.33e10 yr; 48.89 km/s/Mpc."""
+    """H = 0.5e-10 / yr: t = 2 / (3 H) = 1.3333e10 yr (measured 1.1e-16 apart), the course's 1.33e10 yr;
+    H0 = 48.89 km/s/Mpc."""
     from orbits import Cosmology
 
     course = Cosmology.einstein_de_sitter(0.5e-10 / u.yr)
