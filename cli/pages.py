@@ -20,6 +20,7 @@ SUMMARY = {
     "binary": "A binary: orbits about the barycentre, K, mass function.",
     "flyby": "Closest approach and deflection of a hyperbolic flyby.",
     "lagrange": "Lagrange points, Jacobi constants and their stability.",
+    "periodic": "Halo, Lyapunov, DRO and NRHO orbits, and their families.",
     "ring": "A ring of equal masses: period, stability, break-up.",
     "rocket": "Delta-v and burn times of a rocket, one stage or several.",
     "where": "Where a planet is at a date: distance, elongation, RA, Dec.",
@@ -52,6 +53,7 @@ SUMMARY = {
     "bench": "Benchmarks: speed and worst error against the peers.",
     "bench kepler": "Kepler solvers against heyoka, rebound and Newton.",
     "bench propagate": "Two-body propagation against heyoka's lagrange_prop.",
+    "bench periodic": "Periodic orbits: one halo and a family, corrections counted.",
     "bench api": "The unit-aware API's cost over the float64 core.",
     "bench cli": "Command-line cold start in fresh processes.",
     "bench validate": "Where the time of orbits validate goes.",
@@ -100,6 +102,12 @@ EXAMPLES = {
         "orbits lagrange Earth Moon",
         "orbits lagrange Sun Earth --points L1,L2 --format json",
         'orbits lagrange "1 solMass" "0.1 solMass" --r "1 AU" --plot lagrange.png',
+    ],
+    "periodic": [
+        'orbits periodic Earth Moon --family halo --point L2 --az "20000 km"',
+        "orbits periodic Earth Moon --family nrho --resonance 9:2",
+        'orbits periodic Sun Earth --family lyapunov --point L1 --ax "200000 km"',
+        "orbits periodic Earth Moon --family nrho --resonance 9:2 --members 12",
     ],
     "ring": [
         'orbits ring 7 --m "1e20 kg" --r "1e5 km" --central-mass Earth',
@@ -217,39 +225,47 @@ EXAMPLES = {
     ],
     "bench kepler": [
         "orbits bench kepler --easy 10000 --hard 1000 --hyperbolic 1000 --reference 100",
-        "orbits bench kepler",
+        "orbits bench kepler --easy 100000 --repeats 5 --output kepler.json",
+    ],
+    "bench periodic": [
+        "orbits bench periodic --members 10 --repeats 1 --no-numpy",
+        "orbits bench periodic --members 20 --repeats 1 --format json",
     ],
     "bench propagate": [
         "orbits bench propagate --states 10000 --reference 50",
-        "orbits bench propagate --output propagate.json",
+        "orbits bench propagate --states 100000 --reference 20 --format json",
+    ],
+    "bench stm": [
+        "orbits bench stm --states 10000 --reference 5",
+        "orbits bench stm --states 30000 --reference 5 --output stm.json",
     ],
     "bench api": [
         "orbits bench api --sizes 1,1000",
-        "orbits bench api",
+        "orbits bench api --sizes 1,100000 --repeats 3",
     ],
     "bench cli": [
-        "orbits bench cli --runs 2",
-        "orbits bench cli",
+        "orbits bench cli --runs 1 --no-first-run",
+        "orbits bench cli --runs 2 --no-first-run --format json",
     ],
     "bench validate": [
-        "orbits bench validate --no-sweep",
-        "orbits bench validate --output validate.json",
+        "orbits bench validate circular eccentric --no-sweep",
+        "orbits bench validate binary flyby --no-sweep --format json",
     ],
     "bench lambert": [
         "orbits bench lambert --transfers 10000 --reference 50",
-        "orbits bench lambert",
+        "orbits bench lambert --transfers 30000 --reference 20 --output lambert.json",
     ],
     "bench ephemeris": [
         "orbits bench ephemeris --epochs 10000",
-        "orbits bench ephemeris",
+        "orbits bench ephemeris --epochs 1000 --repeats 5",
     ],
     "bench all": [
-        "orbits bench all --quick",
-        "orbits bench all --output bench.json",
+        "orbits bench all --quick --only ephemeris,api",
+        "orbits bench all --quick --only lambert --output bench.json",
     ],
     "bench precision": [
         "orbits bench precision --quick --problem L4",
-        "orbits bench precision --quick --plot precision.png",
+        'orbits bench precision --quick --problem "e=0.9" --plot precision.png',
     ],
 }
 
@@ -291,12 +307,12 @@ def document(app: typer.Typer, prefix: str = "") -> None:
     for info in app.registered_commands:
         path = f"{prefix}{info.name}"
         info.help = reflow(info.help or info.callback.__doc__)
-        info.short_help = SUMMARY[path]
+        info.short_help = SUMMARY.get(path, info.help.split(". ")[0])
         if path in EXAMPLES:
             info.epilog = epilog(path)
         if path in CLASSES:
             info.cls = CLASSES[path]
     for group in app.registered_groups:
         path = f"{prefix}{group.name}"
-        group.short_help = SUMMARY[path]
+        group.short_help = SUMMARY.get(path, group.short_help)
         document(group.typer_instance, f"{path} ")

@@ -67,6 +67,22 @@ def stm(
     _emit(rows_to_json(rows), format_stm(rows), fmt, output)
 
 
+def periodic(
+    members: Annotated[int, typer.Option(help="members of the family (2 to 1000)", min=2, max=1000)] = 100,
+    repeats: RepeatsOption = 3,
+    numpy: Annotated[bool, typer.Option("--numpy/--no-numpy", help="also time the NumPy integrator (the family "
+                                        "takes about a minute with it)")] = True,
+    output: OutputOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """Periodic orbits: one corrected halo orbit and a family to the 9:2 NRHO, timed, integrations counted."""
+    from orbits.tools.bench.periodic import bench_periodic, format_periodic
+    from orbits.tools.bench.table import rows_to_json
+
+    rows = bench_periodic(members=members, repeats=repeats, numpy=numpy)
+    _emit(rows_to_json(rows), format_periodic(rows), fmt, output)
+
+
 def api(
     sizes: Annotated[str, typer.Option(help="comma-separated batch sizes (1 = scalars)")] = "1,100000,1000000",
     repeats: RepeatsOption = 5,
@@ -90,6 +106,8 @@ def _sizes(text):
 
 def cli(
     runs: Annotated[int, typer.Option(help="fresh processes per command")] = 10,
+    first_run: Annotated[bool, typer.Option(help="also time each first-run command with an empty kernel cache "
+                                                 "(it compiles what a new install compiles)")] = True,
     output: OutputOption = None,
     fmt: FormatOption = Format.table,
 ) -> None:
@@ -97,11 +115,13 @@ def cli(
     from orbits.tools.bench.cli import bench_cli, format_cli
     from orbits.tools.bench.table import rows_to_json
 
-    rows = bench_cli(runs=runs)
+    rows = bench_cli(runs=runs) if first_run else bench_cli(runs=runs, first_runs=[])
     _emit(rows_to_json(rows), format_cli(rows), fmt, output)
 
 
 def validate(
+    scenes: Annotated[list[str] | None, typer.Argument(help="built-in scene names or scene files [default: "
+                                                            "every built-in scene]")] = None,
     sweep: Annotated[bool, typer.Option(help="also time dask sweeps (LocalCluster of threads, of processes)")] = True,
     output: OutputOption = None,
     fmt: FormatOption = Format.table,
@@ -110,7 +130,7 @@ def validate(
     from orbits.tools.bench.table import rows_to_json
     from orbits.tools.bench.validate import bench_validate, format_validate
 
-    rows = bench_validate(sweep=sweep)
+    rows = bench_validate(scenes or None, sweep=sweep)
     _emit(rows_to_json(rows), format_validate(rows), fmt, output)
 
 
@@ -146,6 +166,8 @@ def ephemeris(
 
 def all_(
     quick: Annotated[bool, typer.Option(help="a tenth of the default sizes and 3 CLI runs")] = False,
+    only: Annotated[str | None, typer.Option(help="comma-separated benchmarks to run, e.g. kepler,lambert "
+                                                  "[default: all]")] = None,
     output: OutputOption = None,
     fmt: FormatOption = Format.table,
 ) -> None:
@@ -159,9 +181,23 @@ def all_(
             "propagate": {"n": 100_000, "n_ref": 50},
             "stm": {"n": 10_000, "n_ref": 5},
             "lambert": {"n": 100_000, "n_ref": 50},
+            "periodic": {"members": 10, "numpy": False},
             "ephemeris": {"n": 10_000},
             "api": {"sizes": (1, 100_000)},
             "cli": {"runs": 3},
         }
-    report = bench_all(**options)
+    report = bench_all(names=_benchmark_names(only), **options)
     _emit(report_to_json(report), format_report(report), fmt, output)
+
+
+def _benchmark_names(text: str | None) -> list[str] | None:
+    """The benchmarks --only names, each checked against the suite's; None for all."""
+    from orbits.tools.bench.suite import BENCHMARKS
+
+    if text is None:
+        return None
+    names = [n.strip() for n in text.split(",") if n.strip()]
+    unknown = [n for n in names if n not in BENCHMARKS]
+    if unknown or not names:
+        raise typer.BadParameter(f"--only {text!r}: choose from {', '.join(BENCHMARKS)}")
+    return names

@@ -1,19 +1,28 @@
-"""`orbits info`: versions, cache locations and where the constants come from."""
+"""`orbits info`: versions, caches, the ephemeris and the catalogue of bodies; --sources adds where each
+constant comes from."""
+
+import textwrap
+from typing import Annotated
+
+import typer
 
 from orbits_cli.options import Format, FormatOption
 
-
-def command(fmt: FormatOption = Format.table) -> None:
-    """Versions of orbits and its dependencies, cache locations, and the constants' sources."""
-    show(fmt.value)
+WIDTH = 80
 
 
-def show(fmt: str) -> None:
-    """Print the facts as a table or JSON."""
-    from rich import box
-    from rich.markup import escape
-    from rich.table import Table
+def command(
+    sources: Annotated[bool, typer.Option("--sources", help="also list the source of every constant")] = False,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """Versions of orbits and its dependencies, where the compiled code is cached, which ephemeris answers, and the
+    catalogue of bodies (GM, radius, rotation, J2); with --sources, the publication behind each constant."""
+    show(fmt.value, sources)
 
+
+def show(fmt: str, sources: bool = False) -> None:
+    """Print the facts as text within 80 columns (paths, which cannot be broken, on lines of their own) or as
+    JSON (which always holds the sources)."""
     from orbits.system import info
     from orbits_cli import render
 
@@ -21,20 +30,40 @@ def show(fmt: str) -> None:
     if fmt == "json":
         print(render.dumps(facts))
         return
-    grid = Table(show_header=False, box=box.SIMPLE, pad_edge=False)
-    grid.add_column("item", overflow="fold")
-    grid.add_column("value", overflow="fold")
-    grid.add_row("python", escape(f"{facts['python']} on {facts['platform']}"))
-    for section in ("versions", "caches"):
-        for key, value in facts[section].items():
-            grid.add_row(key, escape(value))
-    grid.add_row("ephemeris", escape(facts["ephemeris"]))  # "orbits[ephemeris]" is not markup
-    sources = Table(show_header=False, box=box.SIMPLE, pad_edge=False)
-    sources.add_column("item", overflow="fold")
-    sources.add_column("value", overflow="fold")
-    for key, value in facts["constants"].items():
-        sources.add_row(key, escape(value))
-    render.print_tables([grid, _bodies(facts["bodies"]), sources], "orbits info")
+    print("\n".join(_summary(facts)))
+    render.print_tables([_bodies(facts["bodies"])], None)
+    if sources:
+        print("\n".join(_sources(facts["constants"])))
+    else:
+        print("The source of every constant: orbits info --sources")
+
+
+def _wrapped(label: str, text: str) -> list[str]:
+    """`label: text` wrapped between words, continuation lines indented."""
+    return textwrap.wrap(f"{label}: {text}", WIDTH, subsequent_indent="    ", break_long_words=False,
+                         break_on_hyphens=False)
+
+
+def _summary(facts: dict) -> list[str]:
+    versions = facts["versions"]
+    others = ", ".join(f"{name} {version}" for name, version in versions.items() if name != "orbits")
+    lines = [f"orbits {versions['orbits']} on Python {facts['python']} ({facts['platform']})", ""]
+    lines += _wrapped("versions", others)
+    lines += _wrapped("ephemeris", facts["ephemeris"])
+    caches = dict(facts["caches"])
+    lines += _wrapped("compiled kernels in use", caches.pop("compiled kernels in use (ORBITS_JIT)"))
+    lines.append("caches:")
+    for label, path in caches.items():
+        lines += textwrap.wrap(label, WIDTH, initial_indent="  ", subsequent_indent="  ") + [f"    {path}"]
+    return lines + [""]
+
+
+def _sources(constants: dict) -> list[str]:
+    lines = ["", "sources:"]
+    for name, source in constants.items():
+        lines += textwrap.wrap(f"{name}: {source}", WIDTH, initial_indent="  ", subsequent_indent="      ",
+                               break_long_words=False, break_on_hyphens=False)
+    return lines
 
 
 def _bodies(rows: list):
@@ -47,7 +76,7 @@ def _bodies(rows: list):
     from orbits.display import number
 
     table = Table(box=box.SIMPLE, pad_edge=False, padding=(0, 0),
-                  title="bodies (sources below; rot. < 0: retrograde; @ R: the reference radius of J2)")
+                  title="bodies (rot. < 0: retrograde; @ R: the reference radius of J2)")
     for name, justify in (("body", "left"), ("kind", "left"), ("orbits", "left"), ("GM km3/s2", "right"),
                           ("R km", "right"), ("rot. d", "right"), ("1e6 J2", "right"), ("@ R km", "right")):
         table.add_column(name, justify=justify, no_wrap=True)

@@ -40,7 +40,8 @@ import numpy as np
 PARALLEL_MIN = 1 << 15
 
 #: Modules of orbits/core whose constants the kernels (orbits/core/_fast*.py) compile in.
-_KERNEL_DEPENDENCIES = ("_kepler_shared.py", "_propagate_shared.py", "_lambert_shared.py", "_roots.py", "series.py")
+_KERNEL_DEPENDENCIES = ("_kepler_shared.py", "_propagate_shared.py", "_lambert_shared.py", "_dop853_shared.py",
+                        "_roots.py", "series.py")
 
 #: Kepler and propagation batches from this size on start the compiled kernels by themselves ("auto" mode); smaller
 #: ones, such as a calculator query, take the NumPy implementation (the same algorithm and accuracy:
@@ -92,8 +93,9 @@ def announce(module):
         return
     _state["announced"].add(module)
     if folder is None or not any(Path(folder).rglob(f"{module}.*.nbi")):
-        print(f"orbits: compiling the {module.strip('_').replace('_', ' ')} kernels for this machine, once "
-              f"(a minute at most; later runs load them from {folder or 'memory'})", file=sys.stderr)
+        kept = "see orbits info for where" if folder else "kept in memory for this run"
+        print(f"orbits: compiling the {module.strip('_').replace('fast_', '').replace('_', ' ')} kernels, once "
+              f"({kept})", file=sys.stderr)
 
 
 def _numba_imports():

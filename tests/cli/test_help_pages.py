@@ -30,6 +30,11 @@ LEAVES, GROUPS = commands()
 PATHS = [path for path, _ in LEAVES]
 
 
+def too_wide(text):
+    """Lines over 80 columns, but for a line that is one unbreakable word (a path) after its indent."""
+    return [line for line in text.splitlines() if len(line) > WIDTH and len(line.split()) > 1]
+
+
 def run(args, **kwargs):
     return CliRunner().invoke(app, args, env={"COLUMNS": str(WIDTH), "TERM": "dumb"}, **kwargs)
 
@@ -78,8 +83,7 @@ def test_every_example_runs(example, tmp_path, monkeypatch):
     result = run(args[1:])
     assert result.exit_code == 0, (example, result.output)
     if "--format" not in args or args[args.index("--format") + 1] != "json":
-        wide = [line for line in result.output.splitlines() if len(line) > WIDTH]
-        assert wide == [], example
+        assert too_wide(result.output) == [], example
 
 
 def test_validate_help_lists_every_built_in_scene():
@@ -88,3 +92,16 @@ def test_validate_help_lists_every_built_in_scene():
     result = run(["validate", "--help"])
     text = " ".join(result.output.split())
     assert all(f" {name}: " in text for name in builtin_names())
+
+
+def test_info_is_a_summary_within_80_columns_and_the_sources_follow_on_request():
+    """orbits info fits 80 columns without breaking a word; the sources (every constant's) come with --sources."""
+    from orbits.system import info
+
+    short, full = run(["info"]), run(["info", "--sources"])
+    assert short.exit_code == full.exit_code == 0
+    assert len(short.output.splitlines()) < 60 and too_wide(full.output) == []
+    words = " ".join(full.output.split())
+    for name, source in info()["constants"].items():
+        assert f"{name}: {' '.join(source.split())}" in words  # wrapped between words only
+        assert " ".join(source.split()) not in " ".join(short.output.split())
