@@ -63,14 +63,10 @@ def _laplace(primary, a_km, e, argp, mean_anomaly, inc, node, pole_ra, pole_dec,
 
 _SMALL_BODY_ACCURACY = ("exact at 2025-04-21 12:00 TDB; away from it off by up to {drift:,.0f} km per year (the "
                         "planets' pull, measured for Ceres)")
-_MARS_SATS = ("JPL planetary satellite mean elements (Laplace plane), solution MAR080, epoch 1950 Jan 1.00 TT; "
-              "published period {period} d")
-_JUPITER_SATS = ("JPL planetary satellite mean elements (Laplace plane), epoch 1997 Jan 16.00 TT; published period "
-                 "{period} d")
-_MOON_ACCURACY = ("mean elements of a precessing ellipse at the epoch: size, shape and plane to their published "
-                  "digits; the Kepler period from a and the GMs within {period_error} of the published one "
-                  "(the planet's oblateness and the rounding of a); the apsides and nodes precess, so no position "
-                  "at another date is made from them")
+_MARS_SATS = "JPL satellite mean elements on the Laplace plane, solution MAR080, epoch 1950-01-01 TT"
+_JUPITER_SATS = "JPL satellite mean elements on the Laplace plane, epoch 1997-01-16 TT"
+_MOON_ACCURACY = ("Kepler period from a and the GMs within {error} of the published {period} d (the planet's "
+                  "oblateness, a rounded); the apsides and nodes precess: no position at another date")
 
 _ORBITS = {
     # Horizons' heliocentric ICRF states at 2025-04-21 12:00 TDB (au, au/d): 1 Ceres (solution JPL#48), 4 Vesta
@@ -84,17 +80,17 @@ _ORBITS = {
                               "the osculating orbit of JPL Horizons' state of 2025-04-21 12:00 TDB (JPL#36)",
                               _SMALL_BODY_ACCURACY.format(drift=CERES_DRIFT_KM)),
     "Phobos": _laplace("Mars", 9376.0, 0.0151, 150.057, 91.059, 1.075, 207.784, 317.671, 52.893, _JD_1950,
-                       _MARS_SATS.format(period=0.3189), _MOON_ACCURACY.format(period_error="0.05 %")),
+                       _MARS_SATS, _MOON_ACCURACY.format(error="0.05 %", period=0.3189)),
     "Deimos": _laplace("Mars", 23458.0, 0.0002, 260.729, 325.329, 1.788, 24.525, 316.657, 53.529, _JD_1950,
-                       _MARS_SATS.format(period=1.2624), _MOON_ACCURACY.format(period_error="0.05 %")),
+                       _MARS_SATS, _MOON_ACCURACY.format(error="0.05 %", period=1.2624)),
     "Io": _laplace("Jupiter", 421800.0, 0.0041, 84.129, 342.021, 0.036, 43.977, 268.057, 64.495, _JD_1997,
-                   _JUPITER_SATS.format(period=1.769), _MOON_ACCURACY.format(period_error="0.05 %")),
+                   _JUPITER_SATS, _MOON_ACCURACY.format(error="0.05 %", period=1.769)),
     "Europa": _laplace("Jupiter", 671100.0, 0.0094, 88.970, 171.016, 0.466, 219.106, 268.084, 64.506, _JD_1997,
-                       _JUPITER_SATS.format(period=3.551), _MOON_ACCURACY.format(period_error="0.05 %")),
+                       _JUPITER_SATS, _MOON_ACCURACY.format(error="0.05 %", period=3.551)),
     "Ganymede": _laplace("Jupiter", 1070400.0, 0.0013, 192.417, 317.540, 0.177, 63.552, 268.168, 64.543, _JD_1997,
-                         _JUPITER_SATS.format(period=7.155), _MOON_ACCURACY.format(period_error="0.05 %")),
+                         _JUPITER_SATS, _MOON_ACCURACY.format(error="0.05 %", period=7.155)),
     "Callisto": _laplace("Jupiter", 1882700.0, 0.0074, 52.643, 181.408, 0.192, 298.848, 268.639, 64.749, _JD_1997,
-                         _JUPITER_SATS.format(period=16.69), _MOON_ACCURACY.format(period_error="0.05 %")),
+                         _JUPITER_SATS, _MOON_ACCURACY.format(error="0.05 %", period=16.69)),
     # e = 0: the argument of periapsis is 0 and the mean anomaly is the mean longitude L less the node; the frame is
     # the equator and equinox of J2000, the pole (270 deg, 90 deg) in the convention of the Laplace planes above
     "Charon": MeanElements("Pluto", 19573e3, 0.0, _deg(96.218), 3.89249, 0.0, (4.50177 - 3.89249) % (2 * math.pi),

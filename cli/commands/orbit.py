@@ -69,6 +69,8 @@ def command(
                                         [mass, primary, a, p, q, e, inc, raan, argp, nu, r])
     else:
         result, title = build(body_name, primary, a, p, q, e, inc, raan, argp, nu, r, v, mass)
+        if body_name is not None:
+            title, about = published_orbit(body_name)
     asked = inputs.names(only)
     extra = course_quantities(result, at_r, area_between)
     quantities = result.quantities(None if asked is None else [n for n in asked if n not in extra])
@@ -78,6 +80,24 @@ def command(
 
         save_plot(lambda: orbit_plane(result), plot)
     render.emit(title, quantities, fmt.value, about=about)
+
+
+def published_orbit(body_name: str) -> "tuple[str, dict[str, str]]":
+    """(title, JSON 'about') of a named body's published orbit: its source, epoch, frame and accuracy."""
+    from astropy.time import Time
+
+    from orbits import body
+    from orbits.catalogue_orbits import mean_elements
+
+    el = mean_elements(body_name)
+    when = Time(el.epoch, format="jd", scale="tdb").iso[:16]
+    frame = "ecliptic J2000"
+    title = f"{body(body_name).name}'s orbit at {when} TDB, {frame}; source: {el.source}"
+    about = {"body": body(body_name).name, "epoch_tdb": when, "source": el.source, "frame": frame}
+    if el.accuracy:
+        title += f"; {el.accuracy}"
+        about["accuracy"] = el.accuracy
+    return title, about
 
 
 def course_quantities(orbit: "Orbit", at_r: str | None, area_between: str | None) -> "dict[str, Quantity]":

@@ -133,4 +133,6 @@ def test_where_ceres_says_it_is_propagated_and_how_well():
     assert "two-body propagation" in table.stdout and "per year" in table.stdout
     osculating = Orbit.from_body("Ceres", "2026-01-01")
     assert osculating.semi_major_axis.to_value(u.AU) == pytest.approx(mean_elements("Ceres").a / AU, rel=1e-9)
-    assert CliRunner().invoke(app, ["orbit", "Io"]).exit_code == 0
+    io = CliRunner().invoke(app, ["orbit", "Io", "--format", "json"])
+    assert io.exit_code == 0 and "JPL satellite mean elements" in json.loads(io.stdout)["about"]["source"]
+    assert "0.05 % of the published 1.769 d" in json.loads(io.stdout)["about"]["accuracy"]
