@@ -31,6 +31,8 @@ if TYPE_CHECKING:
 
 #: how a primary is named in error messages
 PRIMARY = "primary mass or gravitational parameter"
+#: the relative slack of speed_at's range [q, Q]: a distance computed another way lands within a few ulp of an apsis
+APSIS_SLACK = 1e-12
 
 
 def _shape(x):
@@ -279,12 +281,13 @@ class Orbit(display.Displayed):
 
     def speed_at(self, r: u.Quantity) -> u.Quantity:
         """Vis-viva speed sqrt(mu (2/r - 1/a)) (m/s) at distance r (length) from the star, where the body gets:
-        q <= r <= Q on an ellipse, r >= q on an open orbit (the apsides included)."""
+        q <= r <= Q on an ellipse, r >= q on an open orbit, the apsides included to 1e-12 of their distance (an
+        apsis computed another way lands within a few ulp of q or Q)."""
         r_si = inputs.positive(r, units.M, "distance r")
         q = twobody.periapsis_distance(self.p, self.e)
         with np.errstate(divide="ignore"):
             far = np.where(self.e < 1.0, self.p / (1.0 - self.e), np.inf)
-        outside = (r_si < q) | (r_si > far)
+        outside = (r_si < q * (1.0 - APSIS_SLACK)) | (r_si > far * (1.0 + APSIS_SLACK))
         if np.any(outside):
             bad, low, high = first_where(outside, r_si, q, far)
             raise OrbitDomainError(f"distance r = {bad!r} m is outside [{low!r}, {high!r}] m, from the periapsis "
