@@ -21,8 +21,8 @@ SizeOption = Annotated[str | None, typer.Option("--a", help="semi-major axis, e.
 AltitudeOption = Annotated[str | None, typer.Option("--altitude", help="a - R_eq, e.g. '700 km'")]
 InclinationOption = Annotated[str | None, typer.Option("--inc", help="inclination ('98 deg'; bare numbers are "
                                                                      "degrees)")]
-RevolutionsOption = Annotated[int, typer.Option("--revolutions", help="revolutions the --plot integrates (1 to "
-                                                                      "2000)")]
+RevolutionsOption = Annotated[int, typer.Option("--revolutions", min=1, max=2000,
+                                                help="revolutions the --plot integrates")]
 
 #: the units tables use for these quantities unless --units si or --unit NAME=UNIT says otherwise
 NATURAL = {

@@ -421,6 +421,17 @@ def _picture_backends(backends, forces: bool) -> list[str]:
     return names
 
 
+def _checked(rule, value, name: str):
+    """`value` checked by one of orbits.validate.models' parameter rules; its ValueError becomes a one-line
+    OrbitDomainError naming the parameter."""
+    from orbits.core.errors import OrbitDomainError
+
+    try:
+        return rule(value)
+    except ValueError as err:
+        raise OrbitDomainError(f"{name} = {err}") from None
+
+
 def _integrate(backends, problem):
     from orbits.validate.backends import integrate
 
@@ -461,7 +472,7 @@ def secular_history(orbit, revolutions: int = 30, backends=None) -> SecularHisto
         orbit = scene_orbit(orbit)
     if orbit.shape != ():
         raise OrbitDomainError(f"the history follows one orbit; this Orbit holds {orbit.shape} of them")
-    revolutions = models._count(1, 2000)(revolutions)
+    revolutions = _checked(models._count(1, 2000), revolutions, "revolutions")
     orbit._require_ellipse("J2's secular history")
     primary = oblate_body(body_with_gm(orbit.mu) or "an unknown primary")
     a_m, e, inc, argp = _elements(orbit)
@@ -567,8 +578,8 @@ def kozai_history(inc_deg: float = 65.0, cycles: float = 2.0, backends=None) -> 
     """Integrate the kozai_lidov scene's triple (a test particle at a = 1, e0 = 0.01, omega = 90 deg, inclined
     inc_deg (45 to 80) to an equal mass's circular orbit at 12) for `cycles` (0.1 to 4) oscillations of e with
     rebound and heyoka, output KOZAI_SAMPLES times an outer orbit: a KozaiHistory."""
-    inc_deg = models._positive(80.0, "deg", low=45.0)(inc_deg)
-    cycles = models._positive(4.0, "cycles", low=0.1)(cycles)
+    inc_deg = _checked(models._positive(80.0, "deg", low=45.0), inc_deg, "inc_deg")
+    cycles = _checked(models._positive(4.0, "cycles", low=0.1), cycles, "cycles")
     e0, a_out, mass_ratio = 0.01, 12.0, 1.0
     problem, e_max, period, tau = kozai_problem(inc_deg, e0=e0, a_out=a_out, mass_ratio=mass_ratio, cycles=cycles)
     outer = 2.0 * math.pi * math.sqrt(a_out**3 / (1.0 + mass_ratio))
