@@ -20,6 +20,7 @@ SUMMARY = {
     "binary": "A binary: orbits about the barycentre, K, mass function.",
     "flyby": "Closest approach and deflection of a hyperbolic flyby.",
     "lagrange": "Lagrange points, Jacobi constants and their stability.",
+    "periodic": "Halo, Lyapunov, DRO and NRHO orbits, and their families.",
     "ring": "A ring of equal masses: period, stability, break-up.",
     "rocket": "Delta-v and burn times of a rocket, one stage or several.",
     "where": "Where a planet is at a date: distance, elongation, RA, Dec.",
@@ -52,6 +53,7 @@ SUMMARY = {
     "bench": "Benchmarks: speed and worst error against the peers.",
     "bench kepler": "Kepler solvers against heyoka, rebound and Newton.",
     "bench propagate": "Two-body propagation against heyoka's lagrange_prop.",
+    "bench periodic": "Periodic orbits: one halo and a family, corrections counted.",
     "bench api": "The unit-aware API's cost over the float64 core.",
     "bench cli": "Command-line cold start in fresh processes.",
     "bench validate": "Where the time of orbits validate goes.",
@@ -98,6 +100,12 @@ EXAMPLES = {
         "orbits lagrange Earth Moon",
         "orbits lagrange Sun Earth --points L1,L2 --format json",
         'orbits lagrange "1 solMass" "0.1 solMass" --r "1 AU" --plot lagrange.png',
+    ],
+    "periodic": [
+        'orbits periodic Earth Moon --family halo --point L2 --az "20000 km"',
+        "orbits periodic Earth Moon --family nrho --resonance 9:2",
+        'orbits periodic Sun Earth --family lyapunov --point L1 --ax "200000 km"',
+        "orbits periodic Earth Moon --family nrho --resonance 9:2 --members 12",
     ],
     "ring": [
         'orbits ring 7 --m "1e20 kg" --r "1e5 km" --central-mass Earth',
@@ -220,6 +228,10 @@ EXAMPLES = {
     "bench kepler": [
         "orbits bench kepler --easy 10000 --hard 1000 --hyperbolic 1000 --reference 100",
         "orbits bench kepler --easy 100000 --repeats 5 --output kepler.json",
+    ],
+    "bench periodic": [
+        "orbits bench periodic --members 10 --repeats 1 --no-numpy",
+        "orbits bench periodic --members 20 --repeats 1 --format json",
     ],
     "bench propagate": [
         "orbits bench propagate --states 10000 --reference 50",

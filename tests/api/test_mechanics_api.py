@@ -284,3 +284,14 @@ def test_exact_period_on_a_broad_random_set_through_the_public_api():
         error = abs(float(t) - exact) / math.ulp(float(exact))
         worst = max(worst, float(error) - kappa)
     assert worst <= 3.0, worst
+
+
+@pytest.mark.parametrize("drag", ["none", "linear", "quadratic"])
+def test_a_projectile_shows_a_one_line_repr_with_or_without_drag(drag):
+    """The repr names the drag it has (it raised TypeError for a throw without drag, reading the missing rate)."""
+    shot = Projectile.launch(20 * u.m / u.s, 45 * u.deg)
+    shot = {"none": shot, "linear": shot.with_linear_drag(0.1 / u.s),
+            "quadratic": shot.with_quadratic_drag(30 * u.m / u.s)}[drag]
+    text = repr(shot)
+    named = {"none": "no drag", "linear": "linear drag", "quadratic": "quadratic drag"}[drag]
+    assert "\n" not in text and named in text
