@@ -198,29 +198,36 @@ EXAMPLES = {
     "perturb rates": [
         'orbits perturb rates Earth --altitude "400 km" --inc 51.64',
         'orbits perturb rates Mars --a "9378 km" --inc 1.1 --format json',
+        'orbits perturb rates --a "26554 km" --e 0.74 --inc 63.43 --argp 270 \\\n'
+        "    --revolutions 10 --plot molniya.png  # a Molniya orbit's node and periapsis",
     ],
     "perturb sun-synchronous": [
-        'orbits perturb sun-synchronous --altitude "700 km"',
+        'orbits perturb sun-synchronous --altitude "700 km"  # 98.19 deg',
         "orbits perturb sun-synchronous --inc 99",
+        'orbits perturb sun-synchronous --altitude "700 km" --revolutions 15 \\\n'
+        "    --plot sun-synchronous.png",
     ],
     "perturb frozen": [
         'orbits perturb frozen --altitude "700 km" --inc 98.19',
         'orbits perturb frozen --altitude "1336 km" --inc 66',
     ],
     "perturb repeat": [
-        "orbits perturb repeat --revolutions 127 --days 10 --inc 66",
+        "orbits perturb repeat --revolutions 127 --days 10 --inc 66.04  # TOPEX/Jason",
         "orbits perturb repeat --revolutions 15 --days 1 --inc 98",
     ],
     "perturb decay": [
         'orbits perturb decay --altitude "280 km" --ballistic "0.022 m2/kg"',
-        'orbits perturb decay --altitude "400 km" --ballistic "0.005 m2/kg"',
+        'orbits perturb decay --altitude "400 km" --ballistic "0.005 m2/kg" --plot decay.png',
+        'orbits perturb decay Mars --altitude "200 km" --ballistic "0.01 m2/kg" \\\n'
+        '    --density "0.020 kg/m3" --scale-height "11.1 km" --base-altitude "0 km" \\\n'
+        "    --plot mars.png  # ends where it sinks H a revolution",
     ],
     "perturb kozai": [
         'orbits perturb kozai --m0 Sun --m3 Jupiter --a "1 AU" --a-out "5.2 AU" --inc 65',
         'orbits perturb kozai --m0 Earth --m3 Sun --a "50000 km" --a-out "1 AU" --inc 80',
     ],
     "perturb relativity": [
-        "orbits perturb relativity Mercury",
+        "orbits perturb relativity Mercury  # 42.98 arcsec per century",
         "orbits perturb relativity Earth --format json",
     ],
     "bench kepler": [

@@ -174,6 +174,9 @@ runs = [
     ["collide", "--m1", "2 kg", "--v1", "3 m/s", "--m2", "1 kg", "--v2", "0 m/s", "--plot", os.path.join(out, "k.png")],
     ["projectile", "--speed", "20 m/s", "--angle", "45", "--drag", "quadratic", "--terminal-speed", "30 m/s"],
     ["pendulum", "--length", "1 m", "--amplitude", "170 deg", "--plot", os.path.join(out, "p.png")],
+    ["perturb", "rates", "--altitude", "400 km", "--inc", "51.64", "--revolutions", "1", "--plot",
+     os.path.join(out, "j2.png")],
+    ["perturb", "decay", "--altitude", "280 km", "--ballistic", "0.022 m2/kg", "--plot", os.path.join(out, "d.png")],
 ]
 for args in runs:
     result = CliRunner().invoke(app, args)
