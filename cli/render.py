@@ -253,13 +253,15 @@ _KINDS = {"relative error": "rel", "relative drift": "rel drift", "absolute drif
 def validation_report(data: dict[str, Any]) -> None:
     """Print a validation report (the dict of ValidationReport.to_dict): per scene its verdict, then one line
     per check led by its verdict, each backend's error and the tolerance; settings follow as plain lines."""
+    from orbits.display import printable  # text from scene files: no control character reaches the terminal
+
     out = console()
     wrap = textwrap.TextWrapper(width=out.width, initial_indent="  ", subsequent_indent="    ")
     for scene in data["scenes"]:
         backends = list(scene["wall_time_s"])[1:]
         verdict = "[green]passed[/green]" if scene["passed"] else "[red]FAILED[/red]"
-        out.print(f"[bold]{escape(scene['name'])}[/bold]: {verdict}")
-        out.print(escape(textwrap.fill(scene["description"], out.width, initial_indent="  ",
+        out.print(f"[bold]{escape(printable(scene['name']))}[/bold]: {verdict}")
+        out.print(escape(textwrap.fill(printable(scene["description"]), out.width, initial_indent="  ",
                                        subsequent_indent="  ")))
         grid = Table(box=box.SIMPLE_HEAD, pad_edge=False, padding=(0, 1))
         grid.add_column("", no_wrap=True)
@@ -269,7 +271,7 @@ def validation_report(data: dict[str, Any]) -> None:
         grid.add_column("tolerance", justify="right", no_wrap=True)
         for check in scene["checks"]:
             mark = "[green]pass[/green]" if check["passed"] else "[red]FAIL[/red]"
-            grid.add_row(mark, escape(check["quantity"] + _analytic(check)),
+            grid.add_row(mark, escape(printable(check["quantity"]) + _analytic(check)),
                          *(_error(check["errors"].get(b)) for b in backends),
                          f"{_error(check['tolerance'])} {_KINDS.get(check['kind'], check['kind'])}")
         out.print(grid)

@@ -57,8 +57,9 @@ class Collision(display.Displayed):
                 restitution: float | u.Quantity = 1.0) -> "Collision":
         """Two bodies on a line (IX.vii-xi): masses (mass), signed velocities (speed), restitution e in [0, 1]."""
         mass1, mass2 = _masses(m1, m2)
-        return cls(mass1, mass2, signed(v1, units.M_PER_S, "velocity v1"), signed(v2, units.M_PER_S, "velocity v2"),
-                   _restitution(restitution))
+        first, second = signed(v1, units.M_PER_S, "velocity v1"), signed(v2, units.M_PER_S, "velocity v2")
+        core.require_relative_motion(np.abs(first - second))  # as oblique() refuses it
+        return cls(mass1, mass2, first, second, _restitution(restitution))
 
     @classmethod
     def oblique(cls, m1: u.Quantity, v1: u.Quantity, m2: u.Quantity, v2: u.Quantity,

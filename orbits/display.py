@@ -19,6 +19,7 @@ as -0; non-finite values show as inf, -inf and nan.
 
 import html
 import math
+import unicodedata
 from collections.abc import Mapping
 from typing import Any
 
@@ -99,10 +100,31 @@ def unit_for(q: u.Quantity, name: str = "", system: str = "natural", overrides: 
     """The unit to show the quantity `name` in: its override, else SI or the natural unit."""
     if overrides and name in overrides:
         unit = u.Unit(overrides[name])
+        if not (math.isfinite(unit.scale) and unit.scale > 0):
+            raise ValueError(f"--unit {name}={overrides[name]}: a unit's scale must be a positive, finite number; "
+                             f"got {number(unit.scale)}")
         if not q.unit.is_equivalent(unit):
             raise u.UnitConversionError(f"--unit {name}={overrides[name]}: {name} is in {q.unit}, not {unit}")
         return unit
     return si_unit(q) if system == "si" else natural_unit(q, name)
+
+
+#: Unicode categories that a terminal would act on or hide: controls (ESC, CR, BEL ...), format characters (the
+#: bidirectional overrides, zero-width joiners) and line and paragraph separators
+_UNPRINTABLE = ("Cc", "Cf", "Zl", "Zp")
+
+
+def printable(text: str) -> str:
+    """`text` as it may reach a terminal: every control, format or separator character written as its Python
+    escape ("\\x1b", "\\u202e", "\\n"), so that text read from a file (a scene's name or description) can
+    neither move the cursor nor break a one-line message."""
+    return "".join(ch.encode("unicode_escape").decode("ascii") if unicodedata.category(ch) in _UNPRINTABLE else ch
+                   for ch in str(text))
+
+
+def visible(text: str) -> bool:
+    """Whether `text` has a character that shows: not only spaces, controls or invisible format characters."""
+    return any(not ch.isspace() and unicodedata.category(ch) not in _UNPRINTABLE for ch in text)
 
 
 def number(x: float, digits: int = DIGITS) -> str:
@@ -134,14 +156,25 @@ def values_text(values: np.ndarray, digits: int = DIGITS) -> str:
 
 
 def unit_text(unit: u.UnitBase) -> str:
-    """The unit as people write it ("km / s", "deg", "10^6 km" for a scaled axis unit, "" for a pure number)."""
+    """The unit as people write it ("km / s", "deg", "" for a pure number). A scaled unit reads by its scale: "10^6 km"
+    when the scale is exactly a power of ten (a scaled axis unit), else the scale itself ("2 s", "3 d"), so that the
+    label always says what the shown numbers count."""
     if unit == u.one:
         return ""
     if unit in _NAMED:
         return _NAMED[unit]
     if isinstance(unit, u.CompositeUnit) and unit.scale != 1 and len(unit.bases) == 1 and unit.powers == [1]:
-        return f"10^{round(math.log10(unit.scale))} {unit.bases[0].to_string()}"
+        return f"{_scale_text(unit.scale)} {unit.bases[0].to_string()}"
     return unit.to_string()
+
+
+def _scale_text(scale: float) -> str:
+    """A unit's scale: "10^k" when it is exactly the float nearest 10**k, else its digits ("2", "0.25")."""
+    if math.isfinite(scale) and scale > 0:
+        power = round(math.log10(scale))
+        if float(f"1e{power}") == scale:
+            return f"10^{power}"
+    return number(scale, 17)
 
 
 def shown(q: u.Quantity, name: str = "", system: str = "natural", overrides: Mapping[str, Any] | None = None,

@@ -170,11 +170,28 @@ def _one_epoch(text: str, scale: str) -> Time:
         text, scale = match["date"], match["scale"].lower()
     try:
         with _quiet_erfa():
-            return Time(text, scale=scale)
+            when = Time(text, scale=scale)
     except ValueError:
         raise OrbitDomainError(f"epoch: {text!r} is not a date; give an ISO date such as '2026-11-25' or "
                                f"'2026-11-25T06:00', optionally followed by a scale (UTC, TT, TDB, TAI, TCB, TCG, "
                                f"UT1)") from None
+    _require_seconds_in_the_minute(text, scale, when)
+    return when
+
+
+_SECONDS = re.compile(r"\d:\d\d:(?P<seconds>\d+(?:\.\d*)?)$")
+
+
+def _require_seconds_in_the_minute(text: str, scale: str, when: Time) -> None:
+    """OrbitDomainError for seconds of 60 or more, unless the minute is a UTC minute that ends with a leap second
+    (astropy carries the date over: 12:00:99 became 12:01:39, and :60 was taken on any day)."""
+    match = _SECONDS.search(text)
+    if match is None or float(match["seconds"]) < 60:
+        return
+    if scale == "utc" and when.ymdhms.second >= 60:  # kept as a leap second: the day had one
+        return
+    leap = "; 60 only in a UTC leap second (e.g. 2016-12-31T23:59:60)" if float(match["seconds"]) < 61 else ""
+    raise OrbitDomainError(f"epoch: {text!r} has {match['seconds']} seconds, past the end of its minute{leap}")
 
 
 def tdb_julian_dates(when: Time) -> tuple[np.ndarray, np.ndarray]:
@@ -253,8 +270,11 @@ def _require_de421_span(jd1: np.ndarray, jd2: np.ndarray) -> None:
     jd = jd1 + jd2
     outside = (jd < DE421_SPAN[0]) | (jd > DE421_SPAN[1])
     if outside.any():
-        bad = Time(float(np.asarray(jd)[outside].flat[0]), format="jd", scale="tdb").strftime("%Y-%m-%d")
-        raise OrbitDomainError(f"epoch {bad} TDB is outside DE421, which covers 1899-07-29 to 2053-10-09 TDB")
+        first = (np.asarray(jd1)[outside].flat[0], np.asarray(jd2)[outside].flat[0])
+        bad, start, end = (Time(*pair, format="jd", scale="tdb").iso[:19]
+                           for pair in (first, (DE421_SPAN[0], 0.0), (DE421_SPAN[1], 0.0)))
+        raise OrbitDomainError(f"epoch {bad} TDB is outside DE421, which covers {start} to {end} TDB (to the "
+                               f"second: a UTC date is about a minute later in TDB)")
 
 
 def _de421_from_ssb(point: str, jd1: np.ndarray, jd2: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

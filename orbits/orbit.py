@@ -22,7 +22,7 @@ import numpy as np
 from orbits import catalogue_orbits, display, inputs, units
 from orbits.constants import Body, G, body
 from orbits.core import anomalies, elements, propagate, transition, twobody
-from orbits.core.checks import first_where
+from orbits.core.checks import broadcast_shape, first_where
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
 
@@ -43,14 +43,9 @@ def _shape(x):
 
 def _check_shapes(**arrays):
     """Raise OrbitDomainError naming the arguments whose shapes do not broadcast together."""
-    shapes = {_shape(x) for x in arrays.values()} - {()}
-    if len(shapes) <= 1:  # scalars and one shape: nothing to check, so np.broadcast_shapes is skipped
-        return
-    try:
-        np.broadcast_shapes(*shapes)
-    except ValueError:
-        listing = ", ".join(f"{name} {_shape(x)}" for name, x in arrays.items())
-        raise OrbitDomainError(f"argument shapes do not broadcast together: {listing}") from None
+    shapes = {name: _shape(x) for name, x in arrays.items()}
+    if len(set(shapes.values()) - {()}) > 1:  # scalars and one shape: nothing to check
+        broadcast_shape(**shapes)
 
 
 @dataclass(frozen=True, eq=False)
@@ -97,8 +92,8 @@ class Orbit(display.Displayed):
         size = inputs.semi_latus_rectum(e + 0.0, a=a, p=p, q=q)
         angles = [
             inputs.inclination(inc),
-            inputs.angle(raan, "longitude of the ascending node Omega"),
-            inputs.angle(argp, "argument of periapsis omega"),
+            inputs.periodic_angle(raan, "longitude of the ascending node Omega"),
+            inputs.periodic_angle(argp, "argument of periapsis omega"),
             inputs.true_anomaly(nu, e),
         ]
         mu = inputs.gravitational_parameter(primary, PRIMARY)

@@ -81,6 +81,9 @@ def command(
     if m1 is None or m2 is None:
         raise typer.BadParameter("give both masses --m1 and --m2 (or --K and --period for a measured "
                                  "radial-velocity curve)")
+    if gamma is not None and rv is None:
+        raise typer.BadParameter("--gamma, the systemic velocity, shows only in the radial-velocity curves: give "
+                                 "--rv FILE too (the table's quantities do not depend on it)")
     result = build(m1, m2, a, p, q, period, e, inc, raan, argp, nu, gamma)
     if inc is None and (sky or rv):
         raise typer.BadParameter(f"{'--sky' if sky else '--rv'} needs the inclination to the sky: give --inc "

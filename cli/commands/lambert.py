@@ -23,10 +23,11 @@ def command(
     ephemeris: EphemerisOption = Ephemeris.auto,
     primary: Annotated[str, typer.Option(help=f"the attracting body: {MASS_HELP}")] = "Sun",
     revolutions: Annotated[int, typer.Option(min=0, help="complete revolutions before arrival")] = 0,
-    branch: Annotated[str, typer.Option(help="left or right: which of the two solutions when revolutions > 0 "
-                                             "(right is lamberthub's low path)")] = "right",
+    branch: Annotated[str | None, typer.Option(help="left or right: which of the two solutions when revolutions > 0 "
+                                                    "(default right, lamberthub's low path)")] = None,
     retrograde: Annotated[bool, typer.Option(
-        "--retrograde", help="clockwise about +z, or about the ecliptic pole between bodies (default: prograde)")
+        "--retrograde", help="clockwise about +z, or about the ecliptic pole between bodies (default: prograde; "
+                             "not with --normal, which sets the sense)")
     ] = False,
     normal: Annotated[str | None, typer.Option(
         help="the orbit's angular momentum direction 'X,Y,Z' (any unit or none); needed when r1, r2 are opposite"
@@ -40,9 +41,9 @@ def command(
     from orbits import inputs, lambert
     from orbits_cli import render
 
-    common = {"revolutions": revolutions, "branch": branch, "prograde": not retrograde,
+    common = {"revolutions": revolutions, "branch": branch, "prograde": False if retrograde else None,
               "normal": None if normal is None else inputs.parse_direction(normal, "--normal")}
-    shown = f", {revolutions} revolutions ({branch} branch)" if revolutions else ""
+    shown = f", {revolutions} revolutions ({branch or 'right'} branch)" if revolutions else ""
     if departure is not None or target is not None:
         transfer = between_bodies(departure, target, depart, arrive, ephemeris.value, primary,
                                   {"--r1": r1, "--r2": r2, "--tof": tof}, common)

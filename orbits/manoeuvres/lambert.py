@@ -214,8 +214,8 @@ def lambert(
     tof: u.Quantity | None = None,
     primary: Body | str | u.Quantity = "Sun",
     revolutions: int | np.ndarray = 0,
-    branch: str = "right",
-    prograde: bool = True,
+    branch: str | None = None,
+    prograde: bool | None = None,
     normal: np.ndarray | u.Quantity | None = None,
     *,
     depart: Any = None,
@@ -232,10 +232,11 @@ def lambert(
     primary : a catalogue body (or its name), a mass or a GM (Quantity); default the Sun. Between bodies it is
         the Sun with DE430's GM (SUN_GM), the mass that goes with the ephemeris.
     revolutions : int >= 0 (or an array), complete revolutions before arrival.
-    branch : "left" or "right": which of the two solutions when revolutions > 0 (Izzo's branches; "right" is
-        lamberthub's and hapsira's low_path=True).
-    prograde : motion counterclockwise about +z (True) or clockwise; between bodies, about the ecliptic pole of
-        J2000; ignored when `normal` is given.
+    branch : "left" or "right": which of the two solutions when revolutions > 0 (Izzo's branches; "right", the
+        default, is lamberthub's and hapsira's low_path=True). Given with no revolution at all, an error: a
+        zero-revolution transfer has one solution.
+    prograde : motion counterclockwise about +z (True, the default) or clockwise (False); between bodies, about
+        the ecliptic pole of J2000. Given with `normal`, an error: the normal sets the sense of motion.
     normal : 3-vector (any unit, or plain numbers), optional: the direction the orbit's angular momentum points
         to (its side of the r1, r2 plane). Required when r1 and r2 are opposite (transfer angle exactly pi).
     depart, arrive : dates (astropy Time or ISO strings, UTC unless they name a scale) of a transfer between
@@ -250,6 +251,7 @@ def lambert(
     Raises OrbitDomainError for an infeasible revolution count (naming the minimum time) or bad input, and
     DegenerateOrbitError for collinear r1 and r2 without a usable normal. Accuracy: see orbits.core.lambert.
     """
+    branch, prograde = _sense(revolutions, branch, prograde, normal)
     if isinstance(r1, str) or isinstance(r2, str):
         return _between_bodies(r1, r2, tof, primary, revolutions, branch, prograde, normal, depart, arrive, source)
     if depart is not None or arrive is not None:
@@ -305,3 +307,16 @@ def _between_bodies(departure, target, tof, primary, revolutions, branch, progra
         getattr(normal, "value", normal), dtype=float)
     return _solve(start.r_si, end.r_si, np.asarray(seconds, dtype=float), np.asarray(SUN_GM), revolutions, branch,
                   prograde, direction, start, end)
+
+
+def _sense(revolutions, branch, prograde, normal) -> tuple[str, bool]:
+    """(branch, prograde) with their defaults, refusing what cannot apply: a branch when no transfer makes a
+    revolution (it has one solution), and prograde (or retrograde) together with a normal, which sets the sense."""
+    if branch is not None and not np.any(np.asarray(revolutions) > 0):
+        raise OrbitDomainError(f"branch = {branch!r} chooses between the two solutions of a transfer with revolutions "
+                               f"> 0; with revolutions = 0 there is one: leave branch out")
+    if prograde is not None and normal is not None:
+        sense = "prograde" if prograde else "retrograde"
+        raise OrbitDomainError(f"{sense} and a normal both set the sense of motion; give one (the normal's side of "
+                               f"the r1, r2 plane is where the angular momentum points)")
+    return ("right" if branch is None else branch), (True if prograde is None else bool(prograde))

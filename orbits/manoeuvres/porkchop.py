@@ -70,10 +70,19 @@ def _window(value: Any, name: str) -> tuple[Time, Time]:
     return start, end
 
 
-def _dates(start: Time, end: Time, step_days: float) -> Time:
-    """start, start + step, ... up to end (within a microsecond), TDB."""
+def _date_count(start: Time, end: Time, step_days: float) -> int:
+    """How many dates start, start + step, ... reach up to end (within a microsecond): counted, not made."""
     span = float((end - start).to_value(u.day))
-    count = int(np.floor(span / step_days + 1e-9)) + 1
+    return int(np.floor(span / step_days + 1e-9)) + 1
+
+
+def _count(n: int) -> str:
+    """A count with thousands separators, or to 3 digits beyond 1e15 (where a float's span / step has no more)."""
+    return f"{n:,}" if n < 1e15 else f"{n:.3g}"
+
+
+def _dates(start: Time, count: int, step_days: float) -> Time:
+    """start, start + step, ... (`count` dates), TDB."""
     return start + TimeDelta(np.arange(count) * step_days, format="jd", scale="tdb")
 
 
@@ -230,11 +239,13 @@ class Porkchop(display.Displayed):
             raise OrbitDomainError(
                 f"porkchop: the arrival window ends ({arrival_window[1].iso[:16]} TDB) before the launch window "
                 f"starts ({launch_window[0].iso[:16]} TDB): no transfer has a positive time of flight")
-        launches, arrivals = _dates(*launch_window, step_days), _dates(*arrival_window, step_days)
-        if launches.size * arrivals.size > MAX_CELLS:
-            raise OrbitDomainError(f"porkchop: {launches.size} launch x {arrivals.size} arrival dates = "
-                                   f"{launches.size * arrivals.size:,} cells; at most {MAX_CELLS:,}: take a longer "
+        counts = _date_count(*launch_window, step_days), _date_count(*arrival_window, step_days)
+        if counts[0] * counts[1] > MAX_CELLS:  # before any date is made
+            raise OrbitDomainError(f"porkchop: {_count(counts[0])} launch x {_count(counts[1])} arrival dates = "
+                                   f"{_count(counts[0] * counts[1])} cells; at most {MAX_CELLS:,}: take a longer "
                                    f"step or shorter windows")
+        launches, arrivals = _dates(launch_window[0], counts[0], step_days), _dates(arrival_window[0], counts[1],
+                                                                                     step_days)
         start = ephemeris.state(names[0], launches, "Sun", source=source)
         end = ephemeris.state(names[1], arrivals, "Sun", source=source)
         return cls._solved(names, launches, arrivals, start, end)

@@ -21,6 +21,7 @@ import pytest
 from astropy.time import Time
 
 from orbits import OrbitDomainError, Porkchop, ephemeris
+from orbits.manoeuvres import porkchop
 from orbits.tools.reference import propagate
 
 matplotlib.use("Agg")
@@ -203,6 +204,20 @@ def test_bad_windows_are_one_line_errors(kwargs, message):
     with pytest.raises(OrbitDomainError, match=message) as err:
         Porkchop.between("Earth", "Mars", **kwargs)
     assert "\n" not in str(err.value)
+
+
+@pytest.mark.parametrize("step, counts", [(1 * u.min, "78,893,281 launch x 78,893,281 arrival dates"),
+                                         (1e-9 * u.s, "4.73e\\+18 launch x 4.73e\\+18 arrival dates = 2.24e\\+37")])
+def test_the_grid_is_counted_and_refused_before_any_date_is_made(step, counts, monkeypatch):
+    """1900-2050 at one minute built both 79-million-date axes (8.3 GB) before the cell check; a 1e-9 s step
+    attempted 629 TiB."""
+    def made(*args):
+        raise AssertionError("a date axis was built before the grid was checked")
+
+    monkeypatch.setattr(porkchop, "_dates", made)
+    window = ("1900-01-01", "2050-01-01")
+    with pytest.raises(OrbitDomainError, match=f"{counts}.* cells; at most 4,000,000: take a longer step"):
+        Porkchop.between("Earth", "Mars", window, window, step, source="builtin")
 
 
 @pytest.mark.parametrize("a, b, message", [("Earth", "Vulcan", "no ephemeris for 'Vulcan'"),

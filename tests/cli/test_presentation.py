@@ -134,7 +134,8 @@ def test_a_bare_angle_is_degrees_in_every_verb():
         bare, unit = (strict_json(run(verb.format(x) + " --format json")) for x in ("90", "'90 deg'"))
         assert bare == unit
     for option in ("--inc", "--raan", "--argp", "--nu"):
-        base = 'orbit --primary Earth --a "7000 km" --e 0.1 --inc 10 ' + option + " {} --format json"
+        tilt = "" if option == "--inc" else "--inc 10 "
+        base = 'orbit --primary Earth --a "7000 km" --e 0.1 ' + tilt + option + " {} --format json"
         assert strict_json(run(base.format("1"))) == strict_json(run(base.format("'1 deg'")))
         assert strict_json(run(base.format("1"))) != strict_json(run(base.format("'1 rad'")))
     binary = 'binary --m1 Earth --m2 Moon --a "384399 km" --e 0.05 --inc {} --format json'
