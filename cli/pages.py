@@ -6,8 +6,6 @@ two to four examples that run (tests/cli/test_help_pages.py runs every one and h
 builds them. It imports nothing of the library: `orbits --help` stays fast.
 """
 
-import textwrap
-
 import typer
 from typer.core import TyperCommand
 
@@ -294,9 +292,10 @@ class ListsScenes(TyperCommand):
 
     @property
     def epilog(self) -> str:
+        from orbits.display import filled
         from orbits.validate import summaries
 
-        scenes = "\n".join(textwrap.fill(f"{name}: {line}", width=76, initial_indent="  ", subsequent_indent="      ")
+        scenes = "\n".join(filled(f"{name}: {line}", 76, initial_indent="  ", subsequent_indent="      ")
                            for name, line in summaries().items())
         return f"Built-in scenes (give their names, or none for all):\n{scenes}\n\n{self._examples}"
 

@@ -444,6 +444,14 @@ class BodyState(display.Displayed):
         worst = BUILTIN_ACCURACY_KM.get(self.body, 0.0) + BUILTIN_ACCURACY_KM.get(self.center, 0.0)
         return f"approximate: within {worst:,.0f} km of DE421 over {BUILTIN_SPAN[0]}-{BUILTIN_SPAN[1]}"
 
+    @property
+    def provenance(self) -> str:
+        """Where the state comes from, as a title says it once: the source, and its accuracy unless it is DE421
+        itself (exact as read)."""
+        if self.source == DE421 and not self.stated_accuracy:
+            return self.source
+        return f"{self.source}; {self.accuracy}"
+
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{name: Quantity}: distance, speed, light time and the ICRF components (or `only` those)."""
         return quantity_table(lambda name: getattr(self, name), STATE_NAMES, only)

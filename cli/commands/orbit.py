@@ -135,7 +135,7 @@ def at_epoch(body_name: str, epoch: str, source: str, others: list) -> "tuple[Or
     seen = ephemeris.state(named.name, when, named.parent, source=source)
     orbit = Orbit.from_state(seen)
     title = (f"Osculating orbit of {seen.point} about the {seen.center_point}, {ephemeris.tdb_iso(when)} TDB, "
-             f"ecliptic J2000; source: {seen.source}; {seen.accuracy}")
+             f"ecliptic J2000; {seen.provenance}")
     about = {"body": seen.point, "center": seen.center_point, "epoch_tdb": ephemeris.tdb_iso(when),
              "source": seen.source, "accuracy": seen.accuracy, "frame": "ecliptic J2000"}
     return orbit, title, about
