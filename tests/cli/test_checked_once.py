@@ -36,9 +36,13 @@ KEYS = {
 }
 
 
+#: helpers of the rules that check shapes or quote values, not a quantity's value
+NOT_RULES = {"<module>", "broadcast", "broadcast_shape", "first_where", "_spaced"}
+
+
 def _is_rule(code) -> bool:
     module = code.co_filename.replace("\\", "/")
-    if code.co_name == "<module>":
+    if code.co_name in NOT_RULES:
         return False
     if module.endswith("orbits/core/checks.py"):
         return True
