@@ -29,15 +29,15 @@ def labels(ax):
 def test_ellipse_in_its_plane_marks_foci_apsides_and_positions():
     orbit = Orbit.from_elements("Sun", a=1 * u.AU, e=0.6, nu=40 * u.deg)
     fig, ax = orbit_plane(orbit, times=[30, 60] * u.day)
-    assert {"periapsis", "apoapsis", "centre", "empty focus", "body now", "body at given times"} <= labels(ax)
-    assert any(label.startswith("Sun (star not to scale") for label in labels(ax))  # named, not "star (focus)"
+    assert {"periapsis", "apoapsis", "centre", "empty focus", "body at t0", "body 30..60 d later"} <= labels(ax)
+    assert any(label.startswith("Sun (not to scale") for label in labels(ax))  # named, not "star (focus)"
     assert "[AU]" in ax.get_xlabel() and "[AU]" in ax.get_ylabel()
     curve = ax.get_lines()[0].get_xydata()
     assert curve[:, 0].max() == pytest.approx(0.4, rel=1e-9)  # periapsis q = a (1 - e) on +x
     assert curve[:, 0].min() == pytest.approx(-1.6, rel=1e-9)  # apoapsis at -a (1 + e)
     apo = [line for line in ax.get_lines() if line.get_gid() == "apoapsis"][0].get_xydata()[0]
     assert tuple(apo) == pytest.approx((-1.6, 0.0))
-    later = [line for line in ax.get_lines() if line.get_label() == "body at given times"][0].get_xydata()
+    later = _by_gid(ax, "later")[0].get_xydata()
     radii = np.hypot(later[:, 0], later[:, 1])
     expected = [orbit.at(t).radius.to_value(u.AU) for t in [30, 60] * u.day]
     np.testing.assert_allclose(radii, expected, rtol=1e-12)
@@ -73,8 +73,8 @@ def test_orbit_plane_draws_an_open_orbit_out_to_the_body_at_the_given_times():
     _, ax = orbit_plane(Orbit.from_elements("Earth", q=7000 * u.km, e=1.5), times=[3, 6] * u.h)
     lines = {line.get_label(): line.get_xydata() for line in ax.get_lines()}
     reach = np.hypot(*lines["orbit, e = 1.5"].T).max()
-    furthest = np.hypot(*lines["body at given times"].T).max()
-    assert furthest == pytest.approx(140.246, rel=1e-5) and "10^3 km" in ax.get_xlabel()
+    furthest = np.hypot(*lines["body 3..6 h later"].T).max()
+    assert furthest == pytest.approx(140.246, rel=1e-5) and "$10^{3}$ km" in ax.get_xlabel()
     assert 1.0 < reach / furthest <= 1.05 + 1e-12  # measured 1.05
 
 
@@ -183,7 +183,7 @@ def test_flyby_plane_draws_asymptotes_and_the_impact_parameter():
     _, ax = flyby_plane(flyby)
     lines = {line.get_label(): line.get_xydata() for line in ax.get_lines()}
     assert {"incoming asymptote", "outgoing asymptote"} <= set(lines)
-    assert ax.get_xlabel() == "x toward closest approach [10^6 km]"  # not km with an offset "1e6" on the axis
+    assert ax.get_xlabel() == "x toward closest approach [$10^{6}$ km]"  # not km with an offset "1e6" on the axis
     jupiter = [patch for patch in ax.patches if patch.get_label() == "Jupiter (to scale)"][0]
     assert jupiter.get_radius() == pytest.approx(71492e-6, rel=1e-12)  # the primary drawn to scale
     segment = [xy for name, xy in lines.items() if name.startswith("impact parameter")][0]
@@ -387,11 +387,11 @@ def test_orbit_plot_draws_the_orbit_about_its_primary():
                                rtol=5e-15)  # r = p / (1 + e cos(theta - omega)) at every point: measured 6.7e-16
     peri = _by_gid(ax, "periapsis")[0].get_xydata()[0]  # x is cos(270 deg) q: measured 1.3e-12 km
     assert tuple(peri) == pytest.approx((0, -a * (1 - e)), rel=1e-15, abs=1e-11)
-    np.testing.assert_allclose(_by_gid(ax, "body now")[0].get_xydata()[0], orbit.r.to_value(u.km)[:2],
+    np.testing.assert_allclose(_by_gid(ax, "position")[0].get_xydata()[0], orbit.r.to_value(u.km)[:2],
                                rtol=1e-15)  # measured 0
     earth = [patch for patch in ax.patches if patch.get_label() == "Earth (to scale)"][0]
     assert earth.get_radius() == pytest.approx(6378.1, rel=1e-12)  # km, IAU 2015 nominal equatorial radius
-    assert earth.get_center() == (0, 0) and {"periapsis", "apoapsis", "body now"} <= labels(ax)
+    assert earth.get_center() == (0, 0) and {"periapsis", "apoapsis", "body at t0"} <= labels(ax)
     assert (ax.get_xlabel(), ax.get_ylabel()) == ("x [km]", "y [km]")
     fig.canvas.draw()
     assert ax.get_legend().get_window_extent().x0 >= ax.get_window_extent().x1  # the legend is off the data
@@ -419,7 +419,7 @@ def test_near_parabolic_comet_is_drawn_over_a_sensible_window():
     track = [line for line in ax.get_lines() if line.get_label() == "comet"][0].get_xydata()
     assert np.hypot(*track.T).max() == pytest.approx(10, rel=1e-9)  # 10 q, the window of an open orbit
     assert not _by_gid(ax, "apoapsis") and "[AU]" in ax.get_xlabel()
-    sun = [line for line in ax.get_lines() if line.get_label().startswith("Sun (star not to scale")]
+    sun = [line for line in ax.get_lines() if line.get_label().startswith("Sun (not to scale")]
     assert sun  # a 0.005 AU disc is invisible in a 20 AU picture: the star says where it is
 
 
@@ -444,7 +444,7 @@ def test_flyby_of_jupiter_past_the_sun_stays_in_its_window_and_warns():
         _, ax = flyby_plane(flyby)
     spans = np.concatenate([np.abs(line.get_xydata()).ravel() for line in ax.get_lines()])
     assert spans.max() <= 4.0 * (1 + 1e-12)  # AU
-    assert any(line.get_label() == "trajectory, e = 1 + 6.3e-07" for line in ax.get_lines())
+    assert any(line.get_label() == r"trajectory, e = 1 + 6.3$\times10^{-7}$" for line in ax.get_lines())
     assert "they collide" in ax.get_title()
     assert collision_note(Flyby.past("Jupiter", v_inf=5.6 * u.km / u.s, periapsis=200_000 * u.km)) is None
 
@@ -471,22 +471,25 @@ def test_solar_system_puts_each_planet_where_de421_has_it():
     from orbits.plot import solar_system
 
     when = Time("2026-11-25", scale="utc")
-    _, ax = solar_system(when, which="all")
-    assert "2026-11-25 00:01 TDB" in ax.get_title() and "DE421" in ax.get_title()  # TDB = UTC + 69.18 s
-    dots = {line.get_color(): line.get_xydata()[0] for line in _by_gid(ax, "body now")}
+    fig, ax = solar_system(when, which="all")
+    title = fig.get_suptitle()
+    assert "2026-11-25 00:01 TDB" in title and "DE421" in title  # TDB = UTC + 69.18 s
+    assert "Jupiter to Pluto: the system barycentres (planet and moons)" in title
+    dots = {line.get_color(): line.get_xydata()[0] for line in _by_gid(ax, "position")}
     curves = {line.get_label(): line for line in ax.get_lines() if line.get_gid() is None}
     for name in ["Mercury", "Venus", "Earth", "Mars", "Jupiter", "Saturn", "Uranus", "Neptune", "Pluto"]:
-        inner = name in ("Mercury", "Venus", "Earth", "Mars")
-        label = name if inner else f"{name} system barycentre (planet and moons)"
-        curve = curves[label]
+        curve = curves[name]
         dot = dots[curve.get_color()]
         expected = _astropy_heliocentric_ecliptic_au(name, when)
         np.testing.assert_allclose(dot, expected[:2], rtol=0, atol=8e-15 * np.linalg.norm(expected))  # measured 8e-16
         gap = np.min(np.hypot(*(curve.get_xydata() - dot).T))  # the osculating orbit runs through the body
         assert gap < 0.005 * np.linalg.norm(expected)  # 721 points, pi / 720 = 0.0044 of r apart; measured 0.0040
     names = {text.get_text() for text in ax.texts if text.get_gid() == "name"}
-    assert {"Jupiter", "Saturn", "Uranus", "Neptune", "Pluto"} <= names  # the inner ones crowd round the Sun
-    assert not {"Mercury", "Venus"} & names
+    assert names == {"Jupiter", "Saturn", "Uranus", "Neptune", "Pluto"}  # the inner ones crowd round the Sun
+    enlarged = fig.axes[1]  # so they have a panel of their own, each named
+    assert {text.get_text() for text in enlarged.texts if text.get_gid() == "name"} == {"Mercury", "Venus", "Earth",
+                                                                                          "Mars"}
+    assert max(abs(x) for x in enlarged.get_xlim()) < 2.0  # AU: Mars's aphelion is 1.67 AU
     assert "[AU]" in ax.get_xlabel() and any(line.get_label().startswith("Sun") for line in ax.get_lines())
 
 
@@ -499,7 +502,7 @@ def test_solar_system_inner_names_every_planet_and_highlights_one_with_its_line_
     curves = {line.get_label(): line for line in ax.get_lines()}
     assert curves["Mars"].get_linewidth() == 3.0 and curves["Earth"].get_linewidth() < 3.0
     sight = _by_gid(ax, "line of sight")[0].get_xydata()
-    dots = {line.get_color(): line.get_xydata()[0] for line in _by_gid(ax, "body now")}
+    dots = {line.get_color(): line.get_xydata()[0] for line in _by_gid(ax, "position")}
     np.testing.assert_array_equal(sight, [dots[curves["Earth"].get_color()], dots[curves["Mars"].get_color()]])
     from orbits import ephemeris
 
