@@ -9,12 +9,13 @@ import re
 def drawn_texts(figure):
     """(text, window box) of every text the figure shows: titles, axis labels, tick labels inside the view (in 2-D
     and 3-D axes), legend entries, annotations and contour labels."""
+    from matplotlib.axes import Axes
     from matplotlib.text import Text
 
     figure.canvas.draw()
     renderer = figure.canvas.get_renderer()
     hidden = set()
-    for ax in figure.axes:
+    for ax in figure.findobj(Axes):  # insets too
         for axis in (getattr(ax, f"{name}axis") for name in "xyz" if hasattr(ax, f"{name}axis")):
             low, high = sorted(axis.get_view_interval())
             margin = 1e-9 * max(abs(low), abs(high), 1.0)

@@ -205,6 +205,7 @@ def orbit_plane(
     ax.set_xlabel(f"x toward periapsis [{display.unit_math(unit)}]")
     ax.set_ylabel(f"y, along the motion at periapsis [{display.unit_math(unit)}]")
     frame.legend_beside(ax)
+    drawn.retitle()
     return drawn.figure, ax
 
 
@@ -215,7 +216,8 @@ def orbit_plane(
 class Drawing:
     """What draw_orbits chose and drew, for a picture that adds to it: the figure and axes, the length unit of the
     axes and the factor taking metres to it, the curve of each orbit or trajectory in the order given (an array of
-    orbits gives one per orbit), and the notes on closest approaches inside the primary (also in the title)."""
+    orbits gives one per orbit), the notes on closest approaches inside the primary, and the title (its lines,
+    the notes last; a picture that widens the legend sets it again: frame.title wraps to the room left)."""
 
     figure: Any
     axes: Any
@@ -223,6 +225,11 @@ class Drawing:
     scale: float
     curves: tuple[Any, ...]
     notes: tuple[str, ...]
+    title: str
+
+    def retitle(self) -> None:
+        """Set the title again, wrapped to the room the axes have now (red when there are notes)."""
+        frame.title(self.axes, self.title, color="C3" if self.notes else "k")
 
 
 def orbits(
@@ -299,8 +306,9 @@ def draw_orbits(
     if "position" in marked:
         about.append(f"{'the body' if len(entries) == 1 else 'each body'} at {when}")
     shown = [note(display.quantity_math) for note in notes]
-    frame.title(ax, "\n".join([*about, *shown]), color="C3" if notes else "k")
-    return Drawing(fig, ax, unit, scale, tuple(curves), tuple(shown))
+    drawing = Drawing(fig, ax, unit, scale, tuple(curves), tuple(shown), "\n".join([*about, *shown]))
+    drawing.retitle()
+    return drawing
 
 
 def _inside_note(label: str, closest: float, focus: Body):

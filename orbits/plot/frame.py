@@ -93,7 +93,7 @@ def wrapped(text: str, characters: int) -> str:
     lines = []
     for paragraph in text.split("\n"):
         line, length = [], 0
-        for word in re.findall(r"(?:\$[^$]*\$|[^\s$])+", paragraph):
+        for word in _unbroken(re.findall(r"(?:\$[^$]*\$|[^\s$])+", paragraph)):
             shown = len(re.sub(r"\\[A-Za-z]+|[${}^_]", "", word))
             if line and length + 1 + shown > characters:
                 lines.append(" ".join(line))
@@ -104,23 +104,41 @@ def wrapped(text: str, characters: int) -> str:
     return "\n".join(lines)
 
 
+#: a word that reads as the unit of the number before it: "yr", "km/s,", "M$_\\odot$"
+_UNIT = r"[A-Za-z][\w$\\{}^/]{0,9}[,;:)]?"
+
+
+def _unbroken(words: list[str]) -> list[str]:
+    """The words with each unit joined to the number before it and an equation to its sides ("P = 20 yr",
+    "1.1 M$_\\odot$,"), so that no line break falls inside them."""
+    joined = []
+    for word in words:
+        unit = bool(joined) and re.search(r"[\d$]$", joined[-1]) and re.fullmatch(_UNIT, word)
+        if joined and (unit or word == "=" or joined[-1].endswith("=")):
+            joined[-1] += " " + word
+        else:
+            joined.append(word)
+    return joined
+
+
 def title(target: Any, text: str, size: str = "medium", **options: Any) -> Any:
     """The title of an Axes, or the suptitle of a Figure or SubFigure, set to `text` wrapped to the width it has
-    (matplotlib's default font): an axes' own width, or alone in its figure as much as stays inside the figure
-    centred over it. Returns the Text."""
+    once the figure is laid out (so call it after the legends): an axes' own width, or, alone in its figure, as
+    much as stays inside the figure centred over it; a figure's width. Returns the Text."""
     import matplotlib
 
-    points = matplotlib.rcParams["font.size"] * _SIZES[size]
+    root = target.figure.figure
+    root.canvas.draw()
+    pixels = matplotlib.rcParams["font.size"] * _SIZES[size] * root.dpi / 72
     if hasattr(target, "set_title"):
-        box = target.get_position()
-        room = 2 * min(box.x0 + box.width / 2, 1 - box.x0 - box.width / 2) if len(target.figure.axes) == 1 else 0
-        inches = max(box.width, 0.9 * room) * target.figure.figure.get_figwidth()
+        box, whole = target.get_window_extent(), root.bbox
+        centre = (box.x0 + box.x1) / 2
+        alone = len(target.figure.axes) == 1
+        room = max(box.width, 1.9 * min(centre - whole.x0, whole.x1 - centre)) if alone else box.width
+        setter = target.set_title
     else:
-        inches = target.bbox.width / target.figure.dpi
-    characters = max(20, int(inches * 72 / (_CHARACTER_WIDTH * points)))
-    if hasattr(target, "set_title"):
-        return target.set_title(wrapped(text, characters), fontsize=size, **options)
-    return target.suptitle(wrapped(text, characters), fontsize=size, **options)
+        room, setter = 0.95 * target.bbox.width, target.suptitle
+    return setter(wrapped(text, max(20, int(room / (_CHARACTER_WIDTH * pixels)))), fontsize=size, **options)
 
 
 def date_text(epoch: Any) -> str:

@@ -203,11 +203,11 @@ def test_binary_plane_keeps_the_centre_of_mass_on_the_joining_line():
 
     _, ax = binary_plane(Binary.from_elements(1 * u.solMass, 0.5 * u.solMass, a=1 * u.AU, e=0.5, nu=60 * u.deg))
     lines = {line.get_label(): line.get_xydata() for line in ax.get_lines()}
-    join = lines["joining line"]
+    join = _by_gid(ax, "joining line")[0].get_xydata()
     # masses 1 : 0.5, so star 1 is twice as close to the centre of mass as star 2, on the other side
     np.testing.assert_allclose(join[1], -2 * join[0], rtol=2e-15)  # measured 2.2e-16
-    star1, star2 = lines["star 1 (1 M_sun) orbit"], lines["star 2 (0.5 M_sun) orbit"]
-    assert "star 1 now (nu = 60 deg)" in lines
+    star1, star2 = lines[r"star 1 (1 M$_\odot$)"], lines[r"star 2 (0.5 M$_\odot$)"]
+    assert "the line joining the stars (dots) at t0, $\\nu$ = 60 deg" in lines
     assert np.ptp(star2[:, 0]) == pytest.approx(2 * np.ptp(star1[:, 0]), rel=2e-15)  # measured 2.2e-16
     assert np.ptp(star1[:, 0]) + np.ptp(star2[:, 0]) == pytest.approx(2.0, rel=2e-15)  # 2 a of the relative orbit: 0
     ax.figure.canvas.draw()
@@ -560,14 +560,14 @@ def test_binary_sky_draws_the_apparent_orbit_north_up_east_left():
     node = _by_gid(ax, "ascending node")[0].get_xydata()[0]
     assert np.degrees(np.arctan2(node[0], node[1])) == pytest.approx(30, abs=1e-12)  # position angle Omega
     rho, theta = pair.sky_position()
-    now = _by_gid(ax, "star 2 now")[0].get_xydata()[0]
+    now = _by_gid(ax, "star 2 at t0")[0].get_xydata()[0]
     rho_au = rho.to_value(u.AU)
     assert tuple(now) == pytest.approx((rho_au * np.sin(theta.value), rho_au * np.cos(theta.value)), rel=1e-12)
     left, right = ax.get_xlim()
     assert left > right and "east" in ax.get_xlabel() and "north" in ax.get_ylabel()  # east to the left
     assert "i = 50 deg" in ax.get_title()
     _, ax = binary_sky(pair, distance=10 * u.pc)
-    far = _by_gid(ax, "star 2 now")[0].get_xydata()[0]
+    far = _by_gid(ax, "star 2 at t0")[0].get_xydata()[0]
     np.testing.assert_allclose(far, now * 0.1, rtol=1e-12)  # 1 AU at 10 pc is 0.1 arcsec
     assert "[arcsec]" in ax.get_xlabel()
 
@@ -584,9 +584,9 @@ def test_binary_sky_draws_no_direction_for_a_star_moving_along_the_line_of_sight
     edge_on = Binary.from_elements(1.0 * u.solMass, 0.5 * u.solMass, period=10 * u.yr, e=0.0, inc=90 * u.deg,
                                    raan=30 * u.deg, nu=0 * u.deg)
     _, ax = binary_sky(edge_on)
-    assert arrows(ax) == [] and "line of sight" in _by_gid(ax, "star 2 now")[0].get_label()
+    assert arrows(ax) == [] and "line of sight" in _by_gid(ax, "star 2 at t0")[0].get_label()
     _, ax = binary_sky(_visual_binary())
-    assert len(arrows(ax)) == 1 and _by_gid(ax, "star 2 now")[0].get_label() == "star 2 now"
+    assert len(arrows(ax)) == 1 and _by_gid(ax, "star 2 at t0")[0].get_label() == "star 2 at t0"
 
 
 def test_radial_velocity_curves_span_two_k_about_the_systemic_velocity():
@@ -594,13 +594,13 @@ def test_radial_velocity_curves_span_two_k_about_the_systemic_velocity():
 
     pair = _visual_binary()
     fig, ax = radial_velocity_curves(pair, cycles=1.0, samples=4001)
-    curves = {line.get_label().split(",")[0]: line.get_ydata() for line in ax.get_lines()}
+    curves = {line.get_label().split(" (")[0]: line.get_ydata() for line in ax.get_lines()}
     k1, k2 = pair.rv_semi_amplitude1.to_value(u.km / u.s), pair.rv_semi_amplitude2.to_value(u.km / u.s)
     assert np.ptp(curves["star 1"]) == pytest.approx(2 * k1, rel=3e-6)  # sampled extrema; measured 3.1e-7
     assert np.ptp(curves["star 2"]) == pytest.approx(2 * k2, rel=3e-6)
     np.testing.assert_allclose(curves["star 1"] - 12, -(curves["star 2"] - 12) * 0.8 / 1.1, rtol=1e-12, atol=1e-12)
     gamma = [line for line in ax.get_lines() if line.get_label().startswith("systemic")][0]
-    assert gamma.get_ydata()[0] == pytest.approx(12) and "km / s" in ax.get_ylabel()
+    assert gamma.get_ydata()[0] == pytest.approx(12) and "[km/s]" in ax.get_ylabel()
     phase = ax.get_lines()[0].get_xdata()
     _, v2 = pair.radial_velocities(phase[1000] * pair.period - pair.time_since_periapsis)
     assert curves["star 2"][1000] == pytest.approx(v2.to_value(u.km / u.s), rel=1e-13)
