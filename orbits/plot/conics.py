@@ -436,12 +436,12 @@ def _finish_frame(ax, projection, unit):
     the axes on the right."""
     names = [_AXES[i] for i in PROJECTIONS[projection]]
     text = display.unit_math(unit)
-    pad = {"labelpad": 12} if projection == "3d" else {}
+    pad = {"labelpad": 18} if projection == "3d" else {}
     ax.set_xlabel(f"{names[0]} [{text}]", **pad)
     ax.set_ylabel(f"{names[1]} [{text}]", **pad)
     if projection == "3d":
         ax.set_zlabel(f"{names[2]} [{text}]", **pad)
-        ax.set_box_aspect((1, 1, 1))
+        ax.set_box_aspect((1, 1, 1), zoom=0.9)  # the labels inside the figure
         _equal_3d(ax)
     else:
         ax.set_aspect("equal", adjustable="datalim")

@@ -83,13 +83,9 @@ def flyby_plane(flyby: Any, ax: Any = None, unit: u.UnitBase | None = None) -> t
     return fig, ax
 
 
-#: bodies named with the article in a sentence
-_THE = {"Sun": "the Sun", "Moon": "the Moon"}
-
-
 def _flyby_text(flyby: Any, bodies: list) -> str:
     """"Flyby past Jupiter", "Flyby of Jupiter past the Sun", or by GM where the catalogue lacks a body."""
-    names = [_THE.get(body.name, body.name) if body is not None else display.body_name(gm)
+    names = [frame.in_a_sentence(body.name) if body is not None else display.body_name(gm)
              for body, gm in zip(bodies, (flyby.gm1 if flyby.gm1 is not None else flyby.mu, flyby.gm2))]
     return f"Flyby of {names[1]} past {names[0]}" if len(names) == 2 else f"Flyby past {names[0]}"
 

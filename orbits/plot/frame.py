@@ -6,6 +6,7 @@ Nothing here imports another module of orbits.plot: the subject modules build on
 the texts come from orbits.display (quantity_math, number_math, unit_math), typeset by matplotlib's mathtext.
 """
 
+import functools
 import io
 import re
 from collections.abc import Sequence
@@ -135,7 +136,7 @@ def title(target: Any, text: str, size: str = "medium", **options: Any) -> Any:
         centre = (box.x0 + box.x1) / 2
         alone = len(target.figure.axes) == 1
         room = max(box.width, 1.9 * min(centre - whole.x0, whole.x1 - centre)) if alone else box.width
-        setter = target.set_title
+        setter = functools.partial(target.set_title, pad=10)  # clear of a tick label at the axes' top corner
     else:
         room, setter = 0.95 * target.bbox.width, target.suptitle
     return setter(wrapped(text, max(20, int(room / (_CHARACTER_WIDTH * pixels)))), fontsize=size, **options)
@@ -146,6 +147,15 @@ def date_text(epoch: Any) -> str:
     from orbits import ephemeris
 
     return f"{ephemeris.epoch(epoch).tdb.iso[:16]} TDB"
+
+
+#: bodies a sentence names with the article
+_WITH_THE = ("Sun", "Moon")
+
+
+def in_a_sentence(name: str) -> str:
+    """A body's name as a sentence writes it: "the Sun", "the Moon", "Jupiter"."""
+    return f"the {name}" if name in _WITH_THE else name
 
 
 # ---- labels beside points ------------------------------------------------------------------------------------

@@ -233,8 +233,7 @@ def test_lagrange_plane_marks_the_five_points_and_the_zero_velocity_curves():
     _, ax = lagrange_plane(system, points=201)
     texts = sorted(t.get_text() for t in ax.texts if t.get_text().startswith("L"))
     assert texts == ["L1", "L2", "L3", "L4", "L5"]
-    marks = [line for line in ax.get_lines() if line.get_marker() == "x"]
-    xs = sorted(float(m.get_xdata()[0]) for m in marks)
+    xs = sorted(_by_gid(ax, "Lagrange points")[0].get_xdata())
     assert xs[2] == pytest.approx(0.5 - 0.1, rel=1e-12)  # L4, L5 at x = 1/2 - mu
     assert len(ax.collections) >= 1 and "separation r" in ax.get_xlabel()
 
@@ -247,10 +246,10 @@ def test_ring_breakup_draws_the_prediction_through_the_seed():
     prediction = [line for line in ax.get_lines() if line.get_label().startswith("round-off")][0]
     np.testing.assert_allclose(prediction.get_ydata(), 1e-16 * np.exp(times), rtol=1e-15)
     np.testing.assert_allclose(prediction.get_xdata(), times / (2 * np.pi), rtol=1e-15)  # in ring periods
-    assert prediction.get_label() == "round-off x exp(t / 0.159 periods)"  # 1 / (2 pi) periods
+    assert prediction.get_label() == r"round-off $\times$ exp(t / 0.159 periods)"  # 1 / (2 pi) periods
     breakup = [line for line in ax.get_lines() if line.get_label().startswith("predicted break-up")][0]
     assert breakup.get_label() == "predicted break-up, 4.76 periods" and breakup.get_xdata()[0] == 29.9 / (2 * np.pi)
-    assert ax.get_yscale() == "log" and ax.get_xlabel() == "time [ring periods 2 pi / omega, 1 period = 2 d]"
+    assert ax.get_yscale() == "log" and ax.get_xlabel() == r"time [ring periods $2\pi/\omega$, 1 period = 2 d]"
     fig.canvas.draw()
     legend, label = ax.get_legend().get_window_extent(), ax.xaxis.label.get_window_extent()
     assert legend.y1 <= label.y0 and len(ax.get_legend().get_texts()) == 4  # below the axes and their label
