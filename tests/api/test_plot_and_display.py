@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from astropy.time import Time
 
-from orbits import Orbit, scene
+from orbits import Orbit, display, scene
 from orbits.plot import orbit_plane, save, validation_residuals
 from orbits.validate.run import validate
 
@@ -157,7 +157,7 @@ def test_validation_tracks_draw_the_integrations_on_the_closed_form(validated):
             marks = next(line for line in ax.get_lines() if line.get_gid() == f"integrated {backend}")
             np.testing.assert_allclose(marks.get_xydata(), outputs.get_xydata(), rtol=0, atol=1e-10 * size)
         worst = {s.name: s for s in validated.scenes}[name].residuals
-        assert f"heyoka {np.max(worst['heyoka']):.1e}" in ax.get_title()
+        assert f"heyoka {display.number_math(np.max(worst['heyoka']), 2)}" in ax.get_title()
     (legend,) = panels[0].figure.legends  # four panels fill the row: the legend goes below
     assert [text.get_text() for text in legend.get_texts()] == [
         "closed form", "closed form at the outputs", "rebound", "heyoka", "first body (the origin)"]
