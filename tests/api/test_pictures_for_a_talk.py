@@ -238,8 +238,8 @@ CASES = {
                          ["pendulum", "170 deg"]),
     "damped_motion": (lambda: pictures.damped_motion(
         {"under": DampedOscillator.of(2 / u.s, 0.5 / u.s, 1 * u.m),
-         "critical": DampedOscillator.of(2 / u.s, 2 / u.s, 1 * u.m),
-         "over": DampedOscillator.of(2 / u.s, 5 / u.s, 1 * u.m)}, 60 * u.s), ["Damped", "60 s"]),
+         "critical": DampedOscillator.of(2 / u.s, 4 / u.s, 1 * u.m),
+         "over": DampedOscillator.of(2 / u.s, 8 / u.s, 1 * u.m)}, 60 * u.s), ["Damped", "60 s"]),
     "vertical_circle_forces": (lambda: pictures.vertical_circle_forces(
         {"string, 6 m/s": VerticalCircle.of(1 * u.m, 6 * u.m / u.s, mass=1 * u.kg),
          "rod, 6.5 m/s": VerticalCircle.of(1 * u.m, 6.5 * u.m / u.s, mass=1 * u.kg, support="rod"),
