@@ -176,7 +176,7 @@ def binary_plane(binary: Any, ax: Any = None, unit: u.UnitBase | None = None) ->
     ax.plot(0, 0, marker="+", ms=12, color="k", ls="none", label="centre of mass")
     frame.finish_plane(ax, unit, "x toward periapsis")
     frame.legend_outside(ax)
-    frame.title(ax, f"Binary about its centre of mass: {_binary_text(binary)}")
+    frame.title(ax, f"A binary about its centre of mass, the stars at t0\n{_binary_text(binary)}")
     return fig, ax
 
 

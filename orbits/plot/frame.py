@@ -125,20 +125,26 @@ def _unbroken(words: list[str]) -> list[str]:
 def title(target: Any, text: str, size: str = "medium", **options: Any) -> Any:
     """The title of an Axes, or the suptitle of a Figure or SubFigure, set to `text` wrapped to the width it has
     once the figure is laid out (so call it after the legends): an axes' own width, or, alone in its figure, as
-    much as stays inside the figure centred over it; a figure's width. Returns the Text."""
+    much as stays inside the figure centred over it; a figure's width. A title short enough for any layout is
+    set as it is. Returns the Text."""
     import matplotlib
 
     root = target.figure.figure
-    root.canvas.draw()
     pixels = matplotlib.rcParams["font.size"] * _SIZES[size] * root.dpi / 72
-    if hasattr(target, "set_title"):
+    on_axes = hasattr(target, "set_title")
+    setter = functools.partial(target.set_title, pad=10) if on_axes else target.suptitle  # pad: clear of a tick
+    # label at the axes' top corner
+    longest = max(len(line) for line in text.split("\n")) * _CHARACTER_WIDTH * pixels
+    if longest <= 0.6 * (target.get_position().width * root.bbox.width if on_axes else target.bbox.width):
+        return setter(text, fontsize=size, **options)
+    root.canvas.draw()
+    if on_axes:
         box, whole = target.get_window_extent(), root.bbox
         centre = (box.x0 + box.x1) / 2
         alone = len(target.figure.axes) == 1
         room = max(box.width, 1.9 * min(centre - whole.x0, whole.x1 - centre)) if alone else box.width
-        setter = functools.partial(target.set_title, pad=10)  # clear of a tick label at the axes' top corner
     else:
-        room, setter = 0.95 * target.bbox.width, target.suptitle
+        room = 0.95 * target.bbox.width
     return setter(wrapped(text, max(20, int(room / (_CHARACTER_WIDTH * pixels)))), fontsize=size, **options)
 
 
