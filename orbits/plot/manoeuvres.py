@@ -1,6 +1,7 @@
 """Launch windows: the porkchop plot of a grid of Lambert transfers (an orbits.Porkchop, read through its
 properties): departure C3, arrival v_inf and the time of flight against launch and arrival dates."""
 
+import math
 from collections.abc import Sequence
 from typing import Any
 
@@ -17,10 +18,15 @@ KM2_PER_S2 = u.km**2 / u.s**2
 _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9)
 
 
+def _rounded(x: float, digits: int) -> float:
+    """x rounded to `digits` significant digits (x > 0)."""
+    return round(x, digits - 1 - math.floor(math.log10(x)))
+
+
 def _contour_levels(values: np.ndarray, factors: Sequence[float]) -> np.ndarray:
     """Contour levels at `factors` times the least value, each rounded to two significant digits."""
     least = float(np.min(values))
-    levels = [float(f"{least * f:.2g}") for f in factors]
+    levels = [_rounded(least * f, 2) for f in factors]
     return np.unique([level for level in levels if level > least])
 
 
@@ -55,7 +61,7 @@ def porkchop(p: Any, ax: Any = None) -> tuple[Any, Any]:
                          colors="C3", linewidths=1.0, linestyles="--")
     v_lines.set_gid("arrival v_inf")
     span = tof.compressed()
-    step = max(25.0, float(f"{(span.max() - span.min()) / 6:.1g}"))
+    step = max(25.0, _rounded(max(float(span.max() - span.min()), 1.0) / 6, 1))
     days = np.arange(np.ceil(span.min() / step) * step, span.max(), step)
     tof_lines = ax.contour(x, y, tof, levels=days, colors="0.55", linewidths=0.8, linestyles=":")
     tof_lines.set_gid("time of flight")

@@ -143,7 +143,7 @@ def damped_motion(oscillators: dict[str, Any], duration: u.Quantity, ax: Any = N
     seconds = duration.to_value(u.s)
     fastest = max(float(np.max(oscillator.damped_frequency.to_value(u.rad / u.s))) for oscillator in
                   oscillators.values())
-    count = int(min(MAX_SAMPLES, max(samples, PER_PERIOD * seconds * fastest / (2 * np.pi) + 1)))
+    count = int(min(MAX_SAMPLES, max(samples, np.ceil(PER_PERIOD * seconds * fastest / (2 * np.pi)) + 1)))
     times = np.linspace(0.0, seconds, count) << u.s
     for k, (label, oscillator) in enumerate(oscillators.items()):
         ax.plot(times.value, oscillator.position_at(times).to_value(u.m), color=f"C{k}",

@@ -103,7 +103,7 @@ def _draw_views(fig, orbits, colours, labels, title):
         frame.labels_apart(ax, [(", ".join(names), (a * scale, b * scale), dict(fontsize="small"))
                                 for (a, b), names in spots.items()])
     shown = [body for body in bodies if np.all(np.abs(body[1] - centre) <= half + body[2])]
-    names = [f"{name} (to scale, radius {display.quantity_text(radius << u.m, digits=4)})" if radius > 0 else name
+    names = [f"{name} (to scale, radius {display.quantity_math(radius << u.m, digits=4)})" if radius > 0 else name
              for name, _, radius, _ in shown]
     handles = [mpatches.Patch(facecolor=colour, edgecolor="0.4", label=name)
                for name, (_, _, _, colour) in zip(names, shown)]

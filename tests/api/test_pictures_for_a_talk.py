@@ -10,7 +10,7 @@ import astropy.units as u
 import matplotlib
 import numpy as np
 import pytest
-from picture_checks import overlapping_texts, problems, titles, untypeset
+from picture_checks import legend_labels, legends, overlapping_texts, problems, titles, untypeset
 
 from orbits import (
     Binary,
@@ -191,6 +191,8 @@ CASES = {
                                ["inner solar system", "2026-11-25"]),
     "the solar system in 3-D": (lambda: pictures.solar_system("2026-11-25", projection="3d"),
                                 ["solar system", "2026-11-25"]),
+    "the whole solar system in 3-D": (lambda: pictures.solar_system("2026-11-25", which="all", projection="3d"),
+                                      ["solar system", "2026-11-25"]),
     "flyby_plane": (lambda: pictures.flyby_plane(Flyby.past("Jupiter", v_inf=5.6 * u.km / u.s,
                                                             periapsis=200_000 * u.km)), ["Flyby", "Jupiter"]),
     "flyby_plane, a collision": (lambda: _quiet(lambda: pictures.flyby_plane(
@@ -283,3 +285,124 @@ def test_every_picture_of_a_computed_object_is_fit_for_a_talk(name, request, tmp
     fig = draw(request.getfixturevalue(fixture))[0]
     _check(fig, words)
     pictures.save(fig, tmp_path / "picture.png")
+
+
+def test_the_pictures_format_no_numbers_themselves():
+    """Numbers in titles, legends and labels come from orbits.display (natural units, sensible digits, typeset):
+    no format specification in the picture code ('{x:.4g}', '%.3g')."""
+    import re
+    from pathlib import Path
+
+    import orbits.plot
+
+    found = []
+    for path in Path(orbits.plot.__file__).parent.glob("*.py"):
+        for number, line in enumerate(path.read_text().splitlines(), 1):
+            if re.search(r"\{[^{}]*:[+ ]?[\d.]*[dgfe%]\}|%[\d.]*[dgf]\b", line.replace('"%Y-%m-%d"', "")):
+                found.append(f"{path.name}:{number}: {line.strip()}")
+    assert found == []
+
+
+# ---- what was wrong with particular pictures -----------------------------------------------------------------
+
+
+def test_sun_earths_l1_and_l2_are_labelled_apart():
+    """L1 and L2 of Sun-Earth lie 0.02 r apart, 3 pixels at the scale of the whole frame: their labels sit on
+    either side, L1 towards the Sun."""
+    _, ax = pictures.lagrange_plane(RestrictedThreeBody.from_primaries("Sun", "Earth"), points=201)
+    ax.figure.canvas.draw()
+    boxes = {text.get_text(): text.get_window_extent() for text in ax.texts if text.get_text().startswith("L")}
+    assert set(boxes) == {"L1", "L2", "L3", "L4", "L5"}
+    assert boxes["L1"].x1 < boxes["L2"].x0 and not boxes["L1"].overlaps(boxes["L2"])
+
+
+def test_the_whole_solar_system_shows_the_inner_planets_and_a_short_legend():
+    """`where Jupiter --plot`: the inner planets in a panel of their own, every name readable, the positions
+    labelled with their date, and no legend entry of the length of 'system barycentre (planet and moons)'."""
+    fig, ax = pictures.solar_system("2026-11-25", which="all", highlight="Jupiter", observer="Earth")
+    whole, inner = fig.axes
+    assert {t.get_text() for t in inner.texts if t.get_gid() == "name"} == {"Mercury", "Venus", "Earth", "Mars"}
+    labels = legend_labels(fig)
+    assert "body at 2026-11-25 00:01 TDB" in labels and not any("now" in label for label in labels)
+    assert not any("barycentre" in label for label in labels) and max(map(len, labels)) <= 45
+    assert overlapping_texts(fig) == []
+
+
+def test_a_flyby_legend_gives_b_in_one_unit_and_tells_the_asymptotes_apart():
+    _, ax = pictures.flyby_plane(Flyby.past("Jupiter", v_inf=5.6 * u.km / u.s, periapsis=200_000 * u.km))
+    labels = [line.get_label() for line in ax.get_lines()]
+    assert r"impact parameter b = 1.287$\times10^{6}$ km" in labels  # was '1.287 1e+06 km'
+    incoming, outgoing = (next(line for line in ax.get_lines() if line.get_gid() == f"{way} asymptote")
+                          for way in ("incoming", "outgoing"))
+    assert (incoming.get_linestyle(), incoming.get_color()) != (outgoing.get_linestyle(), outgoing.get_color())
+
+
+def test_validation_pictures_say_what_l_is_and_why_a_long_run_shows_two_points(validated):
+    fig, _ = pictures.validation_overview(validated)
+    shown = " ".join(titles(fig))
+    assert "L: the largest distance of an orbiting body from its primary" in shown
+    circular = next(title for title in titles(fig) if title.startswith("circular"))
+    assert circular.endswith("200 outputs at 2 points")  # 100 periods sampled every half period
+    assert overlapping_texts(fig) == []  # the track panels' tick labels ('-30000-20000-10000') included
+
+
+def test_a_3d_legend_keeps_clear_of_the_z_label():
+    """The whole solar system in 3-D: a legend of fourteen entries beside the axes ran over the z label."""
+    fig, ax = pictures.solar_system("2026-11-25", which="all", projection="3d")
+    fig.canvas.draw()
+    (legend,) = legends(fig)
+    assert not legend.get_window_extent().overlaps(ax.zaxis.label.get_window_extent())
+    assert overlapping_texts(fig) == []
+
+
+def test_the_porkchop_labels_each_contour_level_once(mars_chart):
+    """Along the ridge of 180-degree transfers the contours crowd into short loops, and each loop got a label."""
+    _, ax = pictures.porkchop(mars_chart)
+    for lines in (c for c in ax.collections if c.get_gid() in ("C3", "arrival v_inf", "time of flight")):
+        labelled = [text.get_text() for text in lines.labelTexts]
+        assert len(labelled) == len(set(labelled)) <= len(lines.levels)
+    assert overlapping_texts(ax.figure) == []
+
+
+def test_a_porkchop_flags_a_least_value_on_the_edge_of_its_grid(mars_chart, jupiter_chart):
+    """Earth to Jupiter, 2026-2027 launches: the least C3 lies on the last arrival date; its star is drawn whole
+    and ringed, and its legend entry names the edge. The Mars window's minima lie inside: no ring."""
+    _, ax = pictures.porkchop(jupiter_chart)
+    star = next(line for line in ax.get_lines() if line.get_gid() == "minimum")
+    assert "on the grid's edge: last arrival date" in star.get_label()
+    (ring,) = [line for line in ax.get_lines() if line.get_gid() == "on the edge"]
+    np.testing.assert_array_equal(ring.get_xydata(), star.get_xydata())
+    x, y = star.get_xydata()[0]
+    fig = ax.figure
+    fig.canvas.draw()
+    size = star.get_markersize() * fig.dpi / 72 / 2  # the star's half-width in pixels
+    px, py = ax.transData.transform((x, y))
+    box = ax.get_window_extent()
+    assert box.x0 + size <= px <= box.x1 - size and box.y0 + size <= py <= box.y1 - size  # whole: not clipped
+    _, ax = pictures.porkchop(mars_chart)
+    assert not [line for line in ax.get_lines() if line.get_gid() == "on the edge"]
+
+
+def test_the_cosmology_overview_keeps_each_legend_under_its_panel():
+    """The middle legend ran in two columns into the right one, and that one to the figure's edge."""
+    fig, axes = pictures.cosmology_overview(Cosmology.planck18(), "Planck 2018")
+    fig.canvas.draw()
+    for ax in axes:
+        legend, panel = ax.get_legend().get_window_extent(), ax.get_window_extent()
+        assert panel.x0 - 20 <= legend.x0 and legend.x1 <= panel.x1 + 20  # within 20 pixels of the panel
+    assert [ax.get_title() for ax in axes] == ["Scale factor", "Distances", "Hubble diagram"]
+
+
+def test_a_fast_oscillation_is_drawn_with_every_swing():
+    """omega0 = 50 rad/s over 60 s: 477 periods, 40 samples each (400 samples in all drew a moire)."""
+    fast = DampedOscillator.of(50 / u.s, 0.01 / u.s, 1 * u.m)
+    _, ax = pictures.damped_motion({"fast": fast}, 60 * u.s)
+    times = ax.get_lines()[0].get_xdata()
+    period = 2 * np.pi / fast.damped_frequency.to_value(u.rad / u.s)
+    assert np.max(np.diff(times)) <= period / 40 * (1 + 1e-9)
+
+
+def test_a_position_is_labelled_with_its_time():
+    """'body now' labelled the orbit's own epoch: it is 'body at t0', or the date the elements hold at."""
+    assert "body at t0" in legend_labels(pictures.orbits(_molniya())[0])
+    assert "body at 2026-11-25 00:01 TDB" in legend_labels(pictures.orbits(_molniya(), epoch="2026-11-25")[0])
