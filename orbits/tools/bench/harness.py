@@ -16,6 +16,22 @@ import numpy as np
 
 NEWTON_TOL = 1e-15  # absolute step tolerance of the plain NumPy Newton baseline
 NEWTON_MAX_ITER = 50
+#: the most elements a benchmark set may hold: 1e7 Kepler pairs take about 1 GB over their inputs and results
+MAX_SET = 10_000_000
+#: the most elements checked against the mpmath reference (a few milliseconds each)
+MAX_REFERENCE = 100_000
+#: the most timing repeats, or fresh processes per command
+MAX_REPEATS = 1000
+
+
+def check_count(value: int, name: str, high: int) -> int:
+    """`value` if it is an integer in [1, high], else OrbitDomainError naming it and the range: every size of a
+    benchmark is checked here before anything is allocated (an empty set would time nothing and print nan)."""
+    from orbits.core.errors import OrbitDomainError
+
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not 1 <= value <= high:
+        raise OrbitDomainError(f"{name} = {value!r} is outside [1, {high:,}]")
+    return int(value)
 
 
 def _as_pair(e, M):
@@ -50,6 +66,7 @@ def load_methods(factories):
 
 def best_time(call, repeats):
     """(best wall time of `repeats` calls, the last result)."""
+    check_count(repeats, "repeats", MAX_REPEATS)
     best, result = math.inf, None
     for _ in range(repeats):
         start = time.perf_counter()
