@@ -38,8 +38,8 @@ def porkchop(p: Any, ax: Any = None) -> tuple[Any, Any]:
     Each contour level is labelled once, on its longest stretch, where the label meets no other label (the ridge
     of 180-degree transfers, where the contours crowd into short loops, gets none). A least value in a cell on the
     edge of the grid may be no minimum at all, the merit still falling outside the windows: it is ringed in red
-    and its legend entry says which edge (a margin round the grid keeps every marker whole). The title names the
-    bodies and the windows.
+    and its legend entry says which edge (PorkchopMinimum.edges; a margin round the grid keeps every marker
+    whole). The title names the bodies and the windows.
 
     Each contour set carries a gid ("C3", "arrival v_inf", "time of flight"), each marker the gid "minimum" and
     each ring the gid "on the edge"; tested in tests/api/test_porkchop.py (the marker sits on the minimum's dates,
@@ -125,27 +125,15 @@ def _date(when: Any) -> str:
     return when.tdb.iso[:10]
 
 
-def _edges(p: Any, best: Any) -> tuple[str, ...]:
-    """The edges of the grid a least value's cell lies on ("last launch date", ...), along axes of more than one
-    date: there the least value may be no minimum at all."""
-    sides = []
-    for axis, dates, when in (("launch", p.launch_dates, best.launch), ("arrival", p.arrival_dates, best.arrival)):
-        jd = dates.tdb.jd
-        if jd.size > 1:
-            index = int(np.argmin(np.abs(jd - when.tdb.jd)))
-            if index in (0, jd.size - 1):
-                sides.append(f"{'first' if index == 0 else 'last'} {axis} date")
-    return tuple(sides)
-
-
 def _mark_minima(ax: Any, p: Any) -> None:
     """The cells of least C3, arrival v_inf and total v_inf, each drawn whole (on the edge of the grid too), with
-    its dates, C3 and arrival v_inf in the legend; a red ring round each on the edge of the grid."""
+    its dates, C3 and arrival v_inf in the legend; a red ring round each on the edge of the grid (its sides are
+    PorkchopMinimum.edges)."""
     marks = {"$C_3$": ("*", "C0", 16, p.minimum_c3), "arrival $v_\\infty$": ("D", "C3", 9, p.minimum_arrival_v_inf),
              "total $v_\\infty$": ("o", "k", 9, p.minimum_total)}
     ringed = False
     for kind, (marker, color, size, best) in marks.items():
-        sides = _edges(p, best)
+        sides = best.edges
         label = (f"least {kind}: {_date(best.launch)} to {_date(best.arrival)}, "
                  f"$C_3$ = {display.quantity_math(best.c3, digits=3, unit=KM2_PER_S2)}, "
                  f"$v_\\infty$ = {display.quantity_math(best.arrival_v_inf, digits=3, unit=u.km / u.s)}"
