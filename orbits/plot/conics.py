@@ -319,8 +319,11 @@ def _inside_note(label: str, closest: float, focus: Body):
 
 
 def _orbit_text(conic: Conic) -> str:
-    """"Orbit about Earth: a = 26600 km, e = 0.74, i = 63.4 deg": one conic as a title names it."""
-    name = display.body_name(conic.mu)
+    """"Orbit about Earth: a = 26600 km, e = 0.74, i = 63.4 deg": one conic as a title names it (its primary as
+    the picture draws it: the catalogue body within 2 % of its GM, so a planet's heliocentric orbit, whose mu
+    holds the planet's mass too, is about the Sun)."""
+    known = catalogue_body(conic.mu)
+    name = frame.in_a_sentence(known.name) if known is not None else display.body_name(conic.mu)
     tilt = f", i = {display.quantity_math(conic.inc << u.rad, digits=4)}" if conic.inc else ""
     return f"{'Orbit' if conic.e < 1 else 'Trajectory'} about {name}: {_size_text(conic)}{tilt}"
 

@@ -140,7 +140,7 @@ def _collision_note(q, bodies, written=display.quantity_text):
     reach = sum(body.radius for body in known)
     if q >= reach:
         return None
-    names = " and ".join(body.name for body in known)
+    names = " and ".join(frame.in_a_sentence(body.name) for body in known)
     what = f"inside {names}" if len(known) == 1 else f"inside the radii of {names} added"
     return (f"closest approach {written(q << u.m, digits=4)} is {what} "
             f"({written(reach << u.m, digits=4)}): they collide")

@@ -445,7 +445,7 @@ def test_flyby_of_jupiter_past_the_sun_stays_in_its_window_and_warns():
 
     with pytest.warns(orbits.InsideBodyWarning, match="they collide"):
         flyby = Flyby.between("Sun", "Jupiter", 1 * u.km / u.s, b=1 * u.AU)
-    with pytest.warns(InsideBodyWarning, match="inside the radii of Sun and Jupiter added"):
+    with pytest.warns(InsideBodyWarning, match="inside the radii of the Sun and Jupiter added"):
         _, ax = flyby_plane(flyby)
     spans = np.concatenate([np.abs(line.get_xydata()).ravel() for line in ax.get_lines()])
     assert spans.max() <= 4.0 * (1 + 1e-12)  # AU
