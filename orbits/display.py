@@ -307,6 +307,48 @@ def axis_unit(q: u.Quantity) -> u.UnitBase:
     return unit
 
 
+# ---- the same, typeset for pictures (matplotlib's mathtext, no LaTeX) ----------------------------------------
+
+#: the astronomers' mass units, with their symbols
+_MATH_NAMES = {"M_sun": r"M$_\odot$", "M_jup": r"M$_J$", "M_earth": r"M$_\oplus$"}
+
+
+def number_math(x: float, digits: int = DIGITS) -> str:
+    """`number(x, digits)` with its power of ten typeset: "1.287$\\times10^{6}$", "$10^{-8}$", "0.74"; a number
+    below a million is written out, rounded to `digits` ("26600", not "2.66e4")."""
+    x = float(x)
+    if math.isfinite(x) and 10.0**digits <= abs(x) < 1e6:
+        x = round(x, digits - 1 - math.floor(math.log10(abs(x))))
+        if abs(x) < 1e6:
+            return number(x, 6)
+    text = number(x, digits)
+    if "e" not in text:
+        return text
+    mantissa, exponent = text.split("e")
+    power = f"10^{{{int(exponent)}}}"
+    if mantissa in ("1", "-1"):
+        return f"${mantissa[:-1]}{power}$"
+    return f"{mantissa}$\\times{power}$"
+
+
+def unit_math(unit: u.UnitBase) -> str:
+    """`unit_text(unit)` typeset: powers raised ("km$^{2}$/s$^{2}$", "$10^{3}$ km"), M_sun as M$_\\odot$."""
+    import re
+
+    text = unit_text(unit)
+    text = re.sub(r"^10\^(-?\d+)", r"$10^{\1}$", text)
+    text = re.sub(r"(?<=[A-Za-z)])(-?\d+)\b", r"$^{\1}$", text)
+    for name, math_name in _MATH_NAMES.items():
+        text = text.replace(name, math_name)
+    return text.replace(" / ", "/")
+
+
+def quantity_math(q: u.Quantity, name: str = "", digits: int = DIGITS, unit: u.UnitBase | None = None) -> str:
+    """A scalar quantity typeset for a picture, in its natural unit (or `unit`): "1.287$\\times10^{6}$ km"."""
+    unit = natural_unit(q, name) if unit is None else unit
+    return f"{number_math(float(q.to_value(unit)), digits)} {unit_math(unit)}".strip()
+
+
 def quantities_html(title: str, quantities: Mapping[str, u.Quantity], digits: int = DIGITS) -> str:
     """An HTML table: one row per quantity, its value in natural units, and the unit."""
     rows = []

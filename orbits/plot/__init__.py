@@ -4,8 +4,9 @@ Every function draws on a given Axes (or a new Figure) and returns (fig, ax), so
 labels carry units. `save(fig, path)` writes PNG, SVG or PDF atomically. Every picture is importable from here
 (`orbits.plot.orbits`, `orbits.plot.porkchop`, ...); the modules are
 
-- frame: the frame they share (figures and axes, the length unit of an axis with the factor into it, legends off
-  the data, save); it imports no other module of this package;
+- frame: the frame they share (figures and axes, the length unit of an axis with the factor into it, titles
+  wrapped to the room they have, labels beside points that stay apart, legends off the data, save); it imports
+  no other module of this package;
 - conics: Kepler orbits about their primary (orbit_plane, orbits, which Orbit.plot draws with);
 - planets: the solar system at a date (solar_system);
 - encounters: flybys and binaries (flyby_plane, binary_plane, binary_sky, radial_velocity_curves);
@@ -20,7 +21,10 @@ labels carry units. `save(fig, path)` writes PNG, SVG or PDF atomically. Every p
 - perturbations: perturbed orbits (secular_elements, kozai_cycles, drag_decay).
 
 A picture takes what it draws (arrays, numbers, or the object to draw, read through its properties) and never
-imports the classes that draw themselves with it; a new picture goes into the module of its subject.
+imports the classes that draw themselves with it; a new picture goes into the module of its subject. Every picture
+has a title naming what it draws (and when: a date, or t0, the time of an orbit's elements), each legend entry
+once, and no text over other text or outside the figure; numbers and units come typeset from orbits.display
+(number_math, unit_math, quantity_math), Greek letters in mathtext (tests/picture_checks.py checks all of it).
 """
 
 from orbits.plot.conics import PROJECTIONS, InsideBodyWarning, catalogue_body, orbit_plane, orbits

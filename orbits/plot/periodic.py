@@ -53,6 +53,7 @@ def _draw_views(fig, orbits, colours, labels, title):
     """The 3-D view and the three projections of `orbits` on four axes of `fig` (a 2 x 2 grid of subplots);
     returns the axes."""
     import matplotlib.patches as mpatches
+    from matplotlib.ticker import MaxNLocator
 
     tracks = _tracks(orbits)
     centre, half = _window(tracks)
@@ -61,23 +62,23 @@ def _draw_views(fig, orbits, colours, labels, title):
     bodies = _bodies(system, centre, half)
     points = system.positions.to_value(u.m)
     axes = [fig.add_subplot(2, 2, 1, projection="3d")] + [fig.add_subplot(2, 2, k) for k in (2, 3, 4)]
-    text = display.unit_text(unit)
+    text = display.unit_math(unit)
     view = axes[0]
     for track, colour, label in zip(tracks, colours, labels):
         view.plot(*(track.T * scale), color=colour, lw=0.8, label=label)
     for _, where, radius, colour in bodies:
         if np.all(np.abs(where - centre) <= half + radius):
             _sphere(view, where * scale, radius * scale, colour)
-    for k, p in enumerate(points):
-        if np.all(np.abs(p - centre) <= half):
-            view.plot(*(p[:, None] * scale), marker="x", color="C3", ls="none")
-            view.text(*(p * scale), f" L{k + 1}", fontsize="small")
+    inside = [k for k, p in enumerate(points) if np.all(np.abs(p - centre) <= half)]
+    for k in inside:
+        view.plot(*(points[k][:, None] * scale), marker="x", color="C3", ls="none")
     for limit, c in zip((view.set_xlim3d, view.set_ylim3d, view.set_zlim3d), centre):
         limit((c - half) * scale, (c + half) * scale)
-    view.set_box_aspect((1, 1, 1))
-    view.set_xlabel(f"x [{text}]", labelpad=8)
-    view.set_ylabel(f"y [{text}]", labelpad=8)
-    view.set_zlabel(f"z [{text}]", labelpad=8)
+    view.set_box_aspect((1, 1, 1), zoom=0.85)  # the labels inside the panel
+    for name, axis in zip(_NAMES, (view.xaxis, view.yaxis, view.zaxis)):
+        axis.set_major_locator(MaxNLocator(3))  # tick labels apart where two axes meet
+        axis.set_label_text(f"{name} [{text}]")
+        axis.labelpad = 22
     view.set_title("3-D, rotating frame", fontsize="medium")
     for ax, ((i, j), caption) in zip(axes[1:], VIEWS):
         for track, colour in zip(tracks, colours):
@@ -89,10 +90,9 @@ def _draw_views(fig, orbits, colours, labels, title):
                                          edgecolor="0.4", zorder=3))
             if radius < 0.01 * half:
                 ax.plot(where[i] * scale, where[j] * scale, marker="o", ms=4, color=colour, mec="0.3", zorder=3)
-        for (a, b), names in _projected_points(points, centre, half, (i, j)).items():
+        spots = _projected_points(points, centre, half, (i, j))
+        for a, b in spots:
             ax.plot(a * scale, b * scale, marker="x", color="C3", ls="none", zorder=4)
-            ax.annotate(", ".join(names), (a * scale, b * scale), textcoords="offset points", xytext=(4, 4),
-                        fontsize="small")
         ax.set_xlim((centre[i] - half) * scale, (centre[i] + half) * scale)
         ax.set_ylim((centre[j] - half) * scale, (centre[j] + half) * scale)
         ax.set_aspect("equal")
@@ -100,14 +100,17 @@ def _draw_views(fig, orbits, colours, labels, title):
         ax.set_ylabel(f"{_NAMES[j]} [{text}]")
         ax.set_title(caption, fontsize="medium")
         ax.grid(alpha=0.3)
+        frame.labels_apart(ax, [(", ".join(names), (a * scale, b * scale), dict(fontsize="small"))
+                                for (a, b), names in spots.items()])
     shown = [body for body in bodies if np.all(np.abs(body[1] - centre) <= half + body[2])]
-    names = [f"{name} (to scale, radius {display.quantity_text(radius << u.m, digits=4)})" if radius > 0 else name
+    names = [f"{name} (to scale, radius {display.quantity_math(radius << u.m, digits=4)})" if radius > 0 else name
              for name, _, radius, _ in shown]
     handles = [mpatches.Patch(facecolor=colour, edgecolor="0.4", label=name)
                for name, (_, _, _, colour) in zip(names, shown)]
     handles.append(view.plot([], [], marker="x", color="C3", ls="none", label="Lagrange points")[0])
     fig.legend(handles=handles, loc="outside lower center", ncol=3, fontsize="small", frameon=False)
-    fig.suptitle(title)
+    frame.labels_apart(view, [(f"L{k + 1}", points[k] * scale, dict(fontsize="small")) for k in inside])
+    frame.title(fig, title, size="large")
     return axes
 
 
@@ -136,8 +139,8 @@ def periodic_orbit(orbit: Any, fig: Any = None) -> tuple[Any, np.ndarray]:
     """An orbits.PeriodicOrbit over one period in the rotating frame: 3-D and the x-y, x-z and y-z projections, the
     primaries to scale and the Lagrange points within the window marked. Returns (figure, its four axes)."""
     fig = frame.figure(fig, (12.5, 10.5))
-    title = (f"{orbit.describe()} orbit: T = {display.quantity_text(orbit.period, digits=5)}, "
-             f"C = {display.number(orbit.dimensionless_jacobi_constant, 7)} (units of (n r)^2)")
+    title = (f"{orbit.describe()} orbit: T = {display.quantity_math(orbit.period, digits=5)}, "
+             f"C = {display.number(orbit.dimensionless_jacobi_constant, 7)} (units of $(n\\,r)^2$)")
     return fig, np.array(_draw_views(fig, [orbit], ["C0"], [orbit.describe()], title))
 
 
@@ -154,7 +157,7 @@ def periodic_family(family: Any, fig: Any = None) -> tuple[Any, np.ndarray]:
     cmap = mpl.colormaps["viridis"]
     colours = [cmap(norm(value)) for value in c]
     title = f"{family.members[0].describe()} family: {len(family)} members to {family.end}"
-    axes = _draw_views(top, list(family.members), colours, [None] * len(family), _wrap(title, 110))
+    axes = _draw_views(top, list(family.members), colours, [None] * len(family), title)
     top.colorbar(mpl.cm.ScalarMappable(norm=norm, cmap=cmap), ax=axes, shrink=0.6, label="Jacobi constant C")
     ax = bottom.subplots()
     stability_diagram(family, ax)
@@ -172,10 +175,6 @@ def _continued(nu: np.ndarray) -> np.ndarray:
     return out
 
 
-def _wrap(text: str, width: int) -> str:
-    return display.filled(text, width)
-
-
 def stability_diagram(family: Any, ax: Any = None) -> tuple[Any, Any]:
     """The stability indices nu = lambda + 1 / lambda of a PeriodicFamily's members against their Jacobi constant, in
     the family's order (the curve folds back where C turns), on a symmetric-log axis (the band |nu| <= 2 where a
@@ -187,14 +186,14 @@ def stability_diagram(family: Any, ax: Any = None) -> tuple[Any, Any]:
     for k, style in enumerate(("-", "--")):
         real = np.abs(nu[:, k].imag) <= 1e-9 * np.maximum(1.0, np.abs(nu[:, k]))
         ax.plot(c, nu[:, k].real, ls=style, marker=".", ms=4, lw=0.9, color=f"C{k}",
-                label=f"nu_{k + 1}" + (" (real part where complex: hollow)" if not np.all(real) else ""))
+                label=f"$\\nu_{k + 1}$" + (" (real part where complex: hollow)" if not np.all(real) else ""))
         if not np.all(real):
             ax.plot(c[~real], nu[~real, k].real, ls="none", marker="o", mfc="none", color=f"C{k}")
     for level in (2.0, -2.0):
         ax.axhline(level, color="0.4", lw=0.8, ls=":")
-    ax.axhspan(-2.0, 2.0, color="C2", alpha=0.08, label="|nu| <= 2: the pair is stable")
-    markers = {"tangent": ("v", "C3", "a family branches off (nu = 2)"),
-               "period doubling": ("^", "C4", "period doubling (nu = -2)")}
+    ax.axhspan(-2.0, 2.0, color="C2", alpha=0.08, label="$|\\nu| \\leq 2$: the pair is stable")
+    markers = {"tangent": ("v", "C3", "a family branches off ($\\nu$ = 2)"),
+               "period doubling": ("^", "C4", "period doubling ($\\nu$ = -2)")}
     shown = set()
     for kind, orbit in family.bifurcations:
         marker, colour, text = markers[kind]
@@ -206,10 +205,11 @@ def stability_diagram(family: Any, ax: Any = None) -> tuple[Any, Any]:
     top = max(3.0, float(np.max(np.abs(nu.real))))
     ticks = [v for v in (1e4, 1e3, 1e2, 10.0, 2.0, 0.0) if v <= 1.5 * top]
     ax.set_yticks(sorted({*ticks, *(-v for v in ticks)}))
-    ax.set_yticklabels([display.number(v, 3) for v in ax.get_yticks()])
-    ax.set_xlabel("Jacobi constant C [(n r)^2]")
-    ax.set_ylabel("stability index nu")
-    ax.set_title(f"stability of the {family.members[0].describe()} family", fontsize="medium")
+    ax.set_yticklabels([display.number_math(v, 3) for v in ax.get_yticks()])
+    ax.set_xlabel("Jacobi constant C [$(n\\,r)^2$]")
+    ax.set_ylabel("stability index $\\nu$")
     ax.grid(alpha=0.3)
     frame.legend_beside(ax)
+    frame.title(ax, f"Stability of the {family.members[0].describe()} family: its {len(family)} members' indices "
+                    f"$\\nu = \\lambda + 1/\\lambda$")
     return fig, ax

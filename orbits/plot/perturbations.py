@@ -12,6 +12,7 @@ from typing import Any
 import astropy.units as u
 import numpy as np
 
+from orbits import display
 from orbits.plot import frame
 
 #: how each backend's curves look: (colour, line style of the osculating curve, marker of the means)
@@ -55,7 +56,7 @@ def secular_elements(history: Any, figure: Any = None) -> tuple[Any, np.ndarray]
         ax.set_xlabel("time [d]")
     panels[0, 0].set_title("integrated (osculating and revolution means) over the closed form", fontsize="medium")
     panels[0, 1].set_title(f"revolution means less the closed form\n(first order: O(J2 (R/p)$^2$) = "
-                           f"{history.accuracy:.1e} of the rate)", fontsize="medium")
+                           f"{display.number_math(history.accuracy, 2)} of the rate)", fontsize="medium")
     moving = " and ".join(ELEMENT_LABELS[name].split(" $")[0] for name in names)
     figure.suptitle(f"The {moving} under J2 and J4: rebound and heyoka over the secular closed form\n"
                     f"{history.title}")
@@ -70,7 +71,8 @@ def _element_panels(row: np.ndarray, history: Any, name: str) -> None:
     times = np.asarray(history.times, dtype=float)
     span = np.array([0.0, times[-1]])
     left.plot(span, start + rate * span, color=THEORY_COLOR, lw=1.4, zorder=3,
-              label=f"closed form: first-order J2 rates ({rate:+.4g} deg/d for ${ELEMENT_SYMBOLS[name]}$ here)"
+              label=f"closed form: first-order J2 rates ({'+' if rate > 0 else ''}{display.number_math(rate, 4)} deg/d "
+              f"for ${ELEMENT_SYMBOLS[name]}$ here)"
               if len(history.lines) == 1 else "closed form: first-order J2 rates")
     right.axhline(0.0, color=THEORY_COLOR, lw=1.4, zorder=1)
     mean_times = np.asarray(history.mean_times, dtype=float)
@@ -109,16 +111,17 @@ def kozai_cycles(history: Any, figure: Any = None) -> tuple[Any, np.ndarray]:
         c_ax.plot(history.mean_times, history.mean_constant[backend], color=color, ls=dashes, lw=2.0,
                   label=f"{backend}, averaged over each orbit of the perturber")
     e_ax.axhline(history.e_max, color=THEORY_COLOR, ls="--", lw=1.0,
-                 label=f"quadrupole: $e_{{max}}$ = {history.e_max:.4f}, i = "
-                       f"{history.inclination_at_e_max:.2f}$\\degree$ there")
+                 label=f"quadrupole: $e_{{max}}$ = {display.number(history.e_max, 4)}, i = "
+                       f"{display.number(history.inclination_at_e_max, 4)}$\\degree$ there")
     i_ax.axhline(history.inclination_at_e_max, color=THEORY_COLOR, ls="--", lw=1.0)
     c_ax.axhline(history.start, color=THEORY_COLOR, ls="-.", lw=1.0,
-                 label=f"quadrupole: $\\sqrt{{1-e^2}}\\,\\cos i$ conserved at its start, {history.start:.4f}")
+                 label=f"quadrupole: $\\sqrt{{1-e^2}}\\,\\cos i$ conserved at its start, "
+                       f"{display.number(history.start, 4)}")
     peaks = np.arange(0.5, times[-1] / history.period + 0.5) * history.period
     for j, peak in enumerate(peaks[peaks <= times[-1]]):
         for ax in panels:
             ax.axvline(peak, color="0.5", ls=":", lw=1.0,
-                       label=f"quadrupole: $e_{{max}}$ every period, {history.period:.3f} $\\tau$"
+                       label=f"quadrupole: $e_{{max}}$ every period, {display.number(history.period, 4)} $\\tau$"
                        if j == 0 and ax is e_ax else None)
     e_ax.set_ylabel("eccentricity e")
     i_ax.set_ylabel(r"inclination i [$\degree$]")
@@ -128,7 +131,7 @@ def kozai_cycles(history: Any, figure: Any = None) -> tuple[Any, np.ndarray]:
         ax.grid(alpha=0.3)
     figure.suptitle(f"Kozai-Lidov cycles: rebound and heyoka with the quadrupole theory's marks\n{history.title}\n"
                     f"(the doubly averaged theory drops terms of relative size $\\epsilon_{{sa}}$ = "
-                    f"{history.accuracy:.3f})")
+                    f"{display.number_math(history.accuracy, 2)})")
     _legend_below(figure, panels, columns=2)
     return figure, panels
 
@@ -155,11 +158,13 @@ def drag_decay(decay: Any, history: Any = None, figure: Any = None) -> tuple[Any
     base = table["base_altitude"].to_value(u.km)
     breakdown = table["breakdown_altitude"].to_value(u.km)
     end = max(base, breakdown)
+    km = {name: display.quantity_math(table[name], digits=4, unit=u.km)
+          for name in ("altitude", "base_altitude", "breakdown_altitude", "scale_height")}
     if base >= breakdown:
-        ax.axhline(base, color="0.5", ls=":", lw=1.0, label=f"the band's base, {base:.4g} km")
+        ax.axhline(base, color="0.5", ls=":", lw=1.0, label=f"the band's base, {km['base_altitude']}")
     else:
-        ax.axhline(breakdown, color="C3", ls=":", lw=1.0, label=f"breakdown altitude, {breakdown:.4g} km (the "
-                   f"band's base: {base:.4g} km)")
+        ax.axhline(breakdown, color="C3", ls=":", lw=1.0, label=f"breakdown altitude, {km['breakdown_altitude']} "
+                   f"(the band's base: {km['base_altitude']})")
     why = ("the band's base, where its exponential law ends" if base >= breakdown
            else "the decay in one revolution reaches H")
     ax.plot([lifetime.to_value(unit)], [end], marker="*", ms=13, color="C3", mec="0.2", ls="none", zorder=4,
@@ -168,11 +173,12 @@ def drag_decay(decay: Any, history: Any = None, figure: Any = None) -> tuple[Any
     panels[-1].set_xlabel(f"time [{label}]")
     for panel in panels:
         panel.grid(alpha=0.3)
-    start = table["altitude"].to_value(u.km)
-    figure.suptitle(f"Drag decay of a circular orbit about {decay.primary}: from {start:.4g} km to {end:.4g} km in "
-                    f"{lifetime.to_value(unit):.4g} {label}\nB = C$_D$A/m = {decay.b:.4g} m$^2$/kg, scale height H = "
-                    f"{table['scale_height'].to_value(u.km):.4g} km\nthe closed form's error order, (decay in a "
-                    f"revolution / H)$^2$, is {table['accuracy'].to_value(u.one):.1e} at the start")
+    lasts = display.number_math(lifetime.to_value(unit), 4)
+    figure.suptitle(f"Drag decay of a circular orbit about {decay.primary}: from {km['altitude']} to "
+                    f"{display.quantity_math(end * u.km, digits=4)} in {lasts} {label}\n"
+                    f"B = C$_D$A/m = {display.number_math(decay.b, 4)} m$^2$/kg, scale height H = "
+                    f"{km['scale_height']}\nthe closed form's error order, (decay in a revolution / H)$^2$, is "
+                    f"{display.number_math(table['accuracy'].to_value(u.one), 2)} at the start")
     _legend_below(figure, panels, columns=2)
     return figure, panels
 

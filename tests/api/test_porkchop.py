@@ -245,7 +245,7 @@ def test_the_picture_draws_contours_and_marks_the_minima(chart, tmp_path):
         star = marks[0].get_xydata()[0]
         assert star[0] == pytest.approx(chart.minimum_c3.launch.tdb.jd - 2440587.5)
         assert star[1] == pytest.approx(chart.minimum_c3.arrival.tdb.jd - 2440587.5)
-        assert "least C3: 2026-10-30" in marks[0].get_label() or "least C3: 2026-10-31" in marks[0].get_label()
+        assert "least $C_3$: 2026-10-30" in marks[0].get_label() or "least $C_3$: 2026-10-31" in marks[0].get_label()
         assert ax.get_xlabel() == "launch date [TDB]" and ax.get_ylabel() == "arrival date [TDB]"
         assert ax.xaxis.get_major_formatter().fmt == "%Y-%m-%d"
         save(fig, tmp_path / "porkchop.png")

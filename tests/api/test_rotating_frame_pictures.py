@@ -53,7 +53,7 @@ def test_earth_moon_zero_velocity_curves_are_where_the_jacobi_constant_says(eart
     _, ax = lagrange_plane(earth_moon, points=301)
     labels = {handle.get_label() for handle in ax.get_legend().legend_handles}
     assert {"forbidden at C(L1)", "forbidden at C(L2)", "forbidden at C(L3)", "Earth (M)"} <= labels
-    assert any(label.startswith("Moon (m), mu = 0.01215") for label in labels)
+    assert any(label.startswith("Moon (m), $\\mu$ = 0.01215") for label in labels)
     assert "384399 km" in ax.get_xlabel()
     filled, lines = ax.collections[0], ax.collections[1]
     constants = np.sort(earth_moon.jacobi_constants.to_value(u.m**2 / u.s**2)[:3])

@@ -98,7 +98,7 @@ def test_collide_plot_shows_the_velocities_after(monkeypatch, tmp_path):
         tip = [drawn_lines[label].get_xdata()[1], drawn_lines[label].get_ydata()[1]]
         assert tip == pytest.approx(velocity.to_value(u.m / u.s), rel=1e-15)
     assert "body 2 before (at rest)" in drawn_lines  # a zero vector is named, not lost
-    assert ax.get_legend() is not None and ax.get_xlabel() == "v_x [m / s]"
+    assert ax.get_legend() is not None and ax.get_xlabel() == "$v_x$ [m/s]"
 
 
 def test_projectile_plot_lands_where_the_table_says(monkeypatch, tmp_path):
