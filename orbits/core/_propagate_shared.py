@@ -13,6 +13,10 @@ SERIES_LIMIT = 2.0
 #: mixed states.
 FIXED_STEPS = 5
 
+#: Halley steps of the hyperbolic pass (the first from the starter's own evaluation), then a Newton step and the
+#: certificate.
+HYPERBOLIC_STEPS = 3
+
 #: Doublings of hi = tau / r0 that pass 2 may take to bracket the root (F grows at least linearly in chi).
 BRACKET_DOUBLINGS = 2100
 

@@ -58,7 +58,14 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from orbits.core import _dd, _fast
-from orbits.core._kepler_shared import MAX_MEAN_ANOMALY, SINH_MINUS_X, TWO_PI_1, TWO_PI_2, X_MINUS_SIN
+from orbits.core._kepler_shared import (
+    COSH_MINUS_ONE,
+    MAX_MEAN_ANOMALY,
+    SINH_MINUS_X,
+    TWO_PI_1,
+    TWO_PI_2,
+    X_MINUS_SIN,
+)
 from orbits.core._propagate_shared import (
     BRACKET_DOUBLINGS,
     BRACKET_WIDTH,
@@ -67,6 +74,7 @@ from orbits.core._propagate_shared import (
     ELLIPTIC_ERROR,
     ELLIPTIC_STEP,
     FIXED_STEPS,
+    HYPERBOLIC_STEPS,
     SERIES_LIMIT,
     SMALLEST_MEAN_MOTION_SQUARED,
 )
@@ -471,6 +479,177 @@ def _elliptic_pass(r0, v0, mu, dt):
     return r, v, certified & eligible
 
 
+# --- the hyperbolic pass -------------------------------------------------------------------------------------------
+
+
+def _hyperbolic_setup(r0, v0, mu, dt):
+    """The hyperbolic pass's problem, state by state: (A, ec, es, grow, decay, P, m, m_lo, n, back, eligible).
+
+    With beta = -alpha = 1 / |a| and H0 the hyperbolic anomaly at t0: A = beta |r0| = |r0| |v0|**2 / mu - 2,
+    (ec, es) = (e cosh H0, e sinh H0) = (1 + A, back (r0 . v0) sqrt(beta / mu)), (grow, decay) = e exp(+-H0) =
+    ec +- es (the one that cancels from grow decay = e**2), P = e**2 - 1 = beta h**2 / mu, the mean motion
+    n = sqrt(mu beta**3) and m + m_lo = |n dt| (back = -1 where dt < 0: the state then runs forward with -v0).
+    A, beta, n and n dt are formed in double-double arithmetic (A cancels near e = 1). eligible: an open orbit
+    whose n**2 is clear of the subnormal range (not an exact parabola) and whose n dt is finite.
+    """
+    zero = np.zeros_like(dt)
+    with np.errstate(all="ignore"):  # bound orbits: NaN mean motion, not eligible
+        r = _dd.sqrt(_dd.dot(r0, r0))
+        w = _dd.div(_dd.mul(r, _dd.dot(v0, v0)), (mu, zero))  # |r0| |v0|**2 / mu
+        A = _dd.add(w, (-2.0 + zero, zero))
+        beta = _dd.div(A, r)
+        n_squared = _dd.mul(_dd.mul(_dd.mul(beta, beta), beta), (mu, zero))
+        n = _dd.sqrt(n_squared)
+        M = _dd.mul(n, (dt, zero))
+        eligible = (beta[0] > 0) & (n_squared[0] >= SMALLEST_MEAN_MOTION_SQUARED) & np.isfinite(M[0])
+        back = np.where(M[0] < 0, -1.0, 1.0)
+        es = _dd.mul(_dd.dot(r0, v0), _dd.sqrt(_dd.div(beta, (mu, zero))))
+        es = back * (es[0] + es[1])
+        ec = (1.0 + A[0]) + A[1]
+        h = np.cross(r0, v0)
+        P = beta[0] * np.sum(h * h, axis=-1) / mu
+        larger = ec + np.abs(es)
+        smaller = (1.0 + P) / larger
+        grow, decay = np.where(es < 0, smaller, larger), np.where(es < 0, larger, smaller)
+    return A[0] + A[1], ec, es, grow, decay, P, back * M[0], back * M[1], n[0] + n[1], back, eligible
+
+
+def hyperbolic_functions(x: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """(sinh x - x, cosh x - 1 as hi + lo, exp x, exp -x) for x >= 0, free of cancellation: series below
+    SERIES_LIMIT (cosh x - 1 = x**2 / 2 + x**4 Q(x**2) with x**2 exact, so that its low part carries what the
+    rounding of x**2 / 2 drops), from exp x beyond (where cosh x >= 3.7, so cosh x - 1 loses under half a bit; lo
+    = 0). The series region gives exp x = 1 + sinh x + (cosh x - 1); exp x is inf beyond about 709."""
+    x = np.asarray(x, dtype=float)
+    small = x < SERIES_LIMIT
+    square, square_lo = _dd.two_product(x, x)
+    series_shm = square * x * horner(SINH_MINUS_X, square)
+    series_chm, series_lo = _dd.two_sum(0.5 * square, 0.5 * square_lo + square * square * horner(COSH_MINUS_ONE[:-1],
+                                                                                                 square))
+    with np.errstate(over="ignore", invalid="ignore"):
+        exp = np.where(small, 1.0 + ((x + series_shm) + series_chm), np.exp(x))
+        inverse = 1.0 / exp
+        shm = np.where(small, series_shm, 0.5 * (exp - inverse) - x)
+        chm = np.where(small, series_chm, 0.5 * (exp + inverse) - 1.0)
+    return shm, chm, np.where(small, series_lo, 0.0), exp, inverse
+
+
+def _hyperbolic_residual(x, A, ec, es, grow, decay, m, m_lo):
+    """(F - m, F', F'', terms) of the hyperbolic pass's equation in x = H - H0 >= 0, the universal Kepler
+    equation in x = sqrt(beta) chi times n:
+        F(x) = A x + ec (sinh x - x) + es (cosh x - 1) = M(H0 + x) - M(H0),   F' = r / |a| > 0,
+    summed with exact products (A x and es (cosh x - 1) cancel on the way in to periapsis near e = 1: rounded, they
+    cost up to 4x the input's conditioning), or, where x > 1 and its terms are the smaller, in the anomaly form
+        F = (grow (exp x - 1) + decay (1 - exp -x)) / 2 - x
+    (far out on the way in, where the first form cancels). `terms` = (sinh x - x, cosh x - 1, exp x, exp -x),
+    to build f and g."""
+    shm, chm, chm_lo, exp, inverse = hyperbolic_functions(x)
+    with np.errstate(over="ignore", invalid="ignore"):
+        p1, e1 = _dd.two_product(A, x)
+        p2, e2 = _dd.two_product(es, chm)
+        s, t = _dd.two_sum(p1, p2)
+        s, u = _dd.two_sum(s, -m)
+        near = s + ((t + u) + (((e1 + e2) + es * chm_lo) - m_lo) + ec * shm)
+        near_terms = np.abs(p1) + np.abs(p2) + np.abs(ec * shm)
+        far_sum = 0.5 * (grow * (exp - 1.0) + decay * (1.0 - inverse))
+        far = (x > 1.0) & (far_sum + x < near_terms)
+        f = np.where(far, ((far_sum - x) - m) - m_lo, near)
+        df = _open_radius(A, ec, es, grow, decay, x, shm, chm, exp, inverse)
+        d2f = 0.5 * (grow * exp - decay * inverse)
+    return np.where(np.isfinite(f), f, np.inf), df, d2f, (shm, chm, exp, inverse)
+
+
+def _open_radius(A, ec, es, grow, decay, x, shm, chm, exp, inverse):
+    """r / |a| = F' = A + ec (cosh x - 1) + es sinh x, or (grow exp x + decay exp -x) / 2 - 1 where x > 1 and
+    its terms are the smaller (far out, where es sinh x cancels ec (cosh x - 1)); es x exactly."""
+    p, e = _dd.two_product(es, x)
+    near = (A + p) + ((e + es * shm) + ec * chm)
+    far_terms = 0.5 * (grow * exp + decay * inverse)
+    far = (x > 1.0) & (far_terms + 1.0 < A + np.abs(ec * chm) + np.abs(es) * (x + shm))
+    return np.where(far, far_terms - 1.0, near)
+
+
+def _hyperbolic_starters(A, es, grow, P, m):
+    """(the logarithmic starter, the parabolic starter, hi) for the root x of F(x) = m in [0, hi], hi = m / (e - 1)
+    (F' = r / |a| >= q / |a| = e - 1, e - 1 = P / (1 + e)).
+
+    The logarithmic one (Vallado's guess in x): F ~ grow exp(x) / 2 for large x, so x = log(2 m / grow)
+    where that is positive, else the root of the quadratic model A x + es x**2 / 2 = m (2 m / A where it has
+    none). The parabolic one: x on the parabola with the same p and r0 . v0 (Barker's equation),
+    sqrt(P) (D - D0), D + D**3 / 3 = D0 + D0**3 / 3 + 2 m / P**1.5, D0 = es / sqrt(P)."""
+    with np.errstate(all="ignore"):
+        hi = m * (1.0 + np.sqrt(1.0 + P)) / P
+        log_guess = np.log(2.0 * m / grow)
+        local = 2.0 * m / (A + np.sqrt(np.maximum(A * A + 2.0 * es * m, 0.0)))
+        first = np.where(log_guess > 0.0, log_guess, local)
+        root_p = np.sqrt(P)
+        d0 = es / root_p
+        w = d0 + d0 * d0 * d0 / 3.0 + 2.0 * m / (P * root_p)
+        c = np.cbrt(1.5 * np.abs(w) + np.sqrt(2.25 * w * w + 1.0))
+        barker = root_p * (np.copysign(c - 1.0 / c, w) - d0)
+        barker = np.where(np.isfinite(barker), barker, first)
+    return np.clip(first, 0.0, hi), np.clip(barker, 0.0, hi), hi
+
+
+def _solve_hyperbolic(A, ec, es, grow, decay, P, m, m_lo):
+    """(x, the terms at x, r / |a| at x, certified): the better starter by Newton step length, HYPERBOLIC_STEPS
+    Halley steps kept in [lo, hi] (bisection when a step leaves it), one Newton step, certified as the elliptic
+    pass's (ELLIPTIC_STEP, ELLIPTIC_ERROR); the terms then follow the Newton step to first order."""
+    coefficients = (A, ec, es, grow, decay, m, m_lo)
+    first, barker, hi = _hyperbolic_starters(A, es, grow, P, m)
+    f_1, df_1, d2f_1, _ = _hyperbolic_residual(first, *coefficients)
+    f_b, df_b, d2f_b, _ = _hyperbolic_residual(barker, *coefficients)
+    with np.errstate(all="ignore"):
+        barker_better = np.isfinite(f_b / df_b) & ~(np.abs(f_1 / df_1) <= np.abs(f_b / df_b))
+    x = np.where(barker_better, barker, first)
+    f, df, d2f = (np.where(barker_better, a, b) for a, b in ((f_b, f_1), (df_b, df_1), (d2f_b, d2f_1)))
+    lo = np.zeros_like(x)
+    for step in range(HYPERBOLIC_STEPS):
+        if step:
+            f, df, d2f, _ = _hyperbolic_residual(x, *coefficients)
+        lo, hi = np.where(f < 0, x, lo), np.where(f > 0, x, hi)
+        with np.errstate(all="ignore"):
+            new = x - 2.0 * f * df / (2.0 * df * df - f * d2f)
+        x = np.where(np.isfinite(new) & (lo <= new) & (new <= hi), new, 0.5 * (lo + hi))
+    f, df, d2f, (shm, chm, exp, inverse) = _hyperbolic_residual(x, *coefficients)
+    with np.errstate(all="ignore"):
+        step = f / df
+        certified = (np.abs(step) <= ELLIPTIC_STEP * x) & (np.abs(d2f) * step * step <= ELLIPTIC_ERROR * df * x)
+        shm, chm = shm - step * chm, chm - step * (x + shm)
+        x = x - step
+        exp, inverse = exp * (1.0 - step), inverse * (1.0 + step)
+        r_over_a = _open_radius(A, ec, es, grow, decay, x, shm, chm, exp, inverse)
+    return x, (shm, chm, exp, inverse), r_over_a, certified
+
+
+def _hyperbolic_lagrange(A, es, grow, decay, m, n, back, x, terms, r_over_a):
+    """(f, g, f', g') at the root x: f = 1 - (cosh x - 1) / A, g = back (A sinh x + es (cosh x - 1)) / n, or
+    back ((grow (exp x - 1) + decay (1 - exp -x)) / 2 - sinh x) / n where x > 1 and its terms are the smaller
+    (far out on the way in), f' = -back n sinh x / (A r / |a|), g' = 1 - (cosh x - 1) / (r / |a|) (the universal
+    f and g with G1 = sinh x / sqrt(beta), G2 = (cosh x - 1) / beta)."""
+    shm, chm, exp, inverse = terms
+    sinh = x + shm
+    with np.errstate(all="ignore"):
+        p1, e1 = _dd.two_product(A, x)
+        p2, e2 = _dd.two_product(es, chm)
+        near = (p1 + p2) + ((e1 + e2) + A * shm)
+        far_sum = 0.5 * (grow * (exp - 1.0) + decay * (1.0 - inverse))
+        far = (x > 1.0) & (far_sum + sinh < np.abs(p1) + np.abs(p2))
+        g = np.where(far, far_sum - sinh, near)
+        return 1.0 - chm / A, back * g / n, -back * n * sinh / (A * r_over_a), 1.0 - chm / r_over_a
+
+
+def _hyperbolic_pass(r0, v0, mu, dt):
+    """(r, v, certified): the hyperbolic pass on flat (n, 3) r0, v0 and (n,) mu, dt of open orbits; the states
+    it does not certify (exact parabolas, and any whose solve it cannot vouch for) have meaningless r, v."""
+    A, ec, es, grow, decay, P, m, m_lo, n, back, eligible = _hyperbolic_setup(r0, v0, mu, dt)
+    with np.errstate(all="ignore"):
+        x, terms, r_over_a, certified = _solve_hyperbolic(A, ec, es, grow, decay, P, m, m_lo)
+        f, g, f_dot, g_dot = _hyperbolic_lagrange(A, es, grow, decay, m, n, back, x, terms, r_over_a)
+        r = f[:, None] * r0 + g[:, None] * v0
+        v = f_dot[:, None] * r0 + g_dot[:, None] * v0
+    return r, v, certified & eligible
+
+
 def _propagate_numpy(r0, v0, mu, dt):
     """propagate in NumPy: the elliptic pass on every state, the universal passes on the rest."""
     r0, v0, mu = check_state(r0, v0, mu)
@@ -485,11 +664,21 @@ def _propagate_numpy(r0, v0, mu, dt):
             "the state is radial (r x v = 0): the propagator does not regularise the collision with "
             "the primary; give the orbit a non-zero angular momentum"
         )
-    r, v, done = _elliptic_pass(r0, v0, mu, dt)
+    r, v, done = np.empty_like(r0), np.empty_like(v0), np.zeros(dt.shape, dtype=bool)
+    for states, conic_pass in ((~_open(r0, v0, mu), _elliptic_pass), (_open(r0, v0, mu), _hyperbolic_pass)):
+        if np.any(states):
+            r[states], v[states], done[states] = conic_pass(r0[states], v0[states], mu[states], dt[states])
     rest = ~done
     if np.any(rest):
         r[rest], v[rest] = _universal_passes(r0[rest], v0[rest], mu[rest], dt[rest])
     return r.reshape(batch + (3,)), v.reshape(batch + (3,))
+
+
+def _open(r0, v0, mu):
+    """Whether each state is known to be open, |r0| |v0|**2 > 2 mu in float64: which of the elliptic and the
+    hyperbolic pass it goes to (either refuses a state on the wrong side, by its double-double alpha, and leaves it
+    to the universal passes)."""
+    return np.sqrt(np.sum(r0 * r0, axis=-1)) * np.sum(v0 * v0, axis=-1) > 2.0 * mu
 
 
 class Scaled(NamedTuple):

@@ -117,7 +117,8 @@ def elliptic_pass_leaves(path, r0, v0, mu, dt):
     from orbits.core import _fast_propagate as kernel
 
     r, v, pending = np.empty_like(r0), np.empty_like(v0), np.empty(len(dt), np.int64)
-    return kernel._elliptic_pass(0, len(dt), r0, v0, mu, dt, r, v, np.empty((kernel._ROWS, kernel._BLOCK)), pending)
+    scratch = np.empty((kernel._ROWS, kernel._BLOCK))
+    return kernel._elliptic_pass(np.arange(len(dt)), r0, v0, mu, dt, r, v, scratch, pending, 0)
 
 
 @pytest.mark.parametrize("path", PATHS)
