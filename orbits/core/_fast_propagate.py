@@ -60,7 +60,7 @@ from orbits.core._fast_universal import (
     _gather_block,
     _universal_passes,
 )
-from orbits.core._kepler_shared import COSH_MINUS_ONE, MAX_MEAN_ANOMALY, SINH_MINUS_X, TWO_PI_1
+from orbits.core._kepler_shared import COSH_MINUS_ONE, MAX_MEAN_ANOMALY, ONE_MINUS_COS, SINH_MINUS_X, TWO_PI_1
 from orbits.core._propagate_shared import (
     BRACKET_WIDTH,
     ELLIPTIC_ERROR,
@@ -71,11 +71,13 @@ from orbits.core._propagate_shared import (
 )
 
 COSH_TAIL = COSH_MINUS_ONE[:-1]  # (cosh x - 1 - x**2 / 2) / x**4 as a series in x**2
+COS_TAIL = ONE_MINUS_COS[:-1]  # (1 - cos x - x**2 / 2) / x**4
 
 # Rows of the per-block scratch array after the input rows (orbits/core/_fast_universal.py), the elliptic pass's:
 _A, _EC, _ES, _M, _N, _BACK, _LO, _HI, _X, _OK, _SIN, _OMC, _R_OVER_A = range(8, 21)
 _E_OUT = 21  # rows 21..26: r and v of the result
 _LOCAL = 27
+_M_LO, _XMS = 28, 29
 
 
 # --- the elliptic pass (propagate._elliptic_pass) ---------------------------------------------------
@@ -83,7 +85,7 @@ _LOCAL = 27
 
 @jit(inline=True)
 def _elliptic_setup(rx, ry, rz, vx, vy, vz, mu, dt):
-    """propagate._elliptic_setup for one state: (A, ec, es, m, n, back, eligible), in double-double
+    """propagate._elliptic_setup for one state: (A, ec, es, m, m_lo, n, back, eligible), in double-double
     arithmetic as there (quotients by reciprocals: _dd_over)."""
     inverse_mu = 1.0 / mu
     r2_hi, r2_lo = _dd_dot(rx, ry, rz, rx, ry, rz)
@@ -100,21 +102,45 @@ def _elliptic_setup(rx, ry, rz, vx, vy, vz, mu, dt):
     m_hi, m_lo = _dd_mul(n_hi, n_lo, dt, 0.0)
     eligible = alpha_hi > 0.0 and n2_hi >= SMALLEST_MEAN_MOTION_SQUARED and abs(m_hi) <= MAX_MEAN_ANOMALY
     hi, lo = _reduce(m_hi if eligible else 0.0, m_lo if eligible else 0.0)
-    m = hi + lo
-    back = -1.0 if m < 0.0 else 1.0
-    es = back * (rx * vx + ry * vy + rz * vz) * math.sqrt(alpha_hi * inverse_mu)
-    return a_hi + a_lo, (1.0 - a_hi) - a_lo, es, abs(m), n_hi + n_lo, back, eligible
+    back = -1.0 if hi < 0.0 else 1.0
+    rv_hi, rv_lo = _dd_dot(rx, ry, rz, vx, vy, vz)
+    q_hi, q_lo = _dd_over(alpha_hi, alpha_lo, mu, 0.0, inverse_mu)
+    q_hi, q_lo, _ = _dd_root(q_hi, q_lo)
+    es_hi, es_lo = _dd_mul(rv_hi, rv_lo, q_hi, q_lo)
+    return a_hi + a_lo, (1.0 - a_hi) - a_lo, back * (es_hi + es_lo), back * hi, back * lo, n_hi + n_lo, back, eligible
 
 
 @jit(inline=True)
-def _elliptic_residual(x, A, ec, es, m):
-    """propagate._elliptic_residual: (F - m, F', F'', sin x, 1 - cos x), x in [0, pi + 2] (_trig reflects
-    about pi beyond 2)."""
+def _trig_terms(x):
+    """propagate._trig_terms: (sin x, x - sin x, 1 - cos x as hi + lo), x in [0, pi + 2] (_trig reflects about pi
+    beyond 2)."""
     sin, x_minus_sin, one_minus_cos = _trig(x)
-    f = ((A * x - m) + ec * x_minus_sin) + es * one_minus_cos
-    df = (A + ec * one_minus_cos) + es * sin
+    square, square_lo = _two_product(x, x)
+    hi, lo = _two_sum(0.5 * square, 0.5 * square_lo + square * square * _horner(COS_TAIL, square))
+    small = x < SERIES_LIMIT
+    return sin, x_minus_sin, (hi if small else one_minus_cos), (lo if small else 0.0)
+
+
+@jit(inline=True)
+def _elliptic_radius(A, ec, es, x, sin, x_minus_sin, one_minus_cos):
+    """propagate._elliptic_radius: r / a = F'(x)."""
+    p, e = _two_product(es, x)
+    near = (A + p) + ((e - es * x_minus_sin) + ec * one_minus_cos)
+    return near if x < SERIES_LIMIT else (A + ec * one_minus_cos) + es * sin
+
+
+@jit(inline=True)
+def _elliptic_residual(x, A, ec, es, m, m_lo):
+    """propagate._elliptic_residual: (F - m, F', F'', sin x, x - sin x, 1 - cos x)."""
+    sin, x_minus_sin, one_minus_cos, one_minus_cos_lo = _trig_terms(x)
+    p1, e1 = _two_product(A, x)
+    p2, e2 = _two_product(es, one_minus_cos)
+    s, t = _two_sum(p1, p2)
+    s, u = _two_sum(s, -m)
+    f = s + ((t + u) + (((e1 + e2) + es * one_minus_cos_lo) - m_lo) + ec * x_minus_sin)
+    df = _elliptic_radius(A, ec, es, x, sin, x_minus_sin, one_minus_cos)
     d2f = ec * sin + es * (1.0 - one_minus_cos)
-    return f, df, d2f, sin, one_minus_cos
+    return f, df, d2f, sin, x_minus_sin, one_minus_cos
 
 
 @jit(inline=True)
@@ -143,9 +169,9 @@ def _setup_elliptic_block(n, scratch):
     rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
     mu, dt = scratch[_MU], scratch[_DT]
     a, ec, es, m, mean_motion, back = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M], scratch[_N], scratch[_BACK]
-    ok = scratch[_OK]
+    m_lo, ok = scratch[_M_LO], scratch[_OK]
     for j in range(n):
-        a[j], ec[j], es[j], m[j], mean_motion[j], back[j], eligible = _elliptic_setup(
+        a[j], ec[j], es[j], m[j], m_lo[j], mean_motion[j], back[j], eligible = _elliptic_setup(
             rx[j], ry[j], rz[j], vx[j], vy[j], vz[j], mu[j], dt[j])
         ok[j] = eligible
 
@@ -173,12 +199,12 @@ def _start_elliptic_block(n, scratch):
 @jit(contract=True)
 def _halley_elliptic_block(n, scratch):
     """The better starter by Newton step length and one Halley step from it, kept in [lo, hi] (vectorised)."""
-    a, ec, es, m = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M]
+    a, ec, es, m, m_lo = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M], scratch[_M_LO]
     lo, hi, x, local = scratch[_LO], scratch[_HI], scratch[_X], scratch[_LOCAL]
     for j in range(n):
         markley_j, local_j = x[j], local[j]  # loaded before the selection: a conditional load stops the vectoriser
-        f_m, df_m, d2f_m, _, _ = _elliptic_residual(markley_j, a[j], ec[j], es[j], m[j])
-        f_l, df_l, d2f_l, _, _ = _elliptic_residual(local_j, a[j], ec[j], es[j], m[j])
+        f_m, df_m, d2f_m, _, _, _ = _elliptic_residual(markley_j, a[j], ec[j], es[j], m[j], m_lo[j])
+        f_l, df_l, d2f_l, _, _, _ = _elliptic_residual(local_j, a[j], ec[j], es[j], m[j], m_lo[j])
         local_better = abs(f_l * df_m) < abs(f_m * df_l)  # |Newton step| from local < from Markley's
         start = local_j if local_better else markley_j
         f, df, d2f = (f_l, df_l, d2f_l) if local_better else (f_m, df_m, d2f_m)
@@ -187,18 +213,21 @@ def _halley_elliptic_block(n, scratch):
 
 @jit(contract=True)
 def _newton_elliptic_block(n, scratch):
-    """One Newton step, the certificate, sin x and 1 - cos x at the root and r / a (vectorised)."""
-    a, ec, es, m, x, ok = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M], scratch[_X], scratch[_OK]
-    sin_row, omc_row, r_over_a = scratch[_SIN], scratch[_OMC], scratch[_R_OVER_A]
+    """One Newton step, the certificate, and the trigonometric terms and r / a at the root (vectorised)."""
+    a, ec, es, m, m_lo = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M], scratch[_M_LO]
+    x, ok, r_over_a = scratch[_X], scratch[_OK], scratch[_R_OVER_A]
+    sin_row, x_minus_sin_row, omc_row = scratch[_SIN], scratch[_XMS], scratch[_OMC]
     for j in range(n):
-        f, df, d2f, sin, one_minus_cos = _elliptic_residual(x[j], a[j], ec[j], es[j], m[j])
+        x_j = x[j]
+        f, df, d2f, sin, x_minus_sin, one_minus_cos = _elliptic_residual(x_j, a[j], ec[j], es[j], m[j], m_lo[j])
         step = f / df
-        root = x[j] - step
-        certified = abs(step) <= ELLIPTIC_STEP * root and abs(d2f) * step * step <= ELLIPTIC_ERROR * abs(df) * root
+        x_j = x_j - step
+        certified = abs(step) <= ELLIPTIC_STEP * x_j and abs(d2f) * step * step <= ELLIPTIC_ERROR * abs(df) * x_j
         ok[j] = ok[j] > 0.0 and certified
-        sin, one_minus_cos = sin - step * (1.0 - one_minus_cos), one_minus_cos - step * sin
-        sin_row[j], omc_row[j] = sin, one_minus_cos
-        r_over_a[j] = (a[j] + ec[j] * one_minus_cos) + es[j] * sin
+        sin, x_minus_sin, one_minus_cos = (sin - step * (1.0 - one_minus_cos), x_minus_sin - step * one_minus_cos,
+                                           one_minus_cos - step * sin)
+        x[j], sin_row[j], x_minus_sin_row[j], omc_row[j] = x_j, sin, x_minus_sin, one_minus_cos
+        r_over_a[j] = _elliptic_radius(a[j], ec[j], es[j], x_j, sin, x_minus_sin, one_minus_cos)
 
 
 @jit(contract=True)
@@ -206,11 +235,16 @@ def _elliptic_positions(n, scratch):
     """r = f r0 + g v0 into the output rows (propagate._elliptic_lagrange; vectorised)."""
     rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
     a, es, mean_motion, back = scratch[_A], scratch[_ES], scratch[_N], scratch[_BACK]
-    sin, one_minus_cos = scratch[_SIN], scratch[_OMC]
+    x, sin, x_minus_sin, one_minus_cos = scratch[_X], scratch[_SIN], scratch[_XMS], scratch[_OMC]
     out_x, out_y, out_z = scratch[_E_OUT], scratch[_E_OUT + 1], scratch[_E_OUT + 2]
     for j in range(n):
-        f = 1.0 - one_minus_cos[j] / a[j]
-        g = back[j] * (a[j] * sin[j] + es[j] * one_minus_cos[j]) / mean_motion[j]
+        x_j, a_j, es_j, omc_j = x[j], a[j], es[j], one_minus_cos[j]
+        p1, e1 = _two_product(a_j, x_j)
+        p2, e2 = _two_product(es_j, omc_j)
+        near = (p1 + p2) + ((e1 + e2) - a_j * x_minus_sin[j])
+        far = a_j * sin[j] + es_j * omc_j
+        g = back[j] * (near if x_j < SERIES_LIMIT else far) / mean_motion[j]
+        f = 1.0 - omc_j / a_j
         out_x[j], out_y[j], out_z[j] = f * rx[j] + g * vx[j], f * ry[j] + g * vy[j], f * rz[j] + g * vz[j]
 
 
@@ -334,9 +368,9 @@ def _bracketed_halley(x, lo, hi, f, df, d2f):
     return (new if (np.isfinite(new) and lo <= new <= hi) else 0.5 * (lo + hi)), lo, hi
 
 
-# Rows of the hyperbolic pass (after the input rows; _X, _LO, _HI, _OK and the output rows as the elliptic pass's)
-_GROW_H, _DECAY_H, _P_H, _M_LO_H, _SHM, _CHM, _EXP, _INV = range(28, 36)
-_ROWS = 36
+# Rows of the hyperbolic pass; it shares _A .. _OK, _M_LO, _R_OVER_A, _LOCAL and the output rows with the elliptic pass
+_GROW_H, _DECAY_H, _P_H, _SHM, _CHM, _EXP, _INV = range(30, 37)
+_ROWS = 37
 
 
 @jit
@@ -346,7 +380,7 @@ def _setup_hyperbolic_block(n, scratch):
     rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
     mu, dt = scratch[_MU], scratch[_DT]
     a, ec, es, m, mean_motion, back = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M], scratch[_N], scratch[_BACK]
-    grow, decay, p, m_lo, ok = scratch[_GROW_H], scratch[_DECAY_H], scratch[_P_H], scratch[_M_LO_H], scratch[_OK]
+    grow, decay, p, m_lo, ok = scratch[_GROW_H], scratch[_DECAY_H], scratch[_P_H], scratch[_M_LO], scratch[_OK]
     for j in range(n):
         (a[j], ec[j], es[j], grow[j], decay[j], p[j], m[j], m_lo[j], mean_motion[j], back[j],
          eligible) = _hyperbolic_setup(rx[j], ry[j], rz[j], vx[j], vy[j], vz[j], mu[j], dt[j])
@@ -366,7 +400,7 @@ def _start_hyperbolic_block(n, scratch):
 def _first_halley_hyperbolic_block(n, scratch):
     """The better starter by Newton step length and the first Halley step from it (vectorised)."""
     a, ec, es, grow, decay = scratch[_A], scratch[_EC], scratch[_ES], scratch[_GROW_H], scratch[_DECAY_H]
-    m, m_lo, x, barker, lo, hi = scratch[_M], scratch[_M_LO_H], scratch[_X], scratch[_LOCAL], scratch[_LO], scratch[_HI]
+    m, m_lo, x, barker, lo, hi = scratch[_M], scratch[_M_LO], scratch[_X], scratch[_LOCAL], scratch[_LO], scratch[_HI]
     for j in range(n):
         first_j, barker_j = x[j], barker[j]  # loaded before the selection: a conditional load stops the vectoriser
         f_1, df_1, d2f_1, _, _, _, _ = _hyperbolic_residual(first_j, a[j], ec[j], es[j], grow[j], decay[j], m[j],
@@ -384,7 +418,7 @@ def _first_halley_hyperbolic_block(n, scratch):
 def _halley_hyperbolic_block(n, scratch):
     """One more Halley step (vectorised)."""
     a, ec, es, grow, decay = scratch[_A], scratch[_EC], scratch[_ES], scratch[_GROW_H], scratch[_DECAY_H]
-    m, m_lo, x, lo, hi = scratch[_M], scratch[_M_LO_H], scratch[_X], scratch[_LO], scratch[_HI]
+    m, m_lo, x, lo, hi = scratch[_M], scratch[_M_LO], scratch[_X], scratch[_LO], scratch[_HI]
     for j in range(n):
         f, df, d2f, _, _, _, _ = _hyperbolic_residual(x[j], a[j], ec[j], es[j], grow[j], decay[j], m[j], m_lo[j])
         x[j], lo[j], hi[j] = _bracketed_halley(x[j], lo[j], hi[j], f, df, d2f)
@@ -394,7 +428,7 @@ def _halley_hyperbolic_block(n, scratch):
 def _newton_hyperbolic_block(n, scratch):
     """The Newton step, the certificate, and the terms and r / |a| at the root (vectorised)."""
     a, ec, es, grow, decay = scratch[_A], scratch[_EC], scratch[_ES], scratch[_GROW_H], scratch[_DECAY_H]
-    m, m_lo, x, ok = scratch[_M], scratch[_M_LO_H], scratch[_X], scratch[_OK]
+    m, m_lo, x, ok = scratch[_M], scratch[_M_LO], scratch[_X], scratch[_OK]
     shm_row, chm_row, exp_row, inverse_row, r_over_a = (scratch[_SHM], scratch[_CHM], scratch[_EXP], scratch[_INV],
                                                         scratch[_R_OVER_A])
     for j in range(n):

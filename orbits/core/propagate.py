@@ -61,6 +61,7 @@ from orbits.core import _dd, _fast
 from orbits.core._kepler_shared import (
     COSH_MINUS_ONE,
     MAX_MEAN_ANOMALY,
+    ONE_MINUS_COS,
     SINH_MINUS_X,
     TWO_PI_1,
     TWO_PI_2,
@@ -82,7 +83,7 @@ from orbits.core._roots import halley_in_bracket
 from orbits.core.checks import check_finite
 from orbits.core.elements import check_state
 from orbits.core.errors import DegenerateOrbitError
-from orbits.core.kepler import markley_starter, reduce_two_pi, x_minus_sin
+from orbits.core.kepler import markley_starter, reduce_two_pi, trig_reflected
 from orbits.core.series import horner
 
 
@@ -380,14 +381,15 @@ def _lagrange(chi, r0, sigma0, alpha, grow, decay):
 
 
 def _elliptic_setup(r0, v0, mu, dt):
-    """The elliptic pass's problem, state by state: (A, ec, es, m, n, back, eligible).
+    """The elliptic pass's problem, state by state: (A, ec, es, m, m_lo, n, back, eligible).
 
     A = |r0| / a = 2 - |r0| |v0|**2 / mu, (ec, es) = (e cos E0, e sin E0) = (1 - A, back (r0 . v0) sqrt(1 / (a mu))),
-    n = sqrt(mu / a**3) the mean motion and m = |n dt| reduced modulo 2 pi, in [0, pi]; back = -1 where the
-    reduced n dt is negative (the state then runs forward with -v0, as in the universal passes). A, 1 / a, n
-    and n dt are formed in double-double arithmetic: A loses log2(1 / A) bits to cancellation near periapsis
-    as e -> 1, and n rounded in float64 would be a phase error of 6e-14 after 100 periods. eligible: a bound
-    orbit whose n**2 is clear of the subnormal range and whose n dt is reduced exactly.
+    n = sqrt(mu / a**3) the mean motion and m + m_lo = |n dt| reduced modulo 2 pi, in [0, pi]; back = -1 where the
+    reduced n dt is negative (the state then runs forward with -v0, as in the universal passes). A, 1 / a, n,
+    n dt and es are formed in double-double arithmetic: A loses log2(1 / A) bits to cancellation near periapsis
+    as e -> 1, n rounded in float64 would be a phase error of 6e-14 after 100 periods, and near e = 1 the solve
+    magnifies the rounding of es several times. eligible: a bound orbit whose n**2 is clear of the subnormal
+    range and whose n dt is reduced exactly.
     """
     zero = np.zeros_like(dt)
     with np.errstate(all="ignore"):  # open orbits: NaN mean motion, not eligible
@@ -400,22 +402,47 @@ def _elliptic_setup(r0, v0, mu, dt):
         M = _dd.mul(n, (dt, zero))
         eligible = (alpha[0] > 0) & (n_squared[0] >= SMALLEST_MEAN_MOTION_SQUARED) & (np.abs(M[0]) <= MAX_MEAN_ANOMALY)
         hi, lo = reduce_two_pi(np.where(eligible, M[0], 0.0), np.where(eligible, M[1], 0.0))
-        m = hi + lo
-        back = np.where(m < 0, -1.0, 1.0)
-        es = back * np.sum(r0 * v0, axis=-1) * np.sqrt(alpha[0] / mu)
-    return A[0] + A[1], (1.0 - A[0]) - A[1], es, np.abs(m), n[0] + n[1], back, eligible
+        back = np.where(hi < 0, -1.0, 1.0)
+        es = _dd.mul(_dd.dot(r0, v0), _dd.sqrt(_dd.div(alpha, (mu, zero))))
+        es = back * (es[0] + es[1])
+    return A[0] + A[1], (1.0 - A[0]) - A[1], es, back * hi, back * lo, n[0] + n[1], back, eligible
 
 
-def _elliptic_residual(x, A, ec, es, m):
-    """(F - m, F', F'', sin x, 1 - cos x) of F(x) = A x + ec (x - sin x) + es (1 - cos x) = M(E0 + x) - M(E0),
+def _trig_terms(x):
+    """(sin x, x - sin x, 1 - cos x as hi + lo) for x in [0, pi + 2]: kepler.trig_reflected, with 1 - cos x below
+    SERIES_LIMIT as x**2 / 2 + x**4 Q(x**2) from the exact x**2 (lo: what the rounding of x**2 / 2 drops; 0
+    beyond), as hyperbolic_functions does for cosh x - 1."""
+    sin, x_minus_sin, one_minus_cos = trig_reflected(x)
+    square, square_lo = _dd.two_product(x, x)
+    hi, lo = _dd.two_sum(0.5 * square, 0.5 * square_lo + square * square * horner(ONE_MINUS_COS[:-1], square))
+    small = x < SERIES_LIMIT
+    return sin, x_minus_sin, np.where(small, hi, one_minus_cos), np.where(small, lo, 0.0)
+
+
+def _elliptic_residual(x, A, ec, es, m, m_lo):
+    """(F - m, F', F'', sin x, x - sin x, 1 - cos x) of
+        F(x) = A x + ec (x - sin x) + es (1 - cos x) = M(E0 + x) - M(E0),
     the mean anomaly swept as the eccentric anomaly advances by x (the universal Kepler equation in x =
-    chi / sqrt(a), times n). Free of cancellation: x - sin x from its series below 2, 1 - cos x = 2 sin(x/2)**2.
-    F' = r / a > 0, so the root is unique."""
-    sin, one_minus_cos = np.sin(x), 2.0 * np.sin(0.5 * x) ** 2
-    f = ((A * x - m) + ec * x_minus_sin(x)) + es * one_minus_cos
-    df = (A + ec * one_minus_cos) + es * sin
+    chi / sqrt(a), times n). Free of cancellation in its terms (_trig_terms), and summed with exact products: on
+    the way in to periapsis near e = 1, A x and es (1 - cos x) cancel (as in the hyperbolic pass). F' = r / a > 0,
+    so the root is unique."""
+    sin, x_minus_sin, one_minus_cos, one_minus_cos_lo = _trig_terms(x)
+    p1, e1 = _dd.two_product(A, x)
+    p2, e2 = _dd.two_product(es, one_minus_cos)
+    s, t = _dd.two_sum(p1, p2)
+    s, u = _dd.two_sum(s, -m)
+    f = s + ((t + u) + (((e1 + e2) + es * one_minus_cos_lo) - m_lo) + ec * x_minus_sin)
+    df = _elliptic_radius(A, ec, es, x, sin, x_minus_sin, one_minus_cos)
     d2f = ec * sin + es * (1.0 - one_minus_cos)
-    return f, df, d2f, sin, one_minus_cos
+    return f, df, d2f, sin, x_minus_sin, one_minus_cos
+
+
+def _elliptic_radius(A, ec, es, x, sin, x_minus_sin, one_minus_cos):
+    """r / a = F' = A + ec (1 - cos x) + es sin x, with es sin x = es x - es (x - sin x) and es x exact below
+    SERIES_LIMIT."""
+    p, e = _dd.two_product(es, x)
+    return np.where(x < SERIES_LIMIT, (A + p) + ((e - es * x_minus_sin) + ec * one_minus_cos),
+                    (A + ec * one_minus_cos) + es * sin)
 
 
 def _elliptic_starters(A, ec, es, m):
@@ -438,42 +465,49 @@ def _elliptic_starters(A, ec, es, m):
     return np.clip(markley, lo, hi), np.clip(local, lo, hi), lo, hi
 
 
-def _solve_elliptic(A, ec, es, m):
-    """(sin x, 1 - cos x, certified) at the root x of F(x) = m (_elliptic_residual): the better starter by Newton
-    step length, one Halley step kept in [lo, hi], one Newton step, certified when that step d is below
-    ELLIPTIC_STEP x and its own error |F''| d**2 / (2 F') below ELLIPTIC_ERROR x / 2 (F' and F'' change by less
-    than 1e-3 over the step, so the local estimate holds); sin x and 1 - cos x then follow the Newton step to
-    first order (the second-order terms, of the order of the step squared, are below 2**-52 of them)."""
+def _solve_elliptic(A, ec, es, m, m_lo):
+    """(x, sin x, x - sin x, 1 - cos x, certified) at the root x of F(x) = m + m_lo (_elliptic_residual): the
+    better starter by Newton step length, one Halley step kept in [lo, hi], one Newton step, certified when that
+    step d is below ELLIPTIC_STEP x and its own error |F''| d**2 / (2 F') below ELLIPTIC_ERROR x / 2 (F' and F''
+    change by less than 1e-3 over the step, so the local estimate holds); the trigonometric terms then follow the
+    Newton step to first order (the second-order terms, of the order of the step squared, are below 2**-52 of
+    them)."""
     markley, local, lo, hi = _elliptic_starters(A, ec, es, m)
-    f_m, df_m, d2f_m, _, _ = _elliptic_residual(markley, A, ec, es, m)
-    f_l, df_l, d2f_l, _, _ = _elliptic_residual(local, A, ec, es, m)
+    f_m, df_m, d2f_m, *_ = _elliptic_residual(markley, A, ec, es, m, m_lo)
+    f_l, df_l, d2f_l, *_ = _elliptic_residual(local, A, ec, es, m, m_lo)
     local_better = np.abs(f_l * df_m) < np.abs(f_m * df_l)  # |Newton step| from local < from Markley's
     x = np.where(local_better, local, markley)
     f, df, d2f = (np.where(local_better, a, b) for a, b in ((f_l, f_m), (df_l, df_m), (d2f_l, d2f_m)))
     x = np.clip(x - 2.0 * f * df / (2.0 * df * df - f * d2f), lo, hi)
-    f, df, d2f, sin, one_minus_cos = _elliptic_residual(x, A, ec, es, m)
+    f, df, d2f, sin, x_minus_sin, one_minus_cos = _elliptic_residual(x, A, ec, es, m, m_lo)
     step = f / df
-    x = x - step
-    certified = (np.abs(step) <= ELLIPTIC_STEP * x) & (np.abs(d2f) * step * step <= ELLIPTIC_ERROR * np.abs(df) * x)
-    return sin - step * (1.0 - one_minus_cos), one_minus_cos - step * sin, certified
+    certified = (np.abs(step) <= ELLIPTIC_STEP * (x - step)) & (
+        np.abs(d2f) * step * step <= ELLIPTIC_ERROR * np.abs(df) * (x - step))
+    sin, x_minus_sin, one_minus_cos = (sin - step * (1.0 - one_minus_cos), x_minus_sin - step * one_minus_cos,
+                                       one_minus_cos - step * sin)
+    return x - step, sin, x_minus_sin, one_minus_cos, certified
 
 
-def _elliptic_lagrange(A, ec, es, n, back, sin, one_minus_cos):
-    """(f, g, f', g') of r = f r0 + g v0, v = f' r0 + g' v0 at the root x, with r / a = F'(x) = A + ec (1 - cos x)
-    + es sin x: f = 1 - (1 - cos x) / A, g = back (A sin x + es (1 - cos x)) / n, f' = -back n sin x / (A r / a),
-    g' = 1 - (1 - cos x) / (r / a) (the universal f and g with G1 = sin x sqrt(a), G2 = a (1 - cos x))."""
-    r_over_a = (A + ec * one_minus_cos) + es * sin
-    return (1.0 - one_minus_cos / A, back * (A * sin + es * one_minus_cos) / n, -back * n * sin / (A * r_over_a),
-            1.0 - one_minus_cos / r_over_a)
+def _elliptic_lagrange(A, ec, es, n, back, x, sin, x_minus_sin, one_minus_cos):
+    """(f, g, f', g') of r = f r0 + g v0, v = f' r0 + g' v0 at the root x, with r / a = F'(x) (_elliptic_radius):
+    f = 1 - (1 - cos x) / A, g = back (A sin x + es (1 - cos x)) / n, f' = -back n sin x / (A r / a), g' = 1 -
+    (1 - cos x) / (r / a) (the universal f and g with G1 = sin x sqrt(a), G2 = a (1 - cos x)); below
+    SERIES_LIMIT, A sin x = A x - A (x - sin x) and the products A x and es (1 - cos x) exact, since they cancel
+    near e = 1 on the way in."""
+    r_over_a = _elliptic_radius(A, ec, es, x, sin, x_minus_sin, one_minus_cos)
+    p1, e1 = _dd.two_product(A, x)
+    p2, e2 = _dd.two_product(es, one_minus_cos)
+    g = np.where(x < SERIES_LIMIT, (p1 + p2) + ((e1 + e2) - A * x_minus_sin), A * sin + es * one_minus_cos)
+    return (1.0 - one_minus_cos / A, back * g / n, -back * n * sin / (A * r_over_a), 1.0 - one_minus_cos / r_over_a)
 
 
 def _elliptic_pass(r0, v0, mu, dt):
-    """(r, v, certified): the elliptic pass on every state (flat (n, 3) r0, v0 and (n,) mu, dt); the states it
-    does not certify (open orbits, and any whose solve it cannot vouch for) have meaningless r, v."""
-    A, ec, es, m, n, back, eligible = _elliptic_setup(r0, v0, mu, dt)
+    """(r, v, certified): the elliptic pass on flat (n, 3) r0, v0 and (n,) mu, dt; the states it does not certify
+    (open orbits, and any whose solve it cannot vouch for) have meaningless r, v."""
+    A, ec, es, m, m_lo, n, back, eligible = _elliptic_setup(r0, v0, mu, dt)
     with np.errstate(all="ignore"):
-        sin, one_minus_cos, certified = _solve_elliptic(A, ec, es, m)
-        f, g, f_dot, g_dot = _elliptic_lagrange(A, ec, es, n, back, sin, one_minus_cos)
+        x, sin, x_minus_sin, one_minus_cos, certified = _solve_elliptic(A, ec, es, m, m_lo)
+        f, g, f_dot, g_dot = _elliptic_lagrange(A, ec, es, n, back, x, sin, x_minus_sin, one_minus_cos)
         r = f[:, None] * r0 + g[:, None] * v0
         v = f_dot[:, None] * r0 + g_dot[:, None] * v0
     return r, v, certified & eligible
