@@ -317,13 +317,14 @@ def _state_at(chi, scaled):
 
 @jit
 def _gather_block(index, first, n, r0, v0, mu, dt, scratch):
-    """Copy states index[first .. first + n - 1] into the input rows."""
+    """Copy states index[first .. first + n - 1] into the input rows (row views, one statement each: LLVM
+    vectorises the loop with gathers; with the rows indexed through scratch it ran at 6 ns a state)."""
+    rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
+    mu_row, dt_row, rows = scratch[_MU], scratch[_DT], index[first:first + n]
     for j in range(n):
-        i = index[first + j]
-        for k in range(3):
-            scratch[_RX + k, j] = r0[i, k]
-            scratch[_VX + k, j] = v0[i, k]
-        scratch[_MU, j], scratch[_DT, j] = mu[i], dt[i]
+        i = rows[j]
+        rx[j], ry[j], rz[j], vx[j], vy[j], vz[j] = r0[i, 0], r0[i, 1], r0[i, 2], v0[i, 0], v0[i, 1], v0[i, 2]
+        mu_row[j], dt_row[j] = mu[i], dt[i]
 
 
 @jit

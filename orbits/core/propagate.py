@@ -1,21 +1,33 @@
-"""Two-body propagator: r, v at t0 + dt from r0, v0, for every conic (an elliptic pass, then universal variables).
+"""Two-body propagator: r, v at t0 + dt from r0, v0, for every conic (an elliptic and a hyperbolic pass, then
+universal variables).
 
 Float64 arrays, SI units; r0, v0 of shape (..., 3), mu and dt broadcast against the batch shape.
 
-Method. Every state first goes through the elliptic pass; the states it does not certify (open orbits, and
-any bound one whose solve it cannot vouch for: none of 1e6 random ellipses with e up to 1 - 1e-9 and flights
-from 1e-7 to 1e4 periods) go through the universal passes.
+Method. The states known to be bound (|r0| |v0|**2 <= 2 mu in float64) go through the elliptic pass, the open
+ones through the hyperbolic pass; what neither certifies (an exact parabola, a state on the other side of e = 1
+than float64 said, any solve it cannot vouch for: none of 1e6 random ellipses with e up to 1 - 1e-9 and flights
+from 1e-7 to 1e4 periods, none of the benchmark's open states, 0.04 % of 2e5 random hyperbolas flown up to 1e6
+sqrt(p**3 / mu)) goes through the universal passes.
 
-The elliptic pass solves, for the change x of the eccentric anomaly, the universal Kepler equation written in
-x = chi / sqrt(a) and multiplied by the mean motion n:
+Both passes solve the universal Kepler equation in a scaled anomaly x, multiplied by the mean motion n. Elliptic:
+x = chi / sqrt(a) = E - E0,
     F(x) = A x + ec (x - sin x) + es (1 - cos x) = m,   A = |r0| / a = 1 - ec,  (ec, es) = e (cos E0, sin E0),
-m = n dt reduced modulo 2 pi (time reversal for m < 0, as below). A, 1 / a, n and n dt come from double-double
-arithmetic (A loses log2(1 / A) bits to cancellation near periapsis as e -> 1; a rounded n would be a phase
-error growing with the number of periods), F is free of cancellation (x - sin x from its series below 2) and
-F' = r / a > 0. The starter is the better, by Newton step length, of Markley's (through E0 = atan2(es, ec), for
-long arcs) and the root of the quadratic model A x + es x**2 / 2 = m (for short ones); one Halley step in
-[m - 2 e, m + 2 e], one Newton step, and a certificate on that step and its own error. r and v follow from the
-Lagrange f and g in x (_elliptic_lagrange).
+m = n dt reduced modulo 2 pi; hyperbolic: x = chi sqrt(-alpha) = H - H0,
+    F(x) = A x + ec (sinh x - x) + es (cosh x - 1) = m,   A = |r0| / |a| = ec - 1,  (ec, es) = e (cosh H0, sinh H0),
+m = n dt (time reversal for dt < 0, as below). F' = r / |a| > 0. A, 1 / a, n, n dt and es come from
+double-double arithmetic (A loses log2(1 / A) bits to cancellation near periapsis as e -> 1; a rounded n would
+be a phase error growing with the number of periods; near e = 1 the solve magnifies the rounding of es). The
+terms of F are free of cancellation (series below 2), and F is summed with exact products: on the way in to
+periapsis near e = 1, A x and es (1 - cos x) (or es (cosh x - 1)) cancel, and rounded they cost up to 4x the
+input's own conditioning. Far out on a hyperbola's way in, where ec and -es nearly cancel, F, r and g are
+summed in the anomaly form instead, e exp(+-H0) = ec +- es (the smaller from e**2 = 1 + beta h**2 / mu).
+Elliptic starter: the root of the quadratic model A x + es x**2 / 2 = m where the terms it leaves out are small
+(short arcs), else Markley's (through E0 = atan2(es, ec)); one sixth-order step in [m - 2 e, m + 2 e].
+Hyperbolic starter: the better, by Newton step length, of the logarithmic one (Vallado's, log(2 m / e exp H0))
+and the parabola's with the same h and r0 . v0 (Barker's equation); HYPERBOLIC_STEPS sixth-order steps in
+[0, m / (e - 1)]. Then one Newton step and a certificate on that step and its own error; r and v follow from
+the Lagrange f and g built from the trigonometric or hyperbolic terms of that last evaluation, carried through
+the Newton step to first order (_elliptic_lagrange, _hyperbolic_lagrange).
 
 The universal passes (Goodyear 1965, in the G-function form of Stiefel & Scheifele): the state is scaled to
 |r0| = 1, mu = 1 (which keeps 1e-30 m and 1e30 m orbits in range), elliptic times are reduced
@@ -62,6 +74,8 @@ from orbits.core._kepler_shared import (
     COSH_MINUS_ONE,
     MAX_MEAN_ANOMALY,
     ONE_MINUS_COS,
+    PI_1,
+    PI_2,
     SINH_MINUS_X,
     TWO_PI_1,
     TWO_PI_2,
@@ -76,6 +90,7 @@ from orbits.core._propagate_shared import (
     ELLIPTIC_STEP,
     FIXED_STEPS,
     HYPERBOLIC_STEPS,
+    LOCAL_STARTER_STEP,
     SERIES_LIMIT,
     SMALLEST_MEAN_MOTION_SQUARED,
 )
@@ -83,7 +98,7 @@ from orbits.core._roots import halley_in_bracket
 from orbits.core.checks import check_finite
 from orbits.core.elements import check_state
 from orbits.core.errors import DegenerateOrbitError
-from orbits.core.kepler import markley_starter, reduce_two_pi, trig_reflected
+from orbits.core.kepler import markley_starter, reduce_two_pi, sixth_order_step
 from orbits.core.series import horner
 
 
@@ -308,14 +323,15 @@ def _reduce_by_periods(r0, v0, mu, dt):
 def propagate(r0: ArrayLike, v0: ArrayLike, mu: ArrayLike, dt: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     """State (r [m], v [m/s]) at t0 + dt [s] on the Kepler orbit through r0 [m], v0 [m/s] about mu [m**3/s**2].
 
-    Accuracy against an mpmath reference, the same bounds on the NumPy and the compiled path
-    (tests/core/test_propagate.py, tests/core/test_propagate_long_flights.py): positions within 5e-15 relative
-    over +-1000 periods for e up to 1 - 1e-6 (measured 7.1e-16) and within 1e-14 for |1 - e| down to 1e-12
-    (measured 1.1e-15); velocities within 40 eps / sqrt(1 - e) (measured 4.2 eps / sqrt(1 - e)); near-parabolic
-    hyperbolas and ellipses (|1 - e| from 1e-7 to 1e-2) flown +-1e9 s within 1e-14 (measured 8.4e-16); flybys
-    through periapsis within 2e-14 (measured 3.8e-15), hyperbolas started near their asymptote at their
-    conditioning (8.2e-15). Batches from
-    orbits.core._fast.AUTO_MIN_BATCH states on run the compiled port of this algorithm (ORBITS_JIT decides).
+    Accuracy against an mpmath reference on broad random sets, 2000 states per conic class, the same bounds on the
+    NumPy and the compiled path (tests/stability/test_propagate_sweep.py): positions within 6e-15 of |r| on
+    ellipses (e up to 0.9, and 1 - e from 1e-6 to 0.1) over +-1000 periods, 2.1e-14 on near-parabolic orbits
+    (|1 - e| from 1e-12 to 1e-6, either side) and 3.4e-15 on hyperbolas (e - 1 up to 10), median 1e-16; in every
+    class within 4.6 times the conditioning (the change of the exact state when each input moves by 2**-53 of
+    itself) plus 2**-53. Over 1000 periods at e = 0.99 the conditioning is along the track and reaches 1.2e-12
+    of |r| (worst measured 4.5e-13); velocities near apoapsis at 1 - e = 1e-6 are as good as theirs (1.1e-11).
+    Batches from orbits.core._fast.AUTO_MIN_BATCH states on run the compiled port of this algorithm (ORBITS_JIT
+    decides).
     """
     if _fast.use(_batch_size(r0, v0, mu, dt)):
         result = _propagate_compiled(r0, v0, mu, dt)
@@ -409,14 +425,18 @@ def _elliptic_setup(r0, v0, mu, dt):
 
 
 def _trig_terms(x):
-    """(sin x, x - sin x, 1 - cos x as hi + lo) for x in [0, pi + 2]: kepler.trig_reflected, with 1 - cos x below
-    SERIES_LIMIT as x**2 / 2 + x**4 Q(x**2) from the exact x**2 (lo: what the rounding of x**2 / 2 drops; 0
-    beyond), as hyperbolic_functions does for cosh x - 1."""
-    sin, x_minus_sin, one_minus_cos = trig_reflected(x)
-    square, square_lo = _dd.two_product(x, x)
+    """(sin x, x - sin x, 1 - cos x as hi + lo) for x in [0, pi + 2], free of cancellation, from one evaluation of
+    two series in z = x below SERIES_LIMIT, else in z = pi - x (|z| < 2): z - sin z = z**3 P(z**2) and 1 - cos z =
+    z**2 / 2 + z**4 Q(z**2) from the exact z**2, so that lo carries what the rounding of z**2 / 2 drops (as
+    hyperbolic_functions does for cosh x - 1). Reflected: sin x = sin z, 1 - cos x = 2 - (1 - cos z) (lo = 0)."""
+    x = np.asarray(x, dtype=float)
+    reflect = x >= SERIES_LIMIT
+    z = np.where(reflect, (PI_1 - x) + PI_2, x)
+    square, square_lo = _dd.two_product(z, z)
+    z_minus_sin = square * z * horner(X_MINUS_SIN, square)
     hi, lo = _dd.two_sum(0.5 * square, 0.5 * square_lo + square * square * horner(ONE_MINUS_COS[:-1], square))
-    small = x < SERIES_LIMIT
-    return sin, x_minus_sin, np.where(small, hi, one_minus_cos), np.where(small, lo, 0.0)
+    sin = z - z_minus_sin
+    return sin, np.where(reflect, x - sin, z_minus_sin), np.where(reflect, 2.0 - hi, hi), np.where(reflect, 0.0, lo)
 
 
 def _elliptic_residual(x, A, ec, es, m, m_lo):
@@ -445,15 +465,17 @@ def _elliptic_radius(A, ec, es, x, sin, x_minus_sin, one_minus_cos):
                     (A + ec * one_minus_cos) + es * sin)
 
 
-def _elliptic_starters(A, ec, es, m):
-    """(Markley's starter, the local starter, lo, hi) for the root x of F(x) = m in [lo, hi] = [m - 2 e, m + 2 e]
-    (|F(x) - x| <= 2 e), lo >= 0.
+def _elliptic_starter(A, ec, es, m):
+    """(starter, lo, hi) for the root x of F(x) = m in [lo, hi] = [m - 2 e, m + 2 e] (|F(x) - x| <= 2 e), lo >= 0:
+    the local starter where its Newton step, estimated from the cubic and quartic terms it leaves out, is below
+    LOCAL_STARTER_STEP, else Markley's.
 
     Markley's: E1 = kepler.markley_starter(M0 + m, e) - E0, with E0 = atan2(es, ec) and M0 = E0 - es; within
-    about 1e-3 rad, so it fails short flights (x below 1e-3). The local one: the root of the quadratic model
-    A x + es x**2 / 2 = m (2 m / A where it has none), good while x is small. The better of the two comes from
-    the length of the Newton step (_solve_elliptic): certified on 100.000 % of 1.2e6 random (e, E0, m) with e
-    up to 1 - 1e-12 and m from 1e-8 to pi, against 55-100 % from Markley's alone."""
+    about 1e-3 rad, so it fails short flights (x below 1e-3). The local one: the root x_l of the quadratic model
+    A x + es x**2 / 2 = m (2 m / A where it has none), good while x is small; F(x_l) - m = ec x_l**3 / 6 -
+    es x_l**4 / 24 + ... over F'(x_l) ~ A + es x_l + ec x_l**2 / 2 estimates its Newton step. With the sixth-order
+    step that follows (_solve_elliptic), this certified every one of 2e5 random (e, E0, m) with e up to 1 - 1e-9
+    and flights from 1e-7 to 1e4 periods for thresholds from 1e-6 to 1e-4 (97 left at 1e-3)."""
     e = np.sqrt(ec * ec + es * es)
     E0 = np.arctan2(es, ec)
     M1 = (E0 - es) + m
@@ -461,24 +483,23 @@ def _elliptic_starters(A, ec, es, m):
     M1 = M1 - turns * TWO_PI_1
     markley = np.copysign(markley_starter(np.abs(M1), np.minimum(e, 1.0)), M1) + turns * TWO_PI_1 - E0
     local = 2.0 * m / (A + np.sqrt(np.maximum(A * A + 2.0 * es * m, 0.0)))
+    square = local * local
+    left_out = np.abs(square * local * (ec / 6.0 - es * local / 24.0))
+    local_good = left_out < LOCAL_STARTER_STEP * np.abs(A + es * local + 0.5 * ec * square)
     lo, hi = np.maximum(m - BRACKET_WIDTH * e, 0.0), m + BRACKET_WIDTH * e
-    return np.clip(markley, lo, hi), np.clip(local, lo, hi), lo, hi
+    return np.clip(np.where(local_good, local, markley), lo, hi), lo, hi
 
 
 def _solve_elliptic(A, ec, es, m, m_lo):
-    """(x, sin x, x - sin x, 1 - cos x, certified) at the root x of F(x) = m + m_lo (_elliptic_residual): the
-    better starter by Newton step length, one Halley step kept in [lo, hi], one Newton step, certified when that
-    step d is below ELLIPTIC_STEP x and its own error |F''| d**2 / (2 F') below ELLIPTIC_ERROR x / 2 (F' and F''
-    change by less than 1e-3 over the step, so the local estimate holds); the trigonometric terms then follow the
-    Newton step to first order (the second-order terms, of the order of the step squared, are below 2**-52 of
-    them)."""
-    markley, local, lo, hi = _elliptic_starters(A, ec, es, m)
-    f_m, df_m, d2f_m, *_ = _elliptic_residual(markley, A, ec, es, m, m_lo)
-    f_l, df_l, d2f_l, *_ = _elliptic_residual(local, A, ec, es, m, m_lo)
-    local_better = np.abs(f_l * df_m) < np.abs(f_m * df_l)  # |Newton step| from local < from Markley's
-    x = np.where(local_better, local, markley)
-    f, df, d2f = (np.where(local_better, a, b) for a, b in ((f_l, f_m), (df_l, df_m), (d2f_l, d2f_m)))
-    x = np.clip(x - 2.0 * f * df / (2.0 * df * df - f * d2f), lo, hi)
+    """(x, sin x, x - sin x, 1 - cos x, certified) at the root x of F(x) = m + m_lo (_elliptic_residual): one
+    sixth-order step from the starter (kepler.sixth_order_step; the third derivative of F is 1 - F', the fourth
+    and fifth -F'' and F' - 1) kept in [lo, hi], one Newton step, certified when that step d is below
+    ELLIPTIC_STEP x and its own error |F''| d**2 / (2 F') below ELLIPTIC_ERROR x / 2 (F' and F'' change by less
+    than 1e-3 over the step, so the local estimate holds); the trigonometric terms then follow the Newton step to
+    first order (the second-order terms, of the order of the step squared, are below 2**-52 of them)."""
+    x, lo, hi = _elliptic_starter(A, ec, es, m)
+    f, df, d2f, *_ = _elliptic_residual(x, A, ec, es, m, m_lo)
+    x = np.clip(x + sixth_order_step(f, df, d2f, 1.0 - df, -1.0)[0], lo, hi)
     f, df, d2f, sin, x_minus_sin, one_minus_cos = _elliptic_residual(x, A, ec, es, m, m_lo)
     step = f / df
     certified = (np.abs(step) <= ELLIPTIC_STEP * (x - step)) & (
@@ -517,11 +538,10 @@ def _elliptic_pass(r0, v0, mu, dt):
 
 
 def _hyperbolic_setup(r0, v0, mu, dt):
-    """The hyperbolic pass's problem, state by state: (A, ec, es, grow, decay, P, m, m_lo, n, back, eligible).
+    """The hyperbolic pass's problem, state by state: (A, ec, es, m, m_lo, n, back, eligible).
 
     With beta = -alpha = 1 / |a| and H0 the hyperbolic anomaly at t0: A = beta |r0| = |r0| |v0|**2 / mu - 2,
-    (ec, es) = (e cosh H0, e sinh H0) = (1 + A, back (r0 . v0) sqrt(beta / mu)), (grow, decay) = e exp(+-H0) =
-    ec +- es (the one that cancels from grow decay = e**2), P = e**2 - 1 = beta h**2 / mu, the mean motion
+    (ec, es) = (e cosh H0, e sinh H0) = (1 + A, back (r0 . v0) sqrt(beta / mu)), the mean motion
     n = sqrt(mu beta**3) and m + m_lo = |n dt| (back = -1 where dt < 0: the state then runs forward with -v0).
     A, beta, n and n dt are formed in double-double arithmetic (A cancels near e = 1). eligible: an open orbit
     whose n**2 is clear of the subnormal range (not an exact parabola) and whose n dt is finite.
@@ -538,14 +558,19 @@ def _hyperbolic_setup(r0, v0, mu, dt):
         eligible = (beta[0] > 0) & (n_squared[0] >= SMALLEST_MEAN_MOTION_SQUARED) & np.isfinite(M[0])
         back = np.where(M[0] < 0, -1.0, 1.0)
         es = _dd.mul(_dd.dot(r0, v0), _dd.sqrt(_dd.div(beta, (mu, zero))))
-        es = back * (es[0] + es[1])
         ec = (1.0 + A[0]) + A[1]
+    return A[0] + A[1], ec, back * (es[0] + es[1]), back * M[0], back * M[1], n[0] + n[1], back, eligible
+
+
+def _hyperbolic_exponentials(r0, v0, mu, A, ec, es):
+    """(grow, decay, P): e exp(+-H0) = ec +- es, the one that cancels (decay on the way out, grow on the way in)
+    from grow decay = e**2 = 1 + P, P = e**2 - 1 = beta h**2 / mu, beta = A / |r0|."""
+    with np.errstate(all="ignore"):
         h = np.cross(r0, v0)
-        P = beta[0] * np.sum(h * h, axis=-1) / mu
+        P = A / np.sqrt(np.sum(r0 * r0, axis=-1)) * np.sum(h * h, axis=-1) / mu
         larger = ec + np.abs(es)
         smaller = (1.0 + P) / larger
-        grow, decay = np.where(es < 0, smaller, larger), np.where(es < 0, larger, smaller)
-    return A[0] + A[1], ec, es, grow, decay, P, back * M[0], back * M[1], n[0] + n[1], back, eligible
+    return np.where(es < 0, smaller, larger), np.where(es < 0, larger, smaller), P
 
 
 def hyperbolic_functions(x: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -626,8 +651,11 @@ def _hyperbolic_starters(A, es, grow, P, m):
 
 def _solve_hyperbolic(A, ec, es, grow, decay, P, m, m_lo):
     """(x, the terms at x, r / |a| at x, certified): the better starter by Newton step length, HYPERBOLIC_STEPS
-    Halley steps kept in [lo, hi] (bisection when a step leaves it), one Newton step, certified as the elliptic
-    pass's (ELLIPTIC_STEP, ELLIPTIC_ERROR); the terms then follow the Newton step to first order."""
+    sixth-order steps (kepler.sixth_order_step; the third derivative of F is F' + 1, the fourth and fifth F'' and
+    F' + 1) kept in [lo, hi] (bisection when a step leaves it), one Newton step, certified as the elliptic pass's
+    (ELLIPTIC_STEP, ELLIPTIC_ERROR); the terms then follow the Newton step to first order. Two sixth-order steps
+    leave none of the benchmark's 99798 open states and 0.1 % of 1e5 random hyperbolas (e - 1 from 1e-6 to 10,
+    flights to 1e4 sqrt(p**3 / mu)) uncertified (three Halley steps: none and 0.04 %, at one more evaluation)."""
     coefficients = (A, ec, es, grow, decay, m, m_lo)
     first, barker, hi = _hyperbolic_starters(A, es, grow, P, m)
     f_1, df_1, d2f_1, _ = _hyperbolic_residual(first, *coefficients)
@@ -642,7 +670,7 @@ def _solve_hyperbolic(A, ec, es, grow, decay, P, m, m_lo):
             f, df, d2f, _ = _hyperbolic_residual(x, *coefficients)
         lo, hi = np.where(f < 0, x, lo), np.where(f > 0, x, hi)
         with np.errstate(all="ignore"):
-            new = x - 2.0 * f * df / (2.0 * df * df - f * d2f)
+            new = x + sixth_order_step(f, df, d2f, df + 1.0, 1.0)[0]
         x = np.where(np.isfinite(new) & (lo <= new) & (new <= hi), new, 0.5 * (lo + hi))
     f, df, d2f, (shm, chm, exp, inverse) = _hyperbolic_residual(x, *coefficients)
     with np.errstate(all="ignore"):
@@ -675,7 +703,8 @@ def _hyperbolic_lagrange(A, es, grow, decay, m, n, back, x, terms, r_over_a):
 def _hyperbolic_pass(r0, v0, mu, dt):
     """(r, v, certified): the hyperbolic pass on flat (n, 3) r0, v0 and (n,) mu, dt of open orbits; the states
     it does not certify (exact parabolas, and any whose solve it cannot vouch for) have meaningless r, v."""
-    A, ec, es, grow, decay, P, m, m_lo, n, back, eligible = _hyperbolic_setup(r0, v0, mu, dt)
+    A, ec, es, m, m_lo, n, back, eligible = _hyperbolic_setup(r0, v0, mu, dt)
+    grow, decay, P = _hyperbolic_exponentials(r0, v0, mu, A, ec, es)
     with np.errstate(all="ignore"):
         x, terms, r_over_a, certified = _solve_hyperbolic(A, ec, es, grow, decay, P, m, m_lo)
         f, g, f_dot, g_dot = _hyperbolic_lagrange(A, es, grow, decay, m, n, back, x, terms, r_over_a)
@@ -685,7 +714,8 @@ def _hyperbolic_pass(r0, v0, mu, dt):
 
 
 def _propagate_numpy(r0, v0, mu, dt):
-    """propagate in NumPy: the elliptic pass on every state, the universal passes on the rest."""
+    """propagate in NumPy: the elliptic pass on the bound states, the hyperbolic pass on the open ones, the
+    universal passes on what they leave."""
     r0, v0, mu = check_state(r0, v0, mu)
     dt = np.asarray(dt, dtype=float)
     check_finite(dt, "time step dt", "s")
