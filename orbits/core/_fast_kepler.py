@@ -144,9 +144,11 @@ def _residual(kind, x, a, b, c, d):
     if kind == _HYPERBOLIC_SERIES:  # a = M, c = e, d = e - 1
         sinh, sinh_minus_x, cosh_minus_one = _hyperbolic_trig(x)
         return (d * x - a) + c * sinh_minus_x, d + c * cosh_minus_one, c * sinh
-    q = math.exp(-2.0 * x)  # log form: a = M, b = log(e / 2)
+    q = math.exp(-2.0 * x)  # log form: a = M, b = e / 2
     mh = a + x
-    f = (x + b + math.log1p(-q)) - math.log(mh)
+    ratio = mh / b
+    log_ratio = math.log(ratio) if ratio < np.inf else math.log(mh) - math.log(b)
+    f = (x + math.log1p(-q)) - log_ratio
     return f, 1.0 + 2.0 * q / (1.0 - q) - 1.0 / mh, -4.0 * q / (1.0 - q) ** 2 + (1.0 / mh) ** 2
 
 
@@ -281,7 +283,7 @@ def _hyperbolic_one(M, e):
     lower = math.asinh(M / e)
     upper_log = lower + math.log(e) - math.log(em1)
     if lower > LOG_FORM_LIMIT:
-        return _halley(_HYPERBOLIC_LOG, lower, lower, upper_log, M, math.log(0.5 * e), e, em1)
+        return _halley(_HYPERBOLIC_LOG, lower, lower, upper_log, M, 0.5 * e, e, em1)
     hi = max(min(min(_cubic_root(em1, e / 6.0, M), M / em1), upper_log), lower)
     start = lower if lower > 3.0 else hi
     return _halley(_HYPERBOLIC_SERIES, start, lower, hi, M, 0.0, e, em1)

@@ -277,7 +277,7 @@ def hyperbolic_anomaly(M: ArrayLike, e: ArrayLike) -> float | np.ndarray:
 
     Odd in M exactly: H(-M) == -H(M). Accuracy: within 4 ulp of the exact root for 1 < e <= 1e12 and
     |M| <= 1e300 (tests/core/test_kepler.py). For H > 20 the equation is solved in the overflow-free
-    form H + log(e/2) + log1p(-exp(-2H)) = log(M + H).
+    form H + log1p(-exp(-2H)) = log((M + H) / (e / 2)).
     """
     M, e = np.broadcast_arrays(np.asarray(M, dtype=float), np.asarray(e, dtype=float))
     if _fast.use(M.size):
@@ -360,15 +360,20 @@ def _solve_hyperbolic_series_form(M, e, e_minus_1, lower):
 
 
 def _solve_hyperbolic_log_form(M, e, e_minus_1, lower):
-    """Root of H + log(e/2) + log1p(-exp(-2H)) - log(M + H) = 0 for H > 20 (no overflow)."""
+    """Root of H + log1p(-exp(-2H)) - log((M + H) / (e / 2)) = 0 for H > 20 (no overflow). One logarithm of the
+    ratio, not log(M + H) - log(e / 2): each of those rounds to half an ulp of itself, and log(M + H) exceeds H
+    (2.17 ulp of H at M = 1.04e15, e = 2.51e6 that way); log(M + H) - log(e / 2) only where the ratio overflows."""
     lo = lower.copy()
     hi = lower + np.log(e) - np.log(e_minus_1)
-    log_half_e = np.log(0.5 * e)
+    half_e = 0.5 * e
 
     def residual(x, idx):
         q = np.exp(-2.0 * x)
         mh = M[idx] + x
-        f = (x + log_half_e[idx] + np.log1p(-q)) - np.log(mh)
+        with np.errstate(over="ignore"):
+            ratio = mh / half_e[idx]
+            log_ratio = np.where(np.isfinite(ratio), np.log(ratio), np.log(mh) - np.log(half_e[idx]))
+        f = (x + np.log1p(-q)) - log_ratio
         df = 1.0 + 2.0 * q / (1.0 - q) - 1.0 / mh
         d2f = -4.0 * q / (1.0 - q) ** 2 + (1.0 / mh) ** 2
         return f, df, d2f

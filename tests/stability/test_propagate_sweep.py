@@ -41,14 +41,14 @@ CLASSES = {
 #: Worst measured at full size (2000 states a class), per class and path: (|dr| / |r|, |dv| / |v|, |dr| / |r| over its
 #: conditioning + eps, |dv| / |v| over its conditioning + eps); the bounds are 10x these. The large |dv| / |v| of the
 #: high-e class is conditioning (near apoapsis at 1 - e = 1e-6 the speed is 5e-7 of its periapsis value), as is
-#: the 4.5e-13 in position over 1000 periods at e = 0.99 (0.36 of its conditioning). Median |dr| / |r|: 0.9-1.5e-16.
+#: the 4.5e-13 in position over 1000 periods at e = 0.99 (0.29 of its conditioning). Median |dr| / |r|: 0.9-1.5e-16.
 MEASURED = {
-    "elliptic": {"compiled": (1.9e-15, 2.1e-15, 1, 1.1), "numpy": (2e-15, 2.4e-15, 1, 1.7)},
-    "high-e elliptic": {"compiled": (5.8e-15, 1.1e-11, 0.011, 0.012), "numpy": (4.7e-15, 1.1e-11, 0.012, 0.0046)},
-    "e = 0.99": {"compiled": (2e-14, 3.8e-14, 0.28, 0.16), "numpy": (4.5e-13, 2.3e-13, 0.36, 0.15)},
-    "near-parabolic elliptic": {"compiled": (1.1e-14, 1.1e-14, 3.9, 3.8), "numpy": (2.1e-14, 1.1e-14, 4.6, 7.3)},
-    "near-parabolic hyperbolic": {"compiled": (2.7e-15, 9.1e-15, 3.9, 3.6), "numpy": (6.3e-15, 9.2e-15, 4, 3)},
-    "hyperbolic": {"compiled": (3.4e-15, 6.9e-15, 3.4, 11), "numpy": (2.5e-15, 6.9e-15, 3.9, 4.4)},
+    "elliptic": {"compiled": (1.9e-15, 2.5e-15, 1, 1.1), "numpy": (2.2e-15, 2.5e-15, 1, 1.3)},
+    "high-e elliptic": {"compiled": (5.2e-15, 1.1e-11, 0.011, 0.0049), "numpy": (4.7e-15, 1.1e-11, 0.011, 0.0091)},
+    "e = 0.99": {"compiled": (2e-14, 3.8e-14, 0.29, 0.16), "numpy": (4.5e-13, 2.3e-13, 0.29, 0.15)},
+    "near-parabolic elliptic": {"compiled": (4.4e-15, 1.1e-14, 5.3, 3.1), "numpy": (3.8e-15, 1.1e-14, 4.6, 7.3)},
+    "near-parabolic hyperbolic": {"compiled": (4.3e-15, 9.1e-15, 3.9, 3.6), "numpy": (3.4e-15, 9.2e-15, 4, 3)},
+    "hyperbolic": {"compiled": (2.7e-15, 6.9e-15, 4.2, 11), "numpy": (2.7e-15, 6.9e-15, 4.2, 4.5)},
 }
 
 
