@@ -20,6 +20,7 @@ SUMMARY = {
     "binary": "A binary: orbits about the barycentre, K, mass function.",
     "flyby": "Closest approach and deflection of a hyperbolic flyby.",
     "lagrange": "Lagrange points, Jacobi constants and their stability.",
+    "periodic": "Halo, Lyapunov, DRO and NRHO orbits, and their families.",
     "ring": "A ring of equal masses: period, stability, break-up.",
     "rocket": "Delta-v and burn times of a rocket, one stage or several.",
     "where": "Where a planet is at a date: distance, elongation, RA, Dec.",
@@ -52,6 +53,7 @@ SUMMARY = {
     "bench": "Benchmarks: speed and worst error against the peers.",
     "bench kepler": "Kepler solvers against heyoka, rebound and Newton.",
     "bench propagate": "Two-body propagation against heyoka's lagrange_prop.",
+    "bench periodic": "Periodic orbits: one halo and a family, corrections counted.",
     "bench api": "The unit-aware API's cost over the float64 core.",
     "bench cli": "Command-line cold start in fresh processes.",
     "bench validate": "Where the time of orbits validate goes.",
@@ -98,6 +100,12 @@ EXAMPLES = {
         "orbits lagrange Earth Moon",
         "orbits lagrange Sun Earth --points L1,L2 --format json",
         'orbits lagrange "1 solMass" "0.1 solMass" --r "1 AU" --plot lagrange.png',
+    ],
+    "periodic": [
+        'orbits periodic Earth Moon --family halo --point L2 --az "20000 km"',
+        "orbits periodic Earth Moon --family nrho --resonance 9:2",
+        'orbits periodic Sun Earth --family lyapunov --point L1 --ax "200000 km"',
+        "orbits periodic Earth Moon --family nrho --resonance 9:2 --members 12",
     ],
     "ring": [
         'orbits ring 7 --m "1e20 kg" --r "1e5 km" --central-mass Earth',
@@ -185,34 +193,45 @@ EXAMPLES = {
     "perturb rates": [
         'orbits perturb rates Earth --altitude "400 km" --inc 51.64',
         'orbits perturb rates Mars --a "9378 km" --inc 1.1 --format json',
+        'orbits perturb rates --a "26554 km" --e 0.74 --inc 63.43 --argp 270 \\\n'
+        "    --revolutions 10 --plot molniya.png  # a Molniya orbit's node and periapsis",
     ],
     "perturb sun-synchronous": [
-        'orbits perturb sun-synchronous --altitude "700 km"',
+        'orbits perturb sun-synchronous --altitude "700 km"  # 98.19 deg',
         "orbits perturb sun-synchronous --inc 99",
+        'orbits perturb sun-synchronous --altitude "700 km" --revolutions 15 \\\n'
+        "    --plot sun-synchronous.png",
     ],
     "perturb frozen": [
         'orbits perturb frozen --altitude "700 km" --inc 98.19',
         'orbits perturb frozen --altitude "1336 km" --inc 66',
     ],
     "perturb repeat": [
-        "orbits perturb repeat --revolutions 127 --days 10 --inc 66",
+        "orbits perturb repeat --revolutions 127 --days 10 --inc 66.04  # TOPEX/Jason",
         "orbits perturb repeat --revolutions 15 --days 1 --inc 98",
     ],
     "perturb decay": [
         'orbits perturb decay --altitude "280 km" --ballistic "0.022 m2/kg"',
-        'orbits perturb decay --altitude "400 km" --ballistic "0.005 m2/kg"',
+        'orbits perturb decay --altitude "400 km" --ballistic "0.005 m2/kg" --plot decay.png',
+        'orbits perturb decay Mars --altitude "200 km" --ballistic "0.01 m2/kg" \\\n'
+        '    --density "0.020 kg/m3" --scale-height "11.1 km" --base-altitude "0 km" \\\n'
+        "    --plot mars.png  # ends where it sinks H a revolution",
     ],
     "perturb kozai": [
         'orbits perturb kozai --m0 Sun --m3 Jupiter --a "1 AU" --a-out "5.2 AU" --inc 65',
         'orbits perturb kozai --m0 Earth --m3 Sun --a "50000 km" --a-out "1 AU" --inc 80',
     ],
     "perturb relativity": [
-        "orbits perturb relativity Mercury",
+        "orbits perturb relativity Mercury  # 42.98 arcsec per century",
         "orbits perturb relativity Earth --format json",
     ],
     "bench kepler": [
         "orbits bench kepler --easy 10000 --hard 1000 --hyperbolic 1000 --reference 100",
         "orbits bench kepler --easy 100000 --repeats 5 --output kepler.json",
+    ],
+    "bench periodic": [
+        "orbits bench periodic --members 10 --repeats 1 --no-numpy",
+        "orbits bench periodic --members 20 --repeats 1 --format json",
     ],
     "bench propagate": [
         "orbits bench propagate --states 10000 --reference 50",

@@ -203,12 +203,13 @@ class Projectile(display.Displayed):
 
     def __repr__(self) -> str:
         """E.g. "Projectile(v = 20 m / s, angle = 45 deg, h = 0 m, no drag, range = 40.78876 m)"."""
-        drag = {"none": "no drag", "linear": "linear drag b = " + display.values_text(self.parameter, 6) + " 1 / s",
-                "quadratic": "quadratic drag v_t = " + display.summary(self.terminal_speed, unit=units.M_PER_S)}
+        drag = {"none": lambda: "no drag",
+                "linear": lambda: "linear drag b = " + display.values_text(self.parameter, 6) + " 1 / s",
+                "quadratic": lambda: "quadratic drag v_t = " + display.summary(self.terminal_speed, unit=units.M_PER_S)}
         return display.one_line("Projectile", "v = " + display.summary(self.speed << units.M_PER_S,
                                                                           unit=units.M_PER_S),
                                 "angle = " + display.summary(self.angle << units.RAD),
-                                "h = " + display.summary(self.height << units.M, unit=u.m), drag[self.drag],
+                                "h = " + display.summary(self.height << units.M, unit=u.m), drag[self.drag](),
                                 "range = " + display.summary(self.range, unit=u.m))
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:

@@ -80,7 +80,7 @@ CORE_MODULES = [
     "anomalies", "binary", "checks", "elements", "errors", "escape", "flyby", "friedmann", "kepler", "lagrange",
     "propagate", "quadrature", "rings", "series", "sphere", "twobody", "_dd", "_roots", "frames", "rocket",
     "manoeuvres", "assist", "collisions", "rotation", "projectile", "oscillations",
-    "lambert", "transition",
+    "lambert", "transition", "cr3bp", "dop853", "libration", "shooting", "continuation", "families",
 ]
 
 
@@ -156,6 +156,7 @@ runs = [
     ["binary", "--m1", "Earth", "--m2", "Moon", "--a", "384399 km", "--plot", os.path.join(out, "b.png")],
     ["flyby", "--primary", "Earth", "--v-inf", "1 km/s", "--b", "10000 km", "--plot", os.path.join(out, "f.png")],
     ["lagrange", "Earth", "Moon"],
+    ["periodic", "Earth", "Moon", "--family", "halo", "--point", "L2", "--az", "5000 km"],
     ["ring", "3", "--m", "1 kg", "--r", "1 m"],
     ["escape", "cosmic"],
     ["where", "Mars", "--epoch", "2026-11-25", "--plot", os.path.join(out, "w.png")],
@@ -173,6 +174,9 @@ runs = [
     ["collide", "--m1", "2 kg", "--v1", "3 m/s", "--m2", "1 kg", "--v2", "0 m/s", "--plot", os.path.join(out, "k.png")],
     ["projectile", "--speed", "20 m/s", "--angle", "45", "--drag", "quadratic", "--terminal-speed", "30 m/s"],
     ["pendulum", "--length", "1 m", "--amplitude", "170 deg", "--plot", os.path.join(out, "p.png")],
+    ["perturb", "rates", "--altitude", "400 km", "--inc", "51.64", "--revolutions", "1", "--plot",
+     os.path.join(out, "j2.png")],
+    ["perturb", "decay", "--altitude", "280 km", "--ballistic", "0.022 m2/kg", "--plot", os.path.join(out, "d.png")],
 ]
 for args in runs:
     result = CliRunner().invoke(app, args)

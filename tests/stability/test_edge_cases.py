@@ -1,5 +1,5 @@
-"""Every applicable row of shared/EDGE_CASES.md as one parametrised case: the exact value, or the exception
-type and a fragment of its message. Row numbers follow that file."""
+"""Every row of the table of hard corners beside this file (EDGE_CASES.md) as parametrised cases: the exact value, or
+the exception type and a fragment of its message. Row numbers follow the table."""
 
 import math
 
@@ -482,3 +482,18 @@ def test_row42_extreme_scales(scale, record):
     worst = max(relative(r, r_ref), relative(v, v_ref))
     record("extreme length scales (2**-100 m .. 2**100 m) vs mpmath", 1, worst, "relative")
     assert worst <= 7e-15
+
+
+def test_the_table_and_the_cases_agree():
+    """Every row of EDGE_CASES.md is checked here: a row marked "edge" by ROWS cases of its number, any other by the
+    test it names; and every number in ROWS is a row of the table."""
+    import pathlib
+    import re
+
+    table = (pathlib.Path(__file__).with_name("EDGE_CASES.md")).read_text()
+    rows = dict(re.findall(r"^\| (\d+) \|.*\| (edge|`\w+`) \|$", table, flags=re.MULTILINE))
+    assert sorted(map(int, rows)) == list(range(1, 61))
+    numbers = {row[0] for row in ROWS}
+    assert {int(n) for n, test in rows.items() if test == "edge"} == numbers
+    for test in (t.strip("`") for t in rows.values() if t != "edge"):
+        assert callable(globals().get(test)), f"EDGE_CASES.md names {test}, which is not a test here"

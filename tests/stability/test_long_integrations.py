@@ -18,14 +18,14 @@ from orbits.validate import backends
 pytestmark = pytest.mark.slow
 
 #: IAS15 (epsilon 1e-9), e = 0, 0.5, 0.9, 0.99: bounds on (position error / a, |dE / E|, |de|) for runs of up to
-#: that many periods. Energy keeps EDGE_CASES 6.3's 3e-13 where it holds; elsewhere each bound is ~10x the worst
-#: measured (the comment; e = 0.99 sets position and energy, the LRL vector varies).
+#: that many periods. Energy keeps the 3e-13 target of EDGE_CASES.md where it holds; elsewhere each bound is ~10x
+#: the worst measured (the comment; e = 0.99 sets position and energy, the LRL vector varies).
 IAS15_BOUNDS = {
     500: (2e-8, 3e-13, 4e-14),  # measured 1.9e-9, 2.0e-13 (at 200 periods), 3.7e-15 (over 50..500 periods)
     1000: (4e-8, 3e-13, 4e-14),  # measured 3.8e-9, 1.7e-13, 3.8e-15
     2000: (2e-7, 4e-12, 1e-13),  # measured 1.7e-8, 4.0e-13, 1.0e-14
     5000: (2e-6, 8e-12, 3e-13),  # measured 1.5e-7, 7.4e-13, 2.7e-14
-    10000: (3e-6, 8e-12, 3e-13),  # measured 2.4e-7, 6.3e-13, 1.3e-14 (EDGE_CASES 6.3's 1e-7 and 3e-13 fail here)
+    10000: (3e-6, 8e-12, 3e-13),  # measured 2.4e-7, 6.3e-13, 1.3e-14 (the targets 1e-7 and 3e-13 fail here)
 }
 
 #: heyoka (tol = eps, high_accuracy), e = 0, 0.5, 0.9: bounds on (energy and e-vector drift, position error / a).

@@ -22,7 +22,8 @@ def test_the_scene_passes_with_both_integrators(report):
 
 
 def test_the_1pn_term_brings_mercury_and_earth_to_the_kilometre(report):
-    """Measured 0.63 km (Mercury) and 3.3 km (Earth) at most over 10 years; 1,820 and 612 km without it."""
+    """Measured 0.63 km (Mercury) and 3.3 km (Earth) at most over 10 years at the scene's 120 outputs (0.68 km for
+    Mercury sampled daily); 1,820 and 612 km without it."""
     values = {c.quantity.split(":")[0]: c.values["heyoka"] for c in report.checks if "max km" in c.quantity}
     assert values["Mercury"] < 2.0 and values["Earth"] < 10.0
 
@@ -40,11 +41,11 @@ def test_from_1950_the_floors_larger_epoch_is_reached_and_passes():
 
 
 def test_without_relativity_mercurys_perihelion_lags_by_gr_advance():
-    """The Newtonian perihelion trails DE421 by GR's 42.98 arcsec/century: measured 4.2982 arcsec in 10 years
-    against 4.298 (relative 5e-5)."""
+    """The Newtonian perihelion trails DE421 by GR's 42.98 arcsec/century: measured 4.29818 arcsec in 10
+    years against 4.29805 (relative 3.1e-5), the public relativistic_periapsis_advance of Standish's mean orbit."""
     newtonian = validate_scene(models.build("solar_system", {"post_newtonian": False}))
     lag = next(c for c in newtonian.checks if c.quantity.startswith("Mercury perihelion lag"))
-    assert lag.passed and lag.analytic == pytest.approx(4.298)
+    assert lag.passed and lag.analytic == pytest.approx(4.298, abs=5e-4)  # Clemence 1947, Will 2014: 42.98 / cy
     for backend in ("rebound", "heyoka"):
         assert lag.values[backend] == pytest.approx(4.298, rel=5e-4)
     mercury = next(c for c in newtonian.checks if c.quantity.startswith("Mercury: max km"))
