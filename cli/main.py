@@ -33,7 +33,7 @@ from orbits_cli.commands import (
     validate,
     where,
 )
-from orbits_cli.options import displays, reports_errors
+from orbits_cli.options import displays, refuse_repeated_options, reports_errors
 from orbits_cli.pages import document
 
 
@@ -45,6 +45,8 @@ class OneLineErrors(TyperGroup):
         if not standalone_mode:
             return super().main(*args, standalone_mode=False, **kwargs)
         try:
+            words = args[0] if args else kwargs.get("args")
+            refuse_repeated_options(self, list(sys.argv[1:] if words is None else words))
             status = super().main(*args, standalone_mode=False, **kwargs)
         except typer.TyperException as err:  # click's exceptions (typer carries its own click)
             if type(err).__name__ == "NoArgsIsHelpError":  # bare `orbits` or `orbits bench`: the help

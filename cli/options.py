@@ -124,6 +124,9 @@ def displays(command: Callable[_P, _R]) -> Callable[..., _R]:
             name, sep, value = item.partition("=")
             if not sep or not name.strip() or not value.strip():
                 raise typer.BadParameter(f"--unit {item!r}: write NAME=UNIT, e.g. period=d")
+            if name.strip() in overrides:
+                raise typer.BadParameter(f"--unit {name.strip()} is given twice ({overrides[name.strip()]}, "
+                                         f"{value.strip()}); give each quantity one unit")
             overrides[name.strip()] = value.strip()
         render.use(render.Display(units.value, overrides, digits))
         return command(*args, **kwargs)
@@ -132,6 +135,37 @@ def displays(command: Callable[_P, _R]) -> Callable[..., _R]:
     wrapper.__signature__ = signature.replace(parameters=[*signature.parameters.values(), *_DISPLAY_PARAMETERS])
     wrapper.__annotations__ = {**command.__annotations__, **{p.name: p.annotation for p in _DISPLAY_PARAMETERS}}
     return wrapper
+
+
+def refuse_repeated_options(group, args: list[str]) -> None:
+    """A usage error for an option given more than once that holds one value (`--a 7000 km --a 8000 km`), or for a
+    flag given both ways (`--sweep --no-sweep`): the parser would keep the last silently. Options that collect a
+    list (`--unit`) may repeat. `args` are the words after `orbits`; the verb (and sub-verb) they name is found
+    first."""
+    command, words = group, list(args)
+    while hasattr(command, "commands") and words and words[0] in command.commands:
+        command, words = command.commands[words[0]], words[1:]
+    spellings = {}
+    for param in getattr(command, "params", []):
+        if getattr(param, "param_type_name", "") == "option":
+            for spelling in [*param.opts, *param.secondary_opts]:
+                spellings[spelling] = param
+    seen: dict[str, list[str]] = {}
+    words = iter(words[: words.index("--")] if "--" in words else words)
+    for word in words:
+        spelling, equals, value = word.partition("=")
+        param = spellings.get(spelling)
+        if param is None:
+            continue
+        if not param.is_flag and not equals:
+            value = next(words, "")
+        if param.multiple or param.count:
+            continue
+        seen.setdefault(param.name, []).append(spelling if param.is_flag else f"{spelling} {value!r}")
+    for given in seen.values():
+        if len(given) > 1:
+            what = "a switch" if spellings[given[0].split(" ")[0]].is_flag else "an option that holds one value"
+            raise typer.BadParameter(f"{', '.join(given)}: {what}, given {len(given)} times; give it once")
 
 
 def _print_warnings(caught, ours):
@@ -143,14 +177,17 @@ def _print_warnings(caught, ours):
     for item in caught:
         if issubclass(item.category, ours):
             if str(item.message) not in seen:
+                from orbits.display import printable
+
                 seen.add(str(item.message))
-                print(f"orbits: warning: {item.message}", file=sys.stderr)
+                print(f"orbits: warning: {printable(item.message)}", file=sys.stderr)
         else:
             warnings.warn_explicit(item.message, item.category, item.filename, item.lineno)
 
 
 def reports_errors(command: Callable[_P, _R]) -> Callable[_P, _R]:
-    """Turn the library's input errors into one line on stderr and exit status 2."""
+    """Turn the library's input errors into one line on stderr and exit status 2, and Ctrl-C into "orbits:
+    interrupted" and exit status 130."""
 
     @functools.wraps(command)
     def wrapper(*args, **kwargs):
@@ -169,14 +206,19 @@ def reports_errors(command: Callable[_P, _R]) -> Callable[_P, _R]:
                     return command(*args, **kwargs)
             finally:  # outside the recording: a warning passed on goes to the caller's filters, not back to `said`
                 _print_warnings(said, OrbitsWarning)
+        except KeyboardInterrupt:
+            print("orbits: interrupted", file=sys.stderr)
+            raise typer.Exit(130) from None
         except RuntimeWarning as err:
             print(f"orbits: error: the computation left float64 ({err}); the inputs are outside what orbits can "
                   f"compute", file=sys.stderr)
             raise typer.Exit(2) from None
         except (OrbitsError, ValueError, TypeError, KeyError, u.UnitsError, typer.BadParameter) as err:
+            from orbits.display import printable
+
             message = err.format_message() if isinstance(err, typer.BadParameter) else (
                 str(err.args[0]) if isinstance(err, KeyError) and err.args else str(err))
-            print(f"orbits: error: {message}", file=sys.stderr)
+            print(f"orbits: error: {printable(message)}", file=sys.stderr)  # one line, whatever a file held
             raise typer.Exit(2) from None
 
     return wrapper

@@ -6,8 +6,6 @@ two to four examples that run (tests/cli/test_help_pages.py runs every one and h
 builds them. It imports nothing of the library: `orbits --help` stays fast.
 """
 
-import textwrap
-
 import typer
 from typer.core import TyperCommand
 
@@ -24,7 +22,7 @@ SUMMARY = {
     "ring": "A ring of equal masses: period, stability, break-up.",
     "rocket": "Delta-v and burn times of a rocket, one stage or several.",
     "where": "Where a planet is at a date: distance, elongation, RA, Dec.",
-    "lambert": "Lambert's problem: from r1 to r2 in a given time.",
+    "lambert": "Lambert's problem: r1 to r2, or body to body on dates.",
     "porkchop": "C3 and arrival v_inf over launch and arrival dates.",
     "collide": "A collision with restitution: velocities and energies.",
     "projectile": "A projectile, without drag or with linear or quadratic drag.",
@@ -74,8 +72,9 @@ EXAMPLES = {
     "orbit": [
         "orbits orbit Earth",
         'orbits orbit --primary Earth --a "42164 km" --only period,speed',
-        'orbits orbit --primary Earth --r "7000,0,0 km" --v "0,7.5,1 km/s"',
-        "orbits orbit Mars --epoch 2026-11-25 --format json",
+        "orbits orbit Ceres --epoch 2026-01-01 --format json",
+        'orbits orbit --primary Earth --a "8000 km" --e 0.1 --mass "1000 kg" \\\n'
+        '    --at-r "7500 km" --area-between "0 h,1 h"',
     ],
     "kepler": [
         'orbits kepler --e 0.9 --M "0.1 rad"',
@@ -90,6 +89,7 @@ EXAMPLES = {
     "binary": [
         'orbits binary --m1 Sun --m2 Jupiter --a "5.2 AU" --e 0.048',
         'orbits binary --m1 Earth --m2 Moon --a "384399 km" --format json',
+        'orbits binary --m1 "1 solMass" --m2 "1 jupiterMass" --period "4.23 d" --inc 90',
         'orbits binary --K "59 m/s" --period "4.2293 d" --m1 "1 solMass"',
     ],
     "flyby": [
@@ -120,11 +120,13 @@ EXAMPLES = {
         "orbits where Mars --epoch 2026-11-25",
         "orbits where Venus --observer Mars --epoch 2027-01-01 --format json",
         "orbits where Jupiter --epoch 2026-11-25 --plot sky.png",
+        "orbits where Ceres --epoch 2026-01-01",
     ],
     "lambert": [
         'orbits lambert --r1 "1,0,0 AU" --r2 "0,1.5,0 AU" --tof "200 d"',
         'orbits lambert --r1 "1,0,0 AU" --r2 "0,1.5,0 AU" --tof "900 d" \\\n'
         "    --revolutions 1 --branch left",
+        "orbits lambert --from Earth --to Mars --depart 2026-11-26 --arrive 2027-08-15",
     ],
     "porkchop": [
         "orbits porkchop --from EMB --to Mars --step \"5 d\"",
@@ -167,6 +169,7 @@ EXAMPLES = {
     "transfer hohmann": [
         'orbits transfer hohmann --r1 "6678 km" --r2 "42164 km"',
         'orbits transfer hohmann --r1 "6678 km" --r2 "42164 km" --inc "28.5 deg"',
+        "orbits transfer hohmann --from Earth --to Mars",
     ],
     "transfer bi-elliptic": [
         'orbits transfer bi-elliptic --r1 "7000 km" --r2 "105000 km" --rb "210000 km"',
@@ -289,9 +292,10 @@ class ListsScenes(TyperCommand):
 
     @property
     def epilog(self) -> str:
+        from orbits.display import filled
         from orbits.validate import summaries
 
-        scenes = "\n".join(textwrap.fill(f"{name}: {line}", width=76, initial_indent="  ", subsequent_indent="      ")
+        scenes = "\n".join(filled(f"{name}: {line}", 76, initial_indent="  ", subsequent_indent="      ")
                            for name, line in summaries().items())
         return f"Built-in scenes (give their names, or none for all):\n{scenes}\n\n{self._examples}"
 

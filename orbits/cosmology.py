@@ -26,7 +26,7 @@ The matching N-body problem for rebound and heyoka is built in orbits.validate.b
 """
 
 from collections.abc import Iterable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 import astropy.constants as const
@@ -67,12 +67,25 @@ def _densities(Om0, Ol0, Or0, Ok0):
     if ok is None and (om is None or ol is None):
         ok = 0.0  # one of Om0, Ol0: a flat universe
     if om is None:
-        om = 1.0 - ol - orad - ok
+        om = _derived("Omega_m", 1.0 - ol - orad - ok, given)
     elif ol is None:
-        ol = 1.0 - om - orad - ok
+        ol = _derived("Omega_Lambda", 1.0 - om - orad - ok, given)
     elif ok is None:
         ok = 1.0 - om - ol - orad
     return om, orad, ok, ol
+
+
+def _derived(name: str, value: float, given: dict) -> float:
+    """A density that follows from the others (they sum to 1), OrbitDomainError naming what was given if it comes
+    out negative: the user never gave it, so the message says where it came from."""
+    if value < 0:
+        shown = ", ".join(f"{key} = {float(units.to_number(v, key))!r}" for key, v in given.items() if v is not None)
+        flat = " in a flat universe (Ok0 = 0 unless given)" if given["Ok0"] is None else ""
+        other = "Ol0" if name == "Omega_Lambda" else "Om0"
+        raise OrbitDomainError(f"{name} = {value!r} follows from {shown}{flat}, as the densities sum to 1, and a "
+                               f"density cannot be negative: give {other} too (the curvature Ok0 then follows), or "
+                               f"densities that leave room for it")
+    return value
 
 
 #: the model each closed form or the quadrature stands for (Cosmology.method)
@@ -99,6 +112,8 @@ class Cosmology(display.Displayed):
     omega_r: float = 0.0
     omega_k: float = 0.0
     omega_l: float = 0.0
+    #: a published model's name ("Planck 2018"), shown before the kind of model; None for a model of one's own
+    name: str | None = None
     model: friedmann.Friedmann = field(init=False, repr=False)
 
     def __post_init__(self):
@@ -148,7 +163,8 @@ class Cosmology(display.Displayed):
         """
         hubble = PLANCK18_H0 * u.km / u.s / u.Mpc
         orad = _radiation_density(float(_hubble(hubble)), PLANCK18_TCMB, PLANCK18_NEFF) if radiation else 0.0
-        return cls.from_densities(hubble, Om0=PLANCK18_OM0, Or0=orad)
+        model = cls.from_densities(hubble, Om0=PLANCK18_OM0, Or0=orad)
+        return replace(model, name="Planck 2018" + (" with radiation" if radiation else ""))
 
     # ---- scales -------------------------------------------------------------------------------
     @cached_property
@@ -194,8 +210,11 @@ class Cosmology(display.Displayed):
 
     # ---- quantities at a redshift -------------------------------------------------------------
     def hubble_parameter(self, z: float | np.ndarray | u.Quantity = 0.0) -> u.Quantity:
-        """H(z) = H0 E(z) (1/s), E**2 = Omega_r x**4 + Omega_m x**3 + Omega_k x**2 + Omega_Lambda, x = 1 + z."""
-        return self.h0 * self.model.efunc(_redshift(z)) << PER_S
+        """H(z) = H0 E(z) (1/s), E**2 = Omega_r x**4 + Omega_m x**3 + Omega_k x**2 + Omega_Lambda, x = 1 + z; inf at
+        z = inf, OrbitDomainError where a finite z gives an H beyond float64."""
+        z = _redshift(z)
+        with np.errstate(over="ignore"):
+            return _representable(self.h0 * self.model.efunc(z), "Hubble parameter H", "1 / s", "z", z) << PER_S
 
     def age(self, z: float | np.ndarray | u.Quantity = 0.0) -> u.Quantity:
         """t(z) (s) since the big bang: (2/3) / H0 (1 + z)**-1.5 for Einstein-de Sitter (XXIV.iv); inf for de Sitter."""
@@ -214,9 +233,12 @@ class Cosmology(display.Displayed):
         return self.model.transverse_comoving_distance(_redshift(z), self._d_h) << units.M
 
     def luminosity_distance(self, z: float | np.ndarray | u.Quantity) -> u.Quantity:
-        """D_L = (1 + z) D_M (m): a source of luminosity L has flux L / (4 pi D_L**2). Equal to astropy's to 1e-13."""
+        """D_L = (1 + z) D_M (m): a source of luminosity L has flux L / (4 pi D_L**2). Equal to astropy's to 1e-13;
+        inf at z = inf, OrbitDomainError where a finite z gives a D_L beyond float64 (z above about 1e281)."""
         z = _redshift(z)
-        return (1.0 + z) * self.model.transverse_comoving_distance(z, self._d_h) << units.M
+        with np.errstate(over="ignore"):
+            distance = (1.0 + z) * self.model.transverse_comoving_distance(z, self._d_h)
+        return _representable(distance, "luminosity distance D_L", "m", "z", z) << units.M
 
     def angular_diameter_distance(self, z: float | np.ndarray | u.Quantity) -> u.Quantity:
         """D_A = D_M / (1 + z) (m): a proper length l at z spans the angle l / D_A. 0 at z = inf."""
@@ -226,20 +248,26 @@ class Cosmology(display.Displayed):
         return np.where(np.isinf(z), 0.0, ratio) << units.M
 
     def distance_modulus(self, z: float | np.ndarray | u.Quantity) -> u.Quantity:
-        """mu = m - M = 5 log10(|D_L| / 10 pc) (magnitudes, a dimensionless number); -inf at z = 0.
+        """mu = m - M = 5 log10(|D_L| / 10 pc) = 5 [log10(1 + z) + log10(|D_M| / 10 pc)] (mag, as astropy gives it);
+        -inf at z = 0. Formed from the logarithms, so it stays finite where D_L itself leaves float64.
 
         |D_L|: beyond the antipode of a closed universe D_M = R sin(D_C / R) < 0, and the flux goes as 1 / D_L**2."""
+        z = _redshift(z)
+        transverse = np.abs(self.model.transverse_comoving_distance(z, self._d_h))
         with np.errstate(divide="ignore"):
-            return 5.0 * np.log10(np.abs(self.luminosity_distance(z).to_value(units.M)) / TEN_PARSECS) << u.one
+            return 5.0 * (np.log10(1.0 + z) + np.log10(transverse / TEN_PARSECS)) << u.mag
 
     def comoving_volume(self, z: float | np.ndarray | u.Quantity) -> u.Quantity:
         """V_C (m3): the comoving volume of the whole sky out to z; 4 pi D_C**3 / 3 if flat."""
         return self.model.comoving_volume(_redshift(z), self._d_h) << u.m**3
 
     def critical_density(self, z: float | np.ndarray | u.Quantity = 0.0) -> u.Quantity:
-        """rho_c(z) = 3 H(z)**2 / (8 pi G) (kg/m3); inf beyond the float64 range."""
+        """rho_c(z) = 3 H(z)**2 / (8 pi G) (kg/m3); inf at z = inf, OrbitDomainError where a finite z gives a
+        density beyond float64."""
+        z = _redshift(z)
         with np.errstate(over="ignore"):
-            return sphere.critical_density(self.hubble_parameter(z).to_value(PER_S), G) << KG_PER_M3
+            density = sphere.critical_density(self.hubble_parameter(z).to_value(PER_S), G)
+        return _representable(density, "critical density rho_c", "kg / m3", "z", z) << KG_PER_M3
 
     def density_parameter(self, z: float | np.ndarray | u.Quantity = 0.0) -> u.Quantity:
         """Omega_m(z) = rho_m(z) / rho_c(z) (dimensionless): 1 at every z for Einstein-de Sitter."""
@@ -275,18 +303,24 @@ class Cosmology(display.Displayed):
     def expansion_rate(self, t: u.Quantity) -> u.Quantity:
         """H(t) = (da/dt) / a (1/s) at time t (time) after the big bang: negative while a universe recollapses."""
         seconds = self._time(t)
-        h = self.hubble_parameter(self.redshift(t)).to_value(PER_S)
+        a = self.scale_factor(t).to_value(u.one)
+        with np.errstate(over="ignore"):  # infinite at the big bang and the crunch (a = 0), finite elsewhere
+            h = _representable(self.h0 * self.model.efunc_at_scale_factor(a), "expansion rate H", "1 / s",
+                               "t (s)", seconds, a > 0)
         return np.where(seconds > self.turnaround_time.to_value(units.S), -h, h) << PER_S
 
     # ---- tables -------------------------------------------------------------------------------
     @property
     def description(self) -> str:
-        """E.g. "Einstein-de Sitter, H0 = 48.8896 km/s/Mpc, Om = 1": the model, H0 and the nonzero densities."""
+        """E.g. "Einstein-de Sitter, H0 = 48.8896 km/s/Mpc, Om = 1", or "Planck 2018: flat matter + Lambda, H0 = ...":
+        the model's name if it has one, its kind, H0 and the nonzero densities."""
         h0 = self.hubble_constant.to_value(u.km / u.s / u.Mpc)
         labels = ("Om", "Or", "Ok", "Ol")
         values = (self.omega_m, self.omega_r, self.omega_k, self.omega_l)
         densities = "".join(f", {label} = {value:.6g}" for label, value in zip(labels, values) if value != 0)
-        return f"{MODEL_NAMES[self.method]}, H0 = {h0:.6g} km/s/Mpc{densities}"
+        kind = MODEL_NAMES[self.method]
+        named = kind if self.name is None else f"{self.name}: {kind[0].lower()}{kind[1:]}"
+        return f"{named}, H0 = {h0:.6g} km/s/Mpc{densities}"
 
     def __repr__(self) -> str:
         return f"Cosmology({self.description})"
@@ -324,6 +358,7 @@ class Cosmology(display.Displayed):
             epoch["lookback_time"] = self.age() - epoch["age"]
             epoch["hubble_parameter"] = self.expansion_rate(t)
             z = epoch["redshift"].to_value(u.one)
+            _require_past_z(t, a, z, [name for name in names if name not in epoch and name in REDSHIFT_NAMES])
         return {name: epoch[name] if name in epoch else self._at(name, z) for name in names}
 
     def _at(self, name, z):
@@ -351,6 +386,9 @@ QUANTITY_NAMES = [
     "turnaround_time",
     "big_crunch_time",
 ]
+#: the quantities that are functions of the redshift, which a time after a = 2**53 leaves at -1
+REDSHIFT_NAMES = ["comoving_distance", "luminosity_distance", "angular_diameter_distance", "distance_modulus",
+                  "comoving_volume", "critical_density", "density_parameter"]
 #: the times of a recollapsing universe's turnaround and big crunch: listed by default only when finite
 FATE_NAMES = ("turnaround_time", "big_crunch_time")
 #: what quantities(t=...) gives after the turnaround of a recollapsing universe (functions of a and t alone)
@@ -375,6 +413,34 @@ def _radiation_density(h0, tcmb, neff):
 def _redshift(z):
     """z as a float64 array; a length or other dimensional Quantity is a UnitConversionError."""
     return units.to_number(z, "redshift z")
+
+
+def _require_past_z(t, a, z, needing: list[str]) -> None:
+    """OrbitDomainError when a time so late that z = 1 / a - 1 rounds to -1 (a >= 2**53) asks for quantities that
+    are functions of z: the message names the time and the scale factor, not a redshift the user never gave."""
+    late = np.broadcast_to(z <= -1.0, np.shape(a))
+    if needing and np.any(late):
+        when = np.broadcast_to(t, np.shape(a), subok=True)[late].ravel()[0]
+        scale = float(np.ravel(a.to_value(u.one))[np.ravel(late)][0])
+        raise OrbitDomainError(f"t = {when} is so late that the scale factor a = {scale:.6g} leaves z = 1 / a - 1 = -1 "
+                               f"in float64, and {', '.join(needing)} are functions of z > -1; ask for scale_factor, "
+                               f"age, lookback_time or hubble_parameter at that time, or an earlier t")
+
+
+def _representable(values: np.ndarray, name: str, unit: str, label: str, coordinate: np.ndarray,
+                   finite: np.ndarray | None = None) -> np.ndarray:
+    """`values` (at the redshifts or times `coordinate`, named `label`), unless one is infinite where its true value
+    is finite (`finite`, default: where the coordinate is): there it lies beyond float64, and inf would read as a
+    true infinity, so OrbitDomainError names the quantity and where."""
+    values = np.asarray(values, dtype=float)
+    where = np.broadcast_to(coordinate, values.shape)
+    finite = np.isfinite(where) if finite is None else np.broadcast_to(finite, values.shape)
+    beyond = np.isinf(values) & finite
+    if np.any(beyond):
+        bad = float(where[beyond].flat[0])
+        raise OrbitDomainError(f"the {name} at {label} = {bad:g} is larger than float64 holds (about 1.8e308 {unit}); "
+                               f"it is computed where it is smaller (and as the limit inf where it is infinite)")
+    return values
 
 
 def _redshift_of(a):

@@ -19,6 +19,7 @@ has no formula here. The geosynchronous and the geostationary orbit share one ra
 equatorial one); 35786.1 km above Earth's IAU 2015 equatorial radius, the notes' 35786 km (ERRATA #55).
 """
 
+import warnings
 from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
@@ -32,7 +33,7 @@ from orbits.constants import BODIES, EARTH_MEAN_RADIUS, STANDARD_GRAVITY, Body, 
 from orbits.core import escape as escape_core
 from orbits.core import twobody
 from orbits.core.checks import first_where
-from orbits.core.errors import OrbitDomainError
+from orbits.core.errors import InsideBodyWarning, OrbitDomainError
 from orbits.tables import quantity_table
 
 
@@ -203,7 +204,21 @@ class SynchronousOrbit(display.Displayed):
              else inputs.positive(period, units.S, "rotation period T"))
         size = None if named is None else np.asarray(named.radius)
         size = size if radius is None else _length(radius, "body radius R")
-        return cls(mu, t, size)
+        synchronous = cls(mu, t, size)
+        synchronous._warn_if_inside()
+        return synchronous
+
+    def _warn_if_inside(self) -> None:
+        """InsideBodyWarning when the radius lies inside the body: the period has an orbit radius, but nothing can
+        circle there (the altitude, r - R, is then refused)."""
+        if self.body_radius is None:
+            return
+        r, radius = np.broadcast_arrays(self.orbit_radius.to_value(units.M), self.body_radius)
+        if np.any(r <= radius):
+            bad, body_radius = first_where(r <= radius, r, radius)
+            warnings.warn(f"the synchronous orbit radius r = {bad / 1e3:.7g} km lies inside the body (radius "
+                          f"{body_radius / 1e3:.7g} km): no orbit of this period exists above its surface",
+                          InsideBodyWarning, stacklevel=3)
 
     @cached_property
     def orbit_radius(self) -> u.Quantity:

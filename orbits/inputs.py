@@ -17,9 +17,9 @@ import numpy as np
 
 from orbits import units
 from orbits.constants import BODIES, STANDARD_GRAVITY, Body, G, body
-from orbits.core import elements
+from orbits.core import elements, kepler
 from orbits.core.checks import check_finite, first_where, require_magnitude, require_positive
-from orbits.core.errors import OrbitDomainError
+from orbits.core.errors import InsideBodyWarning, OrbitDomainError
 
 #: the SI unit of each kind of quantity a string may hold, and a unit to suggest when the unit is missing
 KINDS = {
@@ -60,6 +60,9 @@ def parse_quantity(text: str, kind: str, name: str, bare_unit: u.UnitBase | None
             warnings.simplefilter("ignore", u.UnitsWarning)
             value = u.Quantity(text)
     except (TypeError, ValueError):
+        if find_body(text) is not None:
+            raise OrbitDomainError(f"{name}: {text!r} is a body, not a {kind}; write e.g. "
+                                   f"'1.5 {example or 1}'") from None
         raise OrbitDomainError(f"{name}: cannot read {text!r} as a quantity; write e.g. '7000 km'") from None
     if value.unit == u.one and si != u.one:
         if bare_unit is None:
@@ -70,7 +73,16 @@ def parse_quantity(text: str, kind: str, name: str, bare_unit: u.UnitBase | None
             raise OrbitDomainError(f"{name}: {text!r} must be a plain number")
         raise OrbitDomainError(f"{name}: {text!r} is a {value.unit.physical_type}, not a {kind}")
     check_finite(value.value, name, value.unit.to_string())
+    _require_no_underflow(text.strip().split(" ")[0], value.value, name)
     return value
+
+
+def _require_no_underflow(literal: str, value: float | np.ndarray, name: str) -> None:
+    """OrbitDomainError when a number written nonzero ("1e-330") reads as 0 in float64 (below 5e-324): it would
+    be taken for an exact zero (a position on the primary, a zero mass)."""
+    mantissa = literal.lower().split("e")[0]
+    if np.all(np.asarray(value) == 0) and any(digit in mantissa for digit in "123456789"):
+        raise OrbitDomainError(f"{name}: {literal!r} is below the smallest float64 (5e-324) and would read as 0")
 
 
 def parse_angle(text: str, name: str) -> u.Quantity:
@@ -100,6 +112,8 @@ def parse_vector(text: str, kind: str, name: str) -> u.Quantity:
     if values.shape != (3,):
         raise OrbitDomainError(f"{name}: {text!r} needs three comma-separated components, e.g. '7000,0,0 km'")
     check_finite(values, name, unit_text)
+    for literal, value in zip(numbers.split(","), values):
+        _require_no_underflow(literal.strip(), value, name)
     if not unit_text.strip():
         raise OrbitDomainError(f"{name}: {text!r} has no unit; write e.g. '{text.strip()} {_kind(kind)[1]}'")
     return parse_quantity(f"1 {unit_text}", kind, name) * values
@@ -148,6 +162,39 @@ def orbit_radius(primary: Body | str | u.Quantity, value: u.Quantity, name: str)
     return r
 
 
+def exact_body(gm: np.ndarray) -> Body | None:
+    """The catalogue body whose own GM every element of `gm` (m3/s2) is, exactly, else None: the primary an orbit
+    names ("about Earth"), found without sorting a large array."""
+    gm = np.asarray(gm, dtype=float)
+    if gm.size == 0:
+        return None
+    first = float(gm.flat[0])
+    named = next((b for b in BODIES.values() if b.gm == first), None)
+    return named if named is not None and (gm.size == 1 or bool(np.all(gm == first))) else None
+
+
+def warn_if_inside(periapsis: np.ndarray, bodies: "list[Body | None]", what: str) -> None:
+    """Warn (InsideBodyWarning) when a closest approach (m, array) lies below the radius of the catalogue body met,
+    or for two bodies meeting below their radii added: the conic passes through the body, or the two collide.
+    Bodies that are None (a mass or GM, not a catalogue body) have no radius and are left out."""
+    known = [b for b in bodies if b is not None]
+    if not known:
+        return
+    reach = sum(b.radius for b in known)
+    inside = np.asarray(periapsis) < reach
+    if not inside.any():
+        return
+    q, = first_where(inside, np.asarray(periapsis, dtype=float))
+    names = " and ".join(f"the {b.name}" if b.name in ("Sun", "Earth", "Moon") else b.name for b in known)
+    if len(known) == 1:
+        size, verdict = f"equatorial radius {reach / 1e3:.7g} km", f"it passes through {names}"
+    else:
+        size, verdict = f"radii added: {reach / 1e3:.7g} km", "they collide"
+    count = f" ({int(inside.sum())} of {inside.size})" if inside.size > 1 else ""
+    warnings.warn(f"{what}{count}: closest approach {q / 1e3:.7g} km is inside {names} ({size}): {verdict}",
+                  InsideBodyWarning, stacklevel=2)
+
+
 def gravitational_parameter(value: Body | str | u.Quantity, name: str = "primary mass M") -> np.ndarray:
     """G M (m3/s2) of a mass given as a Body, a body name, a mass (kg) or a GM (m3/s2) Quantity; finite, > 0."""
     if isinstance(value, str):
@@ -175,6 +222,30 @@ def angle(value: u.Quantity, name: str) -> np.ndarray:
     return si
 
 
+def periodic_angle(value: u.Quantity, name: str) -> np.ndarray:
+    """float64 array of an angle that counts modulo a full turn (an anomaly, a node, an argument), in rad and
+    reduced to (-pi, pi], with its value kept however large it is given.
+
+    In a unit of which a turn is a whole number (deg, arcmin, arcsec, hourangle) the whole turns come off in that
+    unit, exactly (fmod is exact in float64), before the one rounding of the conversion: 1e15 deg is -80 deg, where
+    converting to rad first left -79.954 deg. In rad the reduction is the exact double-double one of Kepler's
+    equation, up to 2**50 turns (OrbitDomainError beyond, as for the mean anomaly)."""
+    si = angle(value, name)  # the unit and finiteness rules; the value in rad is used only for rad-like units
+    given = np.asarray(value.value, dtype=float)
+    turn = float((1 * u.cycle).to_value(value.unit))
+    if turn == round(turn):
+        reduced = np.fmod(given, turn)
+        reduced = np.where(reduced > 0.5 * turn, reduced - turn, np.where(reduced <= -0.5 * turn, reduced + turn,
+                                                                          reduced))
+        return units.to_si(reduced << value.unit, units.RAD, name)
+    if np.any(np.abs(si) > kepler.MAX_MEAN_ANOMALY):
+        bad = float(si[np.abs(si) > kepler.MAX_MEAN_ANOMALY].flat[0])
+        raise OrbitDomainError(f"{name} = {bad!r} rad is too large for an exact reduction modulo 2 pi; allowed "
+                               f"|{name.split()[-1]}| <= {kepler.MAX_MEAN_ANOMALY:.6g} rad (2**50 turns)")
+    reduced = kepler.reduce_two_pi(si, 0.0)[0]
+    return np.where(reduced <= -np.pi, np.pi, reduced)
+
+
 def position(value: u.Quantity, name: str = "position r") -> np.ndarray:
     """A position (m, (..., 3)) relative to a primary: a finite vector (`vector`) away from the primary's centre."""
     r = vector(value, units.M, name)
@@ -189,9 +260,9 @@ def inclination(value: u.Quantity) -> np.ndarray:
 
 
 def true_anomaly(value: u.Quantity, e: np.ndarray) -> np.ndarray:
-    """True anomaly nu (rad) on a conic of (checked) eccentricity e: finite and, on an open conic, strictly
-    between the asymptotes (1 + e cos nu > 0)."""
-    nu = angle(value, "true anomaly nu")
+    """True anomaly nu (rad, reduced to (-pi, pi]: periodic_angle) on a conic of (checked) eccentricity e: finite
+    and, on an open conic, strictly between the asymptotes (1 + e cos nu > 0)."""
+    nu = periodic_angle(value, "true anomaly nu")
     elements.require_inside_asymptotes(e, nu)
     return nu
 
@@ -203,7 +274,7 @@ def vector(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
     check_finite(si, name, unit.to_string())
     if si.shape[-1:] != (3,):
         raise OrbitDomainError(f"{name} must have a last axis of length 3; got shape {si.shape}")
-    length = np.linalg.norm(si, axis=-1)
+    length = np.hypot(np.hypot(si[..., 0], si[..., 1]), si[..., 2])  # no underflow: |(1e-297, 0, 0)| is not 0
     require_magnitude(length[length > 0], f"|{name}|", unit.to_string())
     return si
 

@@ -30,18 +30,20 @@ def anomalies(
 
     Give exactly one of `mean_anomaly` (an angle; on the parabola Barker's W, a plain number) and `true_anomaly`
     (an angle). e >= 0 and the anomaly broadcast together; every e must be on the same kind of conic (all
-    ellipses, all parabolas or all hyperbolas), since each kind has its own anomaly. The mean anomaly of an
-    ellipse is returned reduced to [-pi, pi].
+    ellipses, all parabolas or all hyperbolas), since each kind has its own anomaly. The true anomaly, and the
+    mean anomaly of an ellipse, count modulo a turn: they are reduced to (-pi, pi] as given, exactly
+    (inputs.periodic_angle), so that E lies in [-pi, pi] too; a hyperbola's mean anomaly is not periodic.
     """
     e = inputs.eccentricity(e)
     conic = _conic(e)
     if (mean_anomaly is None) == (true_anomaly is None):
         raise TypeError("give exactly one of mean_anomaly and true_anomaly")
     if true_anomaly is not None:
-        nu, e = np.broadcast_arrays(inputs.angle(true_anomaly, "true anomaly nu"), e)
+        nu, e = np.broadcast_arrays(inputs.periodic_angle(true_anomaly, "true anomaly nu"), e)
         result = _from_true(nu, e, conic)
     else:
         m = (units.to_number(mean_anomaly, "Barker's mean anomaly W") if conic == "parabola"
+             else inputs.periodic_angle(mean_anomaly, "mean anomaly M") if conic == "ellipse"
              else inputs.angle(mean_anomaly, "mean anomaly M"))
         m, e = np.broadcast_arrays(m, e)
         result = _from_mean(m, e, conic)

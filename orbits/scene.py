@@ -45,7 +45,7 @@ from typing import Any, NoReturn
 import astropy.units as u
 import numpy as np
 
-from orbits import inputs
+from orbits import display, inputs, nbody
 from orbits.constants import BODIES
 from orbits.core import elements, twobody
 from orbits.core.errors import OrbitsError, SceneError
@@ -62,7 +62,8 @@ TIME_KEYS = ("periods", "span", "outputs", "times")
 #: the keys of a model scene file (orbits.validate.models), named here so a typo in either kind finds its key
 MODEL_KEYS = ("name", "description", "model", "parameters")
 MAX_OUTPUTS = 1_000_000
-MAX_PERIODS = 1_000_000
+#: the longest scene file read (a list of a million output times fits)
+MAX_FILE_BYTES = 32 * 2**20
 
 
 @dataclass(frozen=True)
@@ -150,16 +151,19 @@ def read(name_or_path: str | Path) -> tuple[dict, str]:
         raise SceneError(f"{name_or_path}: no such scene file, and not a built-in scene ({', '.join(builtin_names())})")
     kind = "JSON" if path.suffix == ".json" else "TOML"
     try:
-        raw = path.read_bytes()
+        with open(path, "rb") as handle:  # at most one byte past the limit, so that /dev/zero ends too
+            raw = handle.read(MAX_FILE_BYTES + 1)
     except OSError as err:
         raise SceneError(f"{path}: cannot read the file: {err.strerror or err}") from None
+    if len(raw) > MAX_FILE_BYTES:
+        raise SceneError(f"{path}: longer than {MAX_FILE_BYTES // 2**20} MiB, the most a scene file may hold")
     try:
         text = raw.decode("utf-8-sig")  # a leading byte-order mark is harmless
     except UnicodeDecodeError as err:
         raise SceneError(f"{path}: not UTF-8 text (byte 0x{raw[err.start]:02x} at position {err.start}); "
                          f"save the scene as UTF-8 {kind}") from None
     try:
-        data = json.loads(text) if kind == "JSON" else tomllib.loads(text)
+        data = json.loads(text, object_pairs_hook=_unique_keys) if kind == "JSON" else tomllib.loads(text)
     except ValueError as err:  # JSONDecodeError, TOMLDecodeError, or an integer of more than 4300 digits
         raise SceneError(f"{path}: not valid {kind}: {str(err).split(';')[0]}") from None
     except RecursionError:
@@ -167,6 +171,16 @@ def read(name_or_path: str | Path) -> tuple[dict, str]:
     if not isinstance(data, dict):
         raise SceneError(f"{path}: a scene must be a table (JSON object), not {_json_kind(data)}")
     return data, str(path)
+
+
+def _unique_keys(pairs: list[tuple[str, Any]]) -> dict:
+    """A JSON object as a dict, ValueError for a key given twice (json keeps the last silently; TOML refuses it)."""
+    data = {}
+    for key, value in pairs:
+        if key in data:
+            raise ValueError(f"the key {key!r} is given twice in one object")
+        data[key] = value
+    return data
 
 
 def _json_kind(value: object) -> str:
@@ -244,7 +258,7 @@ def from_dict(data: dict, source: str = "<scene>") -> Scene:
         raise SceneError(f"{source}: model: a model scene; load it with orbits.validate.scenes.load "
                          f"(`orbits validate` does)")
     unknown_keys(data, KEYS, "", source, {key: where for key, where in _ELSEWHERE.items() if key not in KEYS})
-    name = ctx.string(data, "name")
+    name = ctx.name(data, "name", "name")
     description = data.get("description", "")
     if not isinstance(description, str):
         ctx.fail("description", f"{show(description)} must be a string")
@@ -256,6 +270,11 @@ def from_dict(data: dict, source: str = "<scene>") -> Scene:
         ctx.fail("asks", f"ask for at least one of: {', '.join(ASKS)}")
     bodies = _bodies(ctx, ctx.get(data, "bodies", list))
     times = _times(ctx, ctx.get(data, "time", dict), bodies)
+    with ctx.field("time"):  # elements or vectors alike: the fastest orbit of any pair sets how long a run may be
+        gm = np.array([b.gm for b in bodies])
+        nbody.check_span(float(times[-1]), gm, np.array([b.position for b in bodies]),
+                         np.array([b.velocity for b in bodies]), int(np.count_nonzero(gm)), [b.name for b in bodies],
+                         "s")
     tolerance = dict(DEFAULT_TOLERANCE)
     for key, value in (ctx.get(data, "tolerance", dict) if "tolerance" in data else {}).items():
         if key not in DEFAULT_TOLERANCE:
@@ -316,6 +335,13 @@ class _Context:
     def string(self, data: dict, key: str, where: str | None = None) -> str:
         return self.get(data, key, str, where)
 
+    def name(self, data: dict, key: str, where: str) -> str:
+        """A name: a string with a character that shows (an empty or blank name reads as nothing in a report)."""
+        text = self.string(data, key, where)
+        if not display.visible(text):
+            self.fail(where, f"{show(text)} is empty or blank; give a name that shows")
+        return text
+
     def quantity(self, text: str, kind: str, where: str, bare_unit: u.UnitBase | None = None) -> float:
         """The SI value (float) of a quantity string of the given kind (orbits.inputs.KINDS)."""
         with self.field(where), np.errstate(over="ignore"):
@@ -368,13 +394,15 @@ def _gm(ctx, spec, where):
 def _bodies(ctx, entries):
     if not entries:
         ctx.fail("bodies", "at least one body is required")
+    with ctx.field("bodies"):
+        nbody.check_bodies(len(entries))  # before any body is read
     built, names = [], []
     for k, spec in enumerate(entries):
         where = f"bodies[{k}]"
         if not isinstance(spec, dict):
             ctx.fail(where, f"{show(spec)} must be a table")
         unknown_keys(spec, BODY_KEYS, where, ctx.source, synonyms=_BODY_SYNONYMS)
-        name = ctx.string(spec, "name", f"{where}.name")
+        name = ctx.name(spec, "name", f"{where}.name")
         if name in names:
             ctx.fail(f"{where}.name", f"{name!r} is used twice")
         test_particle = spec.get("test_particle", False)
@@ -392,12 +420,21 @@ def _bodies(ctx, entries):
         ctx.fail("bodies", "list massive bodies before test particles (test particles come last)")
     if len(built) < 2:
         ctx.fail("bodies", "a scene needs at least two bodies (a body alone has nothing to validate)")
-    for k, body in enumerate(built):
-        for j in range(k):
-            if np.array_equal(body.position, built[j].position):
-                ctx.fail(f"bodies[{k}]", f"{body.name!r} starts at the position of bodies[{j}] "
-                         f"({built[j].name!r}); two bodies cannot start at the same point")
+    _distinct_positions(ctx, built)
     return tuple(built)
+
+
+def _distinct_positions(ctx, built):
+    """SceneError for the first body that starts where an earlier one does (sorted, not compared pair by pair)."""
+    positions = np.array([b.position for b in built]) + 0.0  # -0.0 and 0.0 are one point
+    _, first, inverse = np.unique(positions, axis=0, return_index=True, return_inverse=True)
+    earlier = first[inverse.ravel()]
+    repeated = np.flatnonzero(earlier != np.arange(len(built)))
+    if repeated.size:
+        k = int(repeated[0])
+        j = int(earlier[k])
+        ctx.fail(f"bodies[{k}]", f"{built[k].name!r} starts at the position of bodies[{j}] ({built[j].name!r}); two "
+                 f"bodies cannot start at the same point")
 
 
 def _state(ctx, spec, where, name, gm, test_particle, built, names):
@@ -456,12 +493,16 @@ def _times(ctx, spec, bodies):
             ctx.fail("time.times", "must be a non-empty list of times like '1 d'")
         if len(spec["times"]) > MAX_OUTPUTS:
             ctx.fail("time.times", f"{len(spec['times'])} times; at most {MAX_OUTPUTS} are allowed")
+        with ctx.field("time.times"):
+            nbody.check_states(len(spec["times"]), len(bodies))
         times = np.array([ctx.quantity(t, "time", f"time.times[{i}]") for i, t in enumerate(spec["times"])])
     else:
         span = _span(ctx, spec, bodies)
         outputs = spec.get("outputs", 100)
         if isinstance(outputs, bool) or not isinstance(outputs, int) or not 1 <= outputs <= MAX_OUTPUTS:
             ctx.fail("time.outputs", f"{show(outputs)} must be an integer in [1, {MAX_OUTPUTS}]")
+        with ctx.field("time.outputs"):
+            nbody.check_states(outputs, len(bodies))
         times = np.linspace(0.0, span, outputs + 1)[1:]
     if np.any(times <= 0) or np.any(np.diff(times) <= 0):
         ctx.fail("time", "output times must be positive and strictly increasing")
@@ -475,17 +516,14 @@ def _span(ctx, spec, bodies):
         span = ctx.quantity(spec["span"], "time", "time.span")
         if not span > 0:
             ctx.fail("time.span", f"{show(spec['span'])} must be positive")
-        shortest = min((_period(b, bodies) for b in bodies if b.orbit is not None and b.orbit.e < 1), default=None)
-        if shortest is not None and span > MAX_PERIODS * shortest:
-            ctx.fail("time.span", f"{show(spec['span'])} is {span / shortest:.3g} periods of the fastest orbit "
-                                  f"({shortest:.6g} s); at most {MAX_PERIODS} are allowed: too long a run")
         return span
     periods = ctx.number(spec, "periods", "time.periods", low=0.0)
     orbiting = [b for b in bodies if b.orbit is not None]
     if periods <= 0 or not orbiting or orbiting[0].orbit.e >= 1:
         ctx.fail("time.periods", "needs a positive number and a first orbit that is an ellipse (e < 1)")
-    if periods > MAX_PERIODS:
-        ctx.fail("time.periods", f"{show(spec['periods'])} is more than {MAX_PERIODS} periods: too long a run")
+    if periods > nbody.MAX_PERIODS:  # a first bound (the period is not yet known): the run's own check follows
+        ctx.fail("time.periods", f"{show(spec['periods'])} is more than {nbody.MAX_PERIODS:.0e} periods: too long a "
+                 f"run")
     return periods * _period(orbiting[0], bodies)
 
 

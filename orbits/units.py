@@ -2,7 +2,8 @@
 
 Policy: a dimensional argument must be an astropy Quantity; a bare number is a TypeError that says
 what to pass (no silent metres). Eccentricities and other pure numbers may be plain floats. Angles
-must carry an angle unit. bool is rejected everywhere; ints and float32 are upcast to float64.
+must carry an angle unit. bool, complex numbers and masked arrays are rejected everywhere; ints and
+float32 are upcast to float64.
 """
 
 import astropy.units as u
@@ -34,8 +35,15 @@ _EXAMPLE = {
 
 
 def _reject_bool(value, name):
+    """TypeError for what a float64 array cannot stand for: booleans, complex numbers (their imaginary part would
+    be dropped) and masked arrays (NumPy's or astropy's: the masked elements would be computed and the mask lost)."""
     if isinstance(value, (bool, np.bool_)) or (isinstance(value, np.ndarray) and value.dtype == bool):
         raise TypeError(f"{name} = {value!r} is a boolean; pass a number")
+    if hasattr(value, "mask"):
+        raise TypeError(f"{name} is a masked array; orbits computes every element, so fill or drop the masked ones "
+                        f"first (e.g. value[~value.mask] or value.filled(...))")
+    if np.iscomplexobj(value):
+        raise TypeError(f"{name} = {value!r} is complex; pass real numbers")
 
 
 #: Conversion factors already computed, {(from unit, to unit): scale}. Quantity.to_value recomputes the

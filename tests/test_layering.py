@@ -4,7 +4,7 @@ probe wraps to record importer -> imported), never by reading source text.
 
 Layers, bottom up; a module may import its own layer and the layers below it:
     0 core         orbits.core.*: float64 NumPy; numpy, the standard library and (in the _fast kernels) numba
-    1 base         units, constants, inputs (the input rules), nbody, io, tables, display, system
+    1 base         units, constants, catalogue_orbits, inputs (the input rules), nbody, io, tables, display, system
     2 domain       orbit, kepler, binary, flyby, escape, lagrange, rings, cosmology, scene, predict, and the
                    pictures orbits.plot.* (one module per subject over the shared orbits.plot.frame)
     3 validation   orbits.validate.*
@@ -21,8 +21,8 @@ import textwrap
 
 import pytest
 
-BASE = {"orbits.units", "orbits.constants", "orbits.inputs", "orbits.nbody", "orbits.io", "orbits.tables",
-        "orbits.display", "orbits.system"}
+BASE = {"orbits.units", "orbits.constants", "orbits.catalogue_orbits", "orbits.inputs", "orbits.nbody", "orbits.io",
+        "orbits.tables", "orbits.display", "orbits.system"}
 FACADE = "orbits"
 HEAVY = ("astropy", "rebound", "heyoka", "numba", "matplotlib", "dask", "distributed", "mpmath", "scipy")
 

@@ -6,7 +6,27 @@ import typer
 
 from orbits_cli.options import Format, FormatOption, OutputOption
 
-RepeatsOption = Annotated[int, typer.Option(help="timing repeats (best is kept)")]
+
+def _count(name: str, limit: str):
+    """A parse-time check that a count option lies in [1, orbits.tools.bench.harness.<limit>], before any work."""
+
+    def check(value: int) -> int:
+        from orbits import OrbitsError
+        from orbits.tools.bench import harness
+
+        try:
+            return harness.check_count(value, name, getattr(harness, limit))
+        except OrbitsError as err:
+            raise typer.BadParameter(str(err).removeprefix(f"{name} = ")) from None
+
+    return check
+
+
+def _sized(help: str, name: str, limit: str = "MAX_SET"):
+    return typer.Option(name, help=help, callback=_count(name, limit))
+
+
+RepeatsOption = Annotated[int, _sized("timing repeats (best is kept)", "--repeats", "MAX_REPEATS")]
 
 
 def _emit(data, table, fmt, output):
@@ -21,10 +41,10 @@ def _emit(data, table, fmt, output):
 
 
 def kepler(
-    easy: Annotated[int, typer.Option(help="easy pairs, e in [0, 0.99]")] = 1_000_000,
-    hard: Annotated[int, typer.Option(help="hard pairs, e in [0.99, 1 - 1e-9], M tiny or near pi")] = 100_000,
-    hyperbolic: Annotated[int, typer.Option(help="hyperbolic pairs")] = 100_000,
-    reference: Annotated[int, typer.Option(help="pairs per set checked against mpmath")] = 2000,
+    easy: Annotated[int, _sized("easy pairs, e in [0, 0.99]", "--easy")] = 1_000_000,
+    hard: Annotated[int, _sized("hard pairs, e in [0.99, 1 - 1e-9], M tiny or near pi", "--hard")] = 100_000,
+    hyperbolic: Annotated[int, _sized("hyperbolic pairs", "--hyperbolic")] = 100_000,
+    reference: Annotated[int, _sized("pairs per set checked against mpmath", "--reference", "MAX_REFERENCE")] = 2000,
     repeats: RepeatsOption = 3,
     output: OutputOption = None,
     fmt: FormatOption = Format.table,
@@ -38,8 +58,8 @@ def kepler(
 
 
 def propagate(
-    states: Annotated[int, typer.Option(help="states per set (elliptic, mixed conics)")] = 1_000_000,
-    reference: Annotated[int, typer.Option(help="states per set checked against mpmath")] = 200,
+    states: Annotated[int, _sized("states per set (elliptic, mixed conics)", "--states")] = 1_000_000,
+    reference: Annotated[int, _sized("states per set checked against mpmath", "--reference", "MAX_REFERENCE")] = 200,
     repeats: RepeatsOption = 3,
     output: OutputOption = None,
     fmt: FormatOption = Format.table,
@@ -53,8 +73,8 @@ def propagate(
 
 
 def stm(
-    states: Annotated[int, typer.Option(help="states per set (elliptic, mixed conics)")] = 100_000,
-    reference: Annotated[int, typer.Option(help="states per set checked against mpmath")] = 20,
+    states: Annotated[int, _sized("states per set (elliptic, mixed conics)", "--states")] = 100_000,
+    reference: Annotated[int, _sized("states per set checked against mpmath", "--reference", "MAX_REFERENCE")] = 20,
     repeats: RepeatsOption = 3,
     output: OutputOption = None,
     fmt: FormatOption = Format.table,
@@ -99,13 +119,20 @@ def api(
 
 def _sizes(text):
     try:
-        return tuple(int(s) for s in text.split(",") if s.strip())
+        sizes = tuple(int(s) for s in text.split(",") if s.strip())
     except ValueError:
         raise typer.BadParameter(f"--sizes: {text!r} is not a comma-separated list of integers") from None
+    if not sizes:
+        raise typer.BadParameter(f"--sizes: {text!r} gives no size")
+    check = _count("--sizes", "MAX_SET")
+    try:
+        return tuple(check(size) for size in sizes)
+    except typer.BadParameter as err:
+        raise typer.BadParameter(f"--sizes: {err.message}") from None
 
 
 def cli(
-    runs: Annotated[int, typer.Option(help="fresh processes per command")] = 10,
+    runs: Annotated[int, _sized("fresh processes per command", "--runs", "MAX_REPEATS")] = 10,
     first_run: Annotated[bool, typer.Option(help="also time each first-run command with an empty kernel cache "
                                                  "(it compiles what a new install compiles)")] = True,
     output: OutputOption = None,
@@ -135,9 +162,10 @@ def validate(
 
 
 def lambert(
-    transfers: Annotated[int, typer.Option(help="random zero-revolution transfers (per-call peers: a subset)")] = (
+    transfers: Annotated[int, _sized("random zero-revolution transfers (per-call peers: a subset)", "--transfers")] = (
         1_000_000),
-    reference: Annotated[int, typer.Option(help="transfers checked against the mpmath propagation")] = 200,
+    reference: Annotated[int, _sized("transfers checked against the mpmath propagation", "--reference",
+                                     "MAX_REFERENCE")] = 200,
     repeats: RepeatsOption = 3,
     output: OutputOption = None,
     fmt: FormatOption = Format.table,
@@ -151,7 +179,7 @@ def lambert(
 
 
 def ephemeris(
-    epochs: Annotated[int, typer.Option(help="random TDB epochs 1900-2050")] = 100_000,
+    epochs: Annotated[int, _sized("random TDB epochs 1900-2050", "--epochs")] = 100_000,
     repeats: RepeatsOption = 3,
     output: OutputOption = None,
     fmt: FormatOption = Format.table,

@@ -34,7 +34,8 @@ def command(
     system = build(primary, secondary, r)
     mu = float(system.mass_ratio.value)
     title = f"Lagrange points of {primary} and {secondary}, mu = {mu:.10g} (rotating frame, origin at the barycentre)"
-    quantities = system.quantities(inputs.names(only), points=inputs.names(points))
+    asked, listed = inputs.names(only), inputs.names(points)
+    quantities = system.quantities(asked, points=listed)
     if plot:
         from orbits.plot import lagrange_plane
 
@@ -42,45 +43,68 @@ def command(
     if fmt == Format.json:
         render.emit(title, quantities, fmt.value)
     else:
-        render.print_tables(point_tables(system, quantities), title)
+        folding = [p for p in listed if asked is None or {"e_folding_time", f"{p}_e_folding_time"} & set(asked)]
+        if asked is None:  # the eigenvalues, (re, im) pairs, are in the JSON unless asked for by name
+            quantities = {name: q for name, q in quantities.items() if not name.endswith("_eigenvalues")}
+        render.print_tables(point_tables(system, quantities, folding), title)
 
 
-def point_tables(system: "RestrictedThreeBody", quantities: dict) -> list:
+def point_tables(system: "RestrictedThreeBody", quantities: dict, folding: list[str] = ()) -> list:
     """The binary's own quantities, then one row per point: position (in units of r and in length units),
-    distances, Jacobi constant, stability and e-folding time. The eigenvalues are in the JSON output."""
+    distances, Jacobi constant, stability and e-folding time (for the points in `folding`; a stable point has none,
+    its row says inf), a point without the asked value showing "-". Whatever has no column (eigenvalues asked for)
+    follows as rows of its own."""
     import astropy.units as u
     import numpy as np
 
     from orbits_cli import render
 
-    points = [p for p in ("L1", "L2", "L3", "L4", "L5") if any(name.startswith(f"{p}_") for name in quantities)]
+    points = [p for p in ("L1", "L2", "L3", "L4", "L5")
+              if p in folding or any(name.startswith(f"{p}_") for name in quantities)]
     binary = {name: q for name, q in quantities.items() if not name.startswith(tuple(f"{p}_" for p in points))}
+    shown = set(binary)
 
-    def stack(suffix):
-        return u.Quantity([quantities[f"{p}_{suffix}"] for p in points]) if points and all(
-            f"{p}_{suffix}" in quantities for p in points) else None
+    def stack(suffix, fill=np.nan):
+        names = [f"{p}_{suffix}" for p in points]
+        given = [name for name in names if name in quantities]
+        if not given:
+            return None, []
+        shown.update(given)
+        like = quantities[given[0]]
+        values = u.Quantity([quantities.get(name, np.full(np.shape(like), fill) << like.unit) for name in names])
+        return values, [name not in quantities for name in names]
+
+    def dashed(column, missing):
+        header, cells = column
+        return header, ["-" if gap else cell for cell, gap in zip(cells, missing)]
 
     columns = []
-    position = stack("position")
+    position, missing = stack("position")
     if position is not None:
         scaled = (position / system.separation).to_value(u.one)
-        columns += [("x / r", [render.number(v) for v in scaled[:, 0]]),
-                    ("y / r", [render.number(v) for v in scaled[:, 1]]),
-                    render.column("position", position[:, 0], "x", position),
-                    render.column("position", position[:, 1], "y", position)]
+        columns += [dashed(("x / r", [render.number(v) for v in scaled[:, 0]]), missing),
+                    dashed(("y / r", [render.number(v) for v in scaled[:, 1]]), missing),
+                    dashed(render.column("position", position[:, 0], "x", position), missing),
+                    dashed(render.column("position", position[:, 1], "y", position), missing)]
     for suffix, header in (("distance_to_primary", "to M"), ("distance_to_secondary", "to m"),
                            ("jacobi_constant", "Jacobi C")):
-        values = stack(suffix)
+        values, missing = stack(suffix)
         if values is not None:
-            columns.append(render.column(suffix, values, header))
-    rates = stack("growth_rate")
+            columns.append(dashed(render.column(suffix, values, header), missing))
+    rates, missing = stack("growth_rate")
     if rates is not None:
-        columns.append(("stable", ["yes" if rate == 0 else "no" for rate in rates.value]))
-        times = u.Quantity([quantities.get(f"{p}_e_folding_time", np.inf * u.s) for p in points])
-        columns.append(render.column("e_folding_time", times, "e-folding"))
+        columns.append(dashed(("stable", ["yes" if rate == 0 else "no" for rate in rates.value]), missing))
+    times, missing = stack("e_folding_time", fill=np.inf)
+    if folding:
+        times = times if times is not None else np.full(len(points), np.inf) << u.s
+        unasked = [p not in folding for p in points]
+        columns.append(dashed(render.column("e_folding_time", times, "e-folding"), unasked))
     tables = [render.quantity_table("", binary)] if binary else []
     if columns:
         tables += render.column_tables(("point", points), columns)
+    rest = {name: q for name, q in quantities.items() if name not in shown}
+    if rest:
+        tables.append(render.quantity_table("", rest))
     return tables
 
 

@@ -25,6 +25,7 @@ def command(
     from orbits_cli import render
     from orbits_cli.render import precision_tables
 
+    precision.error_target(target)  # before the runs
     chosen = [p for p in precision.problems(long=not quick) if problem is None or problem in p.name]
     if not chosen:
         raise typer.BadParameter(f"--problem: no problem name contains {problem!r}")

@@ -26,7 +26,7 @@ def command(
     break-up time from float64 round-off, and the central mass that makes a ring of n >= 7 stable. --plot
     integrates the ring with heyoka (or rebound) to 1.5 break-up times (20 periods if it is stable) and draws
     its shape deviation, the 1e-3 break-up level and snapshots."""
-    from orbits import Ring, inputs
+    from orbits import OrbitsError, Ring, inputs
     from orbits_cli import render
 
     ring = Ring.from_masses(
@@ -37,9 +37,16 @@ def command(
     )
     title = f"Ring of {n} bodies" + ("" if central_mass is None else f" about {central_mass}")
     quantities = ring.quantities(inputs.names(only))
+    about = None
+    if only is None and "growth_rate" not in quantities:  # left out for a reason, which is said
+        try:
+            ring.quantities(["growth_rate"])
+        except OrbitsError as err:
+            about = {"not computed": f"growth_rate and the break-up: {err}"}
+            title += f"; growth_rate and the break-up are not computed: {err}"
     if plot:
         save_plot(lambda: breakup_picture(ring), plot)
-    render.emit(title, quantities, fmt.value)
+    render.emit(title, quantities, fmt.value, about=about)
 
 
 def breakup_picture(ring: "Ring") -> tuple:

@@ -89,12 +89,14 @@ def _run(validate, scenes, backend_names, show_progress):
     columns = (TextColumn("{task.description}"), BarColumn(), TaskProgressColumn(), TimeElapsedColumn())
     with Progress(*columns, transient=True) as progress:
         task = progress.add_task("validating", total=len(scenes))
+        from orbits.display import printable
+
         names = [scene.name for scene in scenes]
         current = {"index": 0, "runs": 0, "last": 0.0}  # scene, backends finished in it, last fraction
 
         def advance(name):
             current.update(index=names.index(name), runs=0, last=0.0)
-            progress.update(task, description=f"validating {name}", completed=current["index"])
+            progress.update(task, description=f"validating {printable(name)}", completed=current["index"])
 
         def integrating(fraction):
             if fraction < current["last"]:  # the next backend started

@@ -48,7 +48,7 @@ _KERNEL_DEPENDENCIES = ("_kepler_shared.py", "_propagate_shared.py", "_lambert_s
 #: tests/core/test_fast_kepler.py, test_propagate.py, test_propagate_long_flights.py) and never import numba.
 AUTO_MIN_BATCH = 1 << 16
 
-_state = {"mode": None, "threads": None, "pool": None, "cache_dir": None, "announced": set()}
+_state = {"mode": None, "threads": None, "pool": None, "cache_dir": None, "announced": set(), "kernels": []}
 
 
 def _mode():
@@ -148,9 +148,11 @@ def jit(function=None, *, inline=False, contract=False):
         return numba.njit(**options)(function)
     previous, numba.config.CACHE_DIR = numba.config.CACHE_DIR, folder  # read when the decorator runs
     try:
-        return numba.njit(cache=True, **options)(function)
+        kernel = numba.njit(cache=True, **options)(function)
     finally:
         numba.config.CACHE_DIR = previous
+    _state["kernels"].append(kernel)  # its cached code is checked against its name (run)
+    return kernel
 
 
 def cache_dir():
@@ -199,24 +201,46 @@ def run(kernel, n, *arrays):
     """kernel(start, stop, *arrays) over [0, n), split into contiguous chunks run by parallel threads.
 
     Returns the sum of the kernels' integer results (they count invalid or unconverged elements, which the
-    caller then recomputes with the NumPy implementation). An unreadable on-disk cache is cleared, with one line
-    on stderr, and the kernels are bypassed for the rest of the process (returning n: recompute all).
+    caller then recomputes with the NumPy implementation). An on-disk cache that is unreadable, or that holds code
+    that is not the function it is filed under (cache files swapped or copied over one another: numba checks an
+    entry's signature, not whose code it is), is cleared, with one line on stderr, and the kernels are bypassed for
+    the rest of the process (returning n: recompute all).
     """
     try:
-        return _run(kernel, n, *arrays)
+        count = _run(kernel, n, *arrays)
     except _CORRUPT_CACHE as err:
-        _clear_corrupt_cache(err)
+        _clear_corrupt_cache(f"was unreadable ({type(err).__name__})")
         return n
+    except TypeError:  # e.g. "_halley expected 8 arguments, got 5": another function's code under this name
+        if _mismatched() is None:
+            raise
+        _clear_corrupt_cache(f"held {_mismatched()}")
+        return n
+    wrong = _mismatched()  # the same arity, another function's code: the counts (and results) are not this one's
+    if wrong is not None:
+        _clear_corrupt_cache(f"held {wrong}")
+        return n
+    return count
 
 
-def _clear_corrupt_cache(err):
+def _mismatched():
+    """"the code of A under the name B" for the first compiled kernel whose loaded code is another function's,
+    else None."""
+    for kernel in _state["kernels"]:
+        for result in kernel.overloads.values():
+            if result.fndesc.qualname != kernel.py_func.__qualname__:
+                return f"the code of {result.fndesc.qualname} under the name {kernel.py_func.__qualname__}"
+    return None
+
+
+def _clear_corrupt_cache(what):
     """Remove the cache folder's files, say so on stderr once, and use the NumPy implementations from now on."""
     folder = cache_dir()
     if folder:
         shutil.rmtree(folder, ignore_errors=True)
     _state["mode"] = False
-    print(f"orbits: the compiled-kernel cache {folder} was unreadable ({type(err).__name__}); cleared it, the "
-          f"next run compiles the kernels again", file=sys.stderr)
+    print(f"orbits: the compiled-kernel cache {folder} {what}; cleared it, the next run compiles the kernels again",
+          file=sys.stderr)
 
 
 def _run(kernel, n, *arrays):

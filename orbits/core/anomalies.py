@@ -12,7 +12,7 @@ unit-aware API, which has checked them where they entered, calls the `_unchecked
 import numpy as np
 from numpy.typing import ArrayLike
 
-from orbits.core.checks import check_finite
+from orbits.core.checks import broadcast, check_finite
 from orbits.core.elements import require_inside_asymptotes
 from orbits.core.errors import OrbitDomainError
 from orbits.core.kepler import (
@@ -24,37 +24,38 @@ from orbits.core.kepler import (
 )
 
 
-def _as_arrays(*values):
-    return np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in values))
+def _as_arrays(**values):
+    """The named values as float64 arrays broadcast together (checks.broadcast: a mismatch names them)."""
+    return broadcast(**values)
 
 
 def true_from_eccentric(E: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     """nu = 2 atan2(sqrt(1+e) sin(E/2), sqrt(1-e) cos(E/2)) (rad), 0 <= e < 1."""
-    E, e = _as_arrays(E, e)
+    E, e = _as_arrays(E=E, e=e)
     return 2.0 * np.arctan2(np.sqrt(1.0 + e) * np.sin(0.5 * E), np.sqrt(1.0 - e) * np.cos(0.5 * E))
 
 
 def eccentric_from_true(nu: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     """E = 2 atan2(sqrt(1-e) sin(nu/2), sqrt(1+e) cos(nu/2)) (rad), 0 <= e < 1."""
-    nu, e = _as_arrays(nu, e)
+    nu, e = _as_arrays(nu=nu, e=e)
     return 2.0 * np.arctan2(np.sqrt(1.0 - e) * np.sin(0.5 * nu), np.sqrt(1.0 + e) * np.cos(0.5 * nu))
 
 
 def mean_from_eccentric(E: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     """M = E - e sin E = (1 - e) E + e (E - sin E) (rad), without cancellation near e = 1."""
-    E, e = _as_arrays(E, e)
+    E, e = _as_arrays(E=E, e=e)
     return (1.0 - e) * E + e * x_minus_sin(E)
 
 
 def true_from_hyperbolic(H: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     """nu = 2 atan2(sqrt(e+1) tanh(H/2), sqrt(e-1)) (rad), e > 1 (no overflow for large H)."""
-    H, e = _as_arrays(H, e)
+    H, e = _as_arrays(H=H, e=e)
     return 2.0 * np.arctan2(np.sqrt(e + 1.0) * np.tanh(0.5 * H), np.sqrt(e - 1.0))
 
 
 def hyperbolic_from_true(nu: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     """H = 2 atanh(sqrt((e-1)/(e+1)) tan(nu/2)) (rad), e > 1 and 1 + e cos nu > 0."""
-    nu, e = _as_arrays(nu, e)
+    nu, e = _as_arrays(nu=nu, e=e)
     check_finite(nu, "true anomaly nu", "rad")
     require_inside_asymptotes(e, nu)
     return _hyperbolic_from_true(nu, e)
@@ -67,7 +68,7 @@ def _hyperbolic_from_true(nu, e):
 
 def mean_from_hyperbolic(H: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     """M = e sinh H - H = (e - 1) H + e (sinh H - H) (rad), without cancellation near e = 1."""
-    H, e = _as_arrays(H, e)
+    H, e = _as_arrays(H=H, e=e)
     return (e - 1.0) * H + e * sinh_minus_x(H)
 
 
@@ -110,14 +111,14 @@ def check_true_anomalies(nu: np.ndarray, e: np.ndarray) -> None:
 
 def mean_from_true(nu: ArrayLike, e: ArrayLike) -> np.ndarray:
     """Mean anomaly from the true anomaly for any conic: M (e != 1, rad) or Barker's W (e = 1)."""
-    nu, e = _as_arrays(nu, e)
+    nu, e = _as_arrays(nu=nu, e=e)
     check_true_anomalies(nu, e)
     return mean_from_true_unchecked(nu, e)
 
 
 def mean_from_true_unchecked(nu: ArrayLike, e: ArrayLike) -> np.ndarray:
     """mean_from_true for inputs that passed check_true_anomalies."""
-    nu, e = _as_arrays(nu, e)
+    nu, e = _as_arrays(nu=nu, e=e)
     out = np.empty_like(nu)
     ell, par, hyp = e < 1.0, e == 1.0, e > 1.0
     out[ell] = mean_from_eccentric(eccentric_from_true(nu[ell], e[ell]), e[ell])
@@ -129,7 +130,7 @@ def mean_from_true_unchecked(nu: ArrayLike, e: ArrayLike) -> np.ndarray:
 
 def true_from_mean(M: ArrayLike, e: ArrayLike) -> np.ndarray:
     """True anomaly (rad) from the mean anomaly M (e != 1) or Barker's W (e = 1), for any conic."""
-    M, e = _as_arrays(M, e)
+    M, e = _as_arrays(M=M, e=e)
     check_eccentricities(e)
     out = np.empty_like(M)
     ell, par, hyp = e < 1.0, e == 1.0, e > 1.0
@@ -144,7 +145,7 @@ def mean_motion(p: ArrayLike, e: ArrayLike, mu: ArrayLike) -> float | np.ndarray
 
     For e = 1 this is the rate of Barker's W = D + D**3 / 3 (W = n t), so t = M / n on every conic.
     """
-    p, e, mu = _as_arrays(p, e, mu)
+    p, e, mu = _as_arrays(p=p, e=e, mu=mu)
     one_minus_e2 = np.abs((1.0 - e) * (1.0 + e))
     return np.where(e == 1.0, 2.0, one_minus_e2**1.5) * np.sqrt(mu / p**3)
 

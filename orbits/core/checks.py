@@ -34,6 +34,23 @@ def check_eccentricity(
         )
 
 
+def broadcast_shape(**shapes: tuple[int, ...]) -> tuple[int, ...]:
+    """The shape the named shapes broadcast to; OrbitDomainError naming every argument with its shape otherwise
+    (NumPy's own message says only "arg 0" and "arg 1")."""
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{name} {tuple(shape)}" for name, shape in shapes.items())
+        raise OrbitDomainError(f"argument shapes do not broadcast together: {listing}") from None
+
+
+def broadcast(**arrays: ArrayLike) -> list[np.ndarray]:
+    """The named values as float64 arrays broadcast together, in order; broadcast_shape's error names them."""
+    values = [np.asarray(value, dtype=float) for value in arrays.values()]
+    broadcast_shape(**{name: value.shape for name, value in zip(arrays, values)})
+    return np.broadcast_arrays(*values)
+
+
 def first_where(mask: ArrayLike, *arrays: ArrayLike) -> list[float]:
     """The values of `arrays` (floats) at the first True of `mask`, all broadcast together: what an error message
     quotes for the first offending element of a batch."""

@@ -29,6 +29,7 @@ __all__ = [
     "kinetic_energy",
     "velocities_after",
     "line_of_impact",
+    "require_relative_motion",
     "oblique_velocities_after",
     "energy_lost",
     "perpendicular_foot",
@@ -98,9 +99,15 @@ def line_of_impact(v1: ArrayLike, v2: ArrayLike) -> np.ndarray:
     (IX.xiii). Raises OrbitDomainError where v1 = v2 (the bodies never meet)."""
     dv = np.asarray(v1, dtype=float) - np.asarray(v2, dtype=float)
     size = np.linalg.norm(dv, axis=-1)
-    if np.any(size == 0):
-        raise OrbitDomainError("relative velocity v1 - v2 = 0 m/s: the bodies do not approach, so they never collide")
+    require_relative_motion(size)
     return dv / size[..., None]
+
+
+def require_relative_motion(speed: ArrayLike) -> None:
+    """OrbitDomainError where the relative speed |v1 - v2| is 0: bodies at one velocity never meet, on a line as in
+    a plane (a head-on collision of equal velocities would report a collision that did not happen)."""
+    if np.any(np.asarray(speed) == 0):
+        raise OrbitDomainError("relative velocity v1 - v2 = 0 m/s: the bodies do not approach, so they never collide")
 
 
 def oblique_velocities_after(

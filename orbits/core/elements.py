@@ -17,7 +17,7 @@ Angle conventions (orientation R = R3(Omega) R1(i) R3(omega), as in Vallado and 
 import numpy as np
 from numpy.typing import ArrayLike
 
-from orbits.core.checks import check_finite
+from orbits.core.checks import broadcast, broadcast_shape, check_finite
 from orbits.core.errors import DegenerateOrbitError, OrbitDomainError
 
 TWO_PI = 2.0 * np.pi
@@ -44,7 +44,7 @@ def check_state(r: ArrayLike, v: ArrayLike, mu: ArrayLike) -> tuple[np.ndarray, 
         raise OrbitDomainError(f"gravitational parameter mu = {float(mu[mu <= 0].flat[0])!r} m3 / s2 must be positive")
     if np.any(_norm(r) == 0):
         raise OrbitDomainError("position r = (0, 0, 0) m coincides with the primary; |r| must be positive")
-    shape = np.broadcast_shapes(r.shape, v.shape, mu.shape + (1,))
+    shape = broadcast_shape(r=r.shape, v=v.shape, mu=mu.shape + (1,))
     return np.broadcast_to(r, shape), np.broadcast_to(v, shape), np.broadcast_to(mu, shape[:-1])
 
 
@@ -114,7 +114,7 @@ def state_to_elements_unchecked(
 ) -> tuple[float | np.ndarray, float | np.ndarray, float | np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """state_to_elements for a state that passed check_state's rules (finite, |r| > 0, mu > 0), broadcast here."""
     r, v, mu = (np.asarray(x, dtype=float) for x in (r, v, mu))
-    shape = np.broadcast_shapes(r.shape, v.shape, mu.shape + (1,))
+    shape = broadcast_shape(r=r.shape, v=v.shape, mu=mu.shape + (1,))
     r, v, mu = np.broadcast_to(r, shape), np.broadcast_to(v, shape), np.broadcast_to(mu, shape[:-1])
     h = np.cross(r, v)
     h2 = _dot(h, h)
@@ -158,7 +158,7 @@ def require_inside_asymptotes(e: ArrayLike, nu: ArrayLike) -> None:
     """Raise unless 1 + e cos nu > 0: on an open conic (e >= 1) the true anomaly lies strictly between the
     asymptotes, |nu| < arccos(-1/e) (mod 2 pi), where the point is at a finite distance (e >= 0 and finite nu are
     the caller's)."""
-    e, nu = np.broadcast_arrays(np.asarray(e, dtype=float), np.asarray(nu, dtype=float))
+    e, nu = broadcast(e=e, nu=nu)
     denominator = 1.0 + e * np.cos(nu)
     beyond = (e >= 1.0) & (denominator <= 0.0)
     if np.any(beyond):
@@ -174,7 +174,7 @@ def check_elements(p: ArrayLike, e: ArrayLike, inc: ArrayLike, nu: ArrayLike, mu
     """The rules on elements for direct core callers: finite p > 0, e >= 0, nu inside an open conic's
     asymptotes (check_conic), i in [0, pi] and finite mu > 0. The unit-aware API checks each value once at its
     edge (orbits.inputs) and calls elements_to_state_unchecked."""
-    p, e, inc, nu, mu = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (p, e, inc, nu, mu)))
+    p, e, inc, nu, mu = broadcast(p=p, e=e, inc=inc, nu=nu, mu=mu)
     check_conic(p, e, nu)
     check_finite(mu, "gravitational parameter mu", "m3 / s2")
     if np.any(mu <= 0):
@@ -202,9 +202,7 @@ def elements_to_state_unchecked(
     v = sqrt(mu / p) (-(sin u + e sin omega) n_hat + (cos u + e cos omega) m_hat), u = omega + nu,
     with n_hat = (cos Omega, sin Omega, 0) and m_hat = (-sin Omega cos i, cos Omega cos i, sin i).
     """
-    p, e, inc, raan, argp, nu, mu = np.broadcast_arrays(
-        *(np.asarray(x, dtype=float) for x in (p, e, inc, raan, argp, nu, mu))
-    )
+    p, e, inc, raan, argp, nu, mu = broadcast(p=p, e=e, inc=inc, raan=raan, argp=argp, nu=nu, mu=mu)
     sin_i, cos_i = _sin_cos(inc)
     sin_o, cos_o = np.sin(raan), np.cos(raan)
     n_hat = np.stack([cos_o, sin_o, np.zeros_like(cos_o)], axis=-1)

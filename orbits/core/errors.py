@@ -26,6 +26,11 @@ class SceneError(OrbitsError, ValueError):
     """A scene file or dictionary is invalid; the message names the source, the field and what is allowed."""
 
 
+class OutputError(OrbitsError, OSError):
+    """A file could not be written (a full disk, a folder where no file can be made); the message names the file and
+    the system's reason, in one line."""
+
+
 class ParameterError(OrbitsError, ValueError):
     """A model scene's parameter, or a combination of them (`name` None), that the model cannot run."""
 
@@ -49,5 +54,5 @@ class OrbitsWarning(UserWarning):
 
 
 class InsideBodyWarning(OrbitsWarning):
-    """A closest approach lies inside the primary (or inside both bodies' radii): a collision the two-body answer
-    passes through."""
+    """A closest approach lies inside a catalogue body (or inside both bodies' radii, for two bodies meeting): the
+    orbit passes through the body, or the two collide. The two-body answer is still computed."""

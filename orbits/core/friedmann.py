@@ -132,6 +132,16 @@ class Friedmann:
         future = np.sqrt(np.maximum(self._e2_at_inverse(np.minimum(b, 1.0)), 0.0))  # 0 at a turnaround, not -0.0
         return np.where(np.isinf(z), np.inf, np.where(z >= 0, past, future))
 
+    def efunc_at_scale_factor(self, a: ArrayLike) -> np.ndarray:
+        """E = H / H0 (dimensionless) at scale factor a > 0: efunc(1 / a - 1) for a <= 1, and for a > 1 from 1 / a
+        itself, never through z = 1 / a - 1, which rounds to -1 from a = 2**53 on (E**2 = P(a) / a**4 either way)."""
+        a = np.asarray(a, dtype=float)
+        with np.errstate(divide="ignore"):
+            inverse = 1.0 / a
+        past = self.efunc(np.where(a <= 1.0, inverse - 1.0, 0.0))
+        future = np.sqrt(np.maximum(self._e2_at_inverse(np.minimum(inverse, 1.0)), 0.0))
+        return np.where(a <= 1.0, past, future)
+
     def matter_density_parameter(self, z: ArrayLike) -> np.ndarray:
         """Omega_m(z) = Omega_m x**3 / E(z)**2 = Omega_m a / P(a) (dimensionless); 1 for Einstein-de Sitter."""
         z = self._redshift(z)
@@ -139,7 +149,8 @@ class Friedmann:
             return np.ones(z.shape)
         a, b = _scale_factor_and_inverse(z)
         past = self.omega_m * a ** (1 - self._leading_power) / self._p_reduced(a) if self.omega_m > 0 else 0.0
-        return np.where(z >= 0, past, self.omega_m * b**3 / self._e2_at_inverse(np.minimum(b, 1.0)))
+        future = np.minimum(b, 1.0)  # the branch np.where discards must not overflow either (b = 1 + z > 1e103)
+        return np.where(z >= 0, past, self.omega_m * future**3 / self._e2_at_inverse(future))
 
     def age(self, z: ArrayLike, hubble_time: float) -> float | np.ndarray:
         """t(z) (s): time from the big bang to redshift z, for t_H = 1 / H0 = hubble_time (s).

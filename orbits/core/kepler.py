@@ -53,7 +53,7 @@ from orbits.core._kepler_shared import (
     X_MINUS_SIN,
 )
 from orbits.core._roots import halley_in_bracket
-from orbits.core.checks import check_eccentricity, check_finite
+from orbits.core.checks import broadcast, check_eccentricity, check_finite
 from orbits.core.errors import OrbitDomainError
 from orbits.core.series import horner
 
@@ -156,7 +156,7 @@ def eccentric_anomaly(M: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     revolution as the reduced M, so E(M + 2 pi) == E(M) and E(-M) == -E(M) exactly.
     Accuracy: within 4 ulp of the exact root for e <= 1 - 2**-53 (tests/core/test_kepler.py).
     """
-    M, e = np.broadcast_arrays(np.asarray(M, dtype=float), np.asarray(e, dtype=float))
+    M, e = broadcast(M=M, e=e)
     if _fast.use(M.size):
         return _compiled("elliptic", _eccentric_anomaly_numpy, M, e)
     return _eccentric_anomaly_numpy(M, e)
@@ -279,7 +279,7 @@ def hyperbolic_anomaly(M: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     |M| <= 1e300 (tests/core/test_kepler.py). For H > 20 the equation is solved in the overflow-free
     form H + log1p(-exp(-2H)) = log((M + H) / (e / 2)).
     """
-    M, e = np.broadcast_arrays(np.asarray(M, dtype=float), np.asarray(e, dtype=float))
+    M, e = broadcast(M=M, e=e)
     if _fast.use(M.size):
         return _compiled("hyperbolic", _hyperbolic_anomaly_numpy, M, e)
     return _hyperbolic_anomaly_numpy(M, e)

@@ -69,7 +69,7 @@ from orbits.core._lambert_shared import (
     STEP_TOLERANCE,
     ZERO_REVOLUTION_TOLERANCE,
 )
-from orbits.core.checks import check_finite, require_positive
+from orbits.core.checks import broadcast, broadcast_shape, check_finite, require_positive
 from orbits.core.errors import ConvergenceError, DegenerateOrbitError, OrbitDomainError
 from orbits.core.series import horner
 
@@ -131,7 +131,7 @@ def geometry(r1: ArrayLike, r2: ArrayLike, prograde: bool = True, normal: ArrayL
 
     Raises DegenerateOrbitError for collinear r1 and r2 without a usable `normal`, and for the same direction.
     """
-    r1, r2 = np.broadcast_arrays(_position(r1, "r1"), _position(r2, "r2"))
+    r1, r2 = broadcast(r1=_position(r1, "r1"), r2=_position(r2, "r2"))
     n1, n2 = _norm(r1), _norm(r2)
     require_positive(n1, "|r1|", "m")
     require_positive(n2, "|r2|", "m")
@@ -430,8 +430,8 @@ def solve(r1: ArrayLike, r2: ArrayLike, tof: ArrayLike, mu: ArrayLike, revolutio
     require_positive(mu, "gravitational parameter mu", "m3/s2")
     revolutions = _revolutions(revolutions)
     r1, r2 = _position(r1, "r1"), _position(r2, "r2")
-    shape = np.broadcast_shapes(r1.shape[:-1], r2.shape[:-1], tof.shape, mu.shape, revolutions.shape,
-                                () if normal is None else np.shape(normal)[:-1])
+    shape = broadcast_shape(r1=r1.shape[:-1], r2=r2.shape[:-1], tof=tof.shape, mu=mu.shape,
+                            revolutions=revolutions.shape, normal=() if normal is None else np.shape(normal)[:-1])
     if _fast.use(int(np.prod(shape))):
         solution = _compiled(r1, r2, tof, mu, revolutions, branch, prograde, normal, shape)
         if solution is not None:
@@ -445,14 +445,24 @@ def solve(r1: ArrayLike, r2: ArrayLike, tof: ArrayLike, mu: ArrayLike, revolutio
     return _velocities(geo, shape, x, y, lam, k, sigma, rho, gamma, s)
 
 
+#: the most complete revolutions a transfer may make: 2**50, as many turns as an angle is reduced exactly over
+MAX_REVOLUTIONS = 2**50
+
+
 def _revolutions(revolutions):
-    """The revolution counts as an integer array, each a whole number >= 0."""
+    """The revolution counts as an integer array, each a whole number in [0, MAX_REVOLUTIONS]."""
+    if isinstance(revolutions, int) and not isinstance(revolutions, bool) and revolutions > MAX_REVOLUTIONS:
+        raise OrbitDomainError(f"revolutions N = {revolutions} is outside [0, 2**50]: a transfer of more turns "
+                               f"cannot place its end point in float64")
     n = np.asarray(revolutions)
     whole = np.issubdtype(n.dtype, np.integer) or (
         np.issubdtype(n.dtype, np.floating) and np.all(np.isfinite(n)) and np.all(n == np.round(n)))
     if not whole or np.any(n < 0):
         bad = n.flat[0] if not whole and n.size else n[n < 0].flat[0] if n.size else n
         raise OrbitDomainError(f"revolutions N = {bad!r} must be a whole number >= 0")
+    if np.any(n > MAX_REVOLUTIONS):
+        raise OrbitDomainError(f"revolutions N = {n[n > MAX_REVOLUTIONS].flat[0]!r} is outside [0, 2**50]: a "
+                               f"transfer of more turns cannot place its end point in float64")
     return n.astype(np.int64)
 
 

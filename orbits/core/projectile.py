@@ -242,19 +242,22 @@ def _hodograph_g(p):
     return p * np.hypot(1.0, p) + np.arcsinh(p)
 
 
-def _hodograph_difference(upper, lower):
-    """G(upper) - G(lower) for upper >= lower (upper a float, lower an array), without cancellation when both have
-    the same sign: each term's difference is rewritten as a quotient, a s_a - b s_b = (a**2 - b**2)(1 + a**2 + b**2)
-    / (a s_a + b s_b) and asinh(a) - asinh(b) = asinh((a**2 - b**2) / (a s_b + b s_a)), s_x = sqrt(1 + x**2)."""
-    lower = np.asarray(lower, dtype=float)
+def _hodograph_step(anchor, width):
+    """G(anchor + width) - G(anchor) (anchor a float, width an array of either sign), from the width itself: when both
+    ends have one sign each term's difference is rewritten as a quotient, a s_a - b s_b = (a**2 - b**2)(1 + a**2 +
+    b**2) / (a s_a + b s_b) and asinh(a) - asinh(b) = asinh((a**2 - b**2) / (a s_b + b s_a)), s_x = sqrt(1 + x**2),
+    with a**2 - b**2 = |width| (a + b): no cancellation, and a width below the anchor's last bit still counts."""
+    width = np.asarray(width, dtype=float)
+    other = anchor + width
+    upper, lower = np.maximum(anchor, other), np.minimum(anchor, other)
     direct = _hodograph_g(upper) - _hodograph_g(lower)
     same = upper * lower > 0
-    a = np.where(same, abs(upper) if upper > 0 else -lower, 1.0)  # a >= b > 0 on the same-sign side
-    b = np.where(same, lower if upper > 0 else -upper, 0.5)
+    a = np.where(same, np.where(upper > 0, upper, -lower), 1.0)  # a >= b > 0 on the same-sign side
+    b = np.where(same, np.where(upper > 0, lower, -upper), 0.5)
     sa, sb = np.hypot(1.0, a), np.hypot(1.0, b)
-    squares = (a - b) * (a + b)
+    squares = np.where(same, np.abs(width) * (a + b), 0.75)
     quotient = squares * (1.0 + a * a + b * b) / (a * sa + b * sb) + np.arcsinh(squares / (a * sb + b * sa))
-    return np.where(same, quotient, direct)
+    return np.copysign(np.where(same, quotient, direct), width)
 
 
 #: Gauss-Legendre nodes and weights on [-1, 1] for each panel of the quadratic-drag quadrature
@@ -267,8 +270,9 @@ class QuadraticDragPath:
 
     u(p) = U v_t is the horizontal velocity, 1 / U**2 = 1 / U0**2 + G(p0) - G(p); then
     t = int_p^p0 U dp', x = int_p^p0 U**2 dp', y - h = int_p^p0 U**2 p' dp' (XX.iv, derived from dpsi/dt =
-    -g cos(psi) / v and du/dt = -g v u / v_t**2). The quadrature panels are graded toward p0, where the integrand's
-    branch point p* (1 / U(p*)**2 = 0) may lie close for launches much faster than v_t.
+    -g cos(psi) / v and du/dt = -g v u / v_t**2). The quadrature runs in the drop d = p0 - p, so that the
+    distance to the integrand's branch point p* = p0 + gap (1 / U(p*)**2 = 0) is gap + d, exact however small the gap
+    (a launch 1e9 times faster than v_t has gap ~ 1e-18, below p0's last bit); the panels are graded toward it.
     """
 
     def __init__(self, speed: float, angle: float, height: float):
@@ -285,7 +289,7 @@ class QuadraticDragPath:
         hi = target / 2.0  # G' = 2 sqrt(1 + p**2) >= 2
         gap = hi
         for _ in range(200):
-            value = float(_hodograph_difference(self.p0 + gap, self.p0)) - target
+            value = float(_hodograph_step(self.p0, gap)) - target
             if value > 0:
                 hi = gap
             else:
@@ -301,53 +305,67 @@ class QuadraticDragPath:
 
     def horizontal_speed_squared(self, p):
         """U(p)**2 (dimensionless), p <= p0 an array."""
-        return 1.0 / (self.inverse_u0_squared + _hodograph_difference(self.p0, p))
+        return self._speed_squared_after(self.p0 - np.asarray(p, dtype=float))
 
-    def _panels(self, lower):
-        """Panel edges from p0 down to `lower`: each width at most the distance to the branch point p* and at most
-        max(1/2, |p| / 2) (the other singularities of the integrand, at p = +-i), so every panel lies at least its
-        own width from them; widths grow geometrically away from p*."""
-        edges = [self.p0]
-        while edges[-1] > lower:
-            distance = self.p0 + self.branch_gap - edges[-1]
-            edges.append(max(edges[-1] - min(distance, max(0.5, 0.5 * abs(edges[-1]))), lower))
+    def _speed_squared_after(self, drop):
+        """U**2 at p = p0 - drop (drop >= 0 an array): 1 / (1 / U0**2 - (G(p0 - drop) - G(p0)))."""
+        return 1.0 / (self.inverse_u0_squared - _hodograph_step(self.p0, -drop))
+
+    def _panels(self, end):
+        """Panel edges in the drop d = p0 - p, from 0 to `end`: each width at most the distance gap + d to the
+        branch point and at most max(1/2, |p| / 2) (the other singularities of the integrand, at p = +-i), so every
+        panel lies at least its own width from them; widths grow geometrically away from p*, and each edge moves
+        on by at least its last bit."""
+        edges = [0.0]
+        while edges[-1] < end:
+            drop = edges[-1]
+            width = min(self.branch_gap + drop, max(0.5, 0.5 * abs(self.p0 - drop)))
+            edges.append(min(max(drop + width, math.nextafter(drop, math.inf)), end))
         return np.array(edges)
 
     def integrals(self, lower):
         """(t, x, y - h) from p0 down to p = lower (dimensionless)."""
-        edges = self._panels(lower)
-        left, right = edges[1:], edges[:-1]
+        return self.integrals_to(self.p0 - lower)
+
+    def integrals_to(self, end):
+        """(t, x, y - h) from p0 down to p = p0 - end (dimensionless), by Gauss-Legendre panels in the drop."""
+        edges = self._panels(end)
+        left, right = edges[:-1], edges[1:]
         half, middle = 0.5 * (right - left), 0.5 * (right + left)
-        p = middle[:, None] + half[:, None] * _GL_NODES
+        drop = middle[:, None] + half[:, None] * _GL_NODES
         weights = half[:, None] * _GL_WEIGHTS
-        u2 = self.horizontal_speed_squared(p)
+        u2 = self._speed_squared_after(drop)
+        p = self.p0 - drop
         return (float(np.sum(weights * np.sqrt(u2))), float(np.sum(weights * u2)), float(np.sum(weights * u2 * p)))
 
-    def landing_slope(self):
-        """p at y = 0: y(p) = h + int_p^p0 U**2 p' dp' increases with p below 0; safeguarded Newton with
-        dy/dp = -U(p)**2 p, bracketed below by doubling."""
-        top = min(self.p0, 0.0)
-        rise = self.integrals(top)[2] if self.p0 > 0 else 0.0
-        peak = self.height + rise  # y at p = min(p0, 0)
+    def landing_drop(self):
+        """The drop d = p0 - p at y = 0: y = h + int U**2 p' dp' decreases with d past the apex (p < 0);
+        safeguarded Newton in d with dy/dd = U**2 p, bracketed above by doubling. Solved in the drop, not in p,
+        so that a nearly straight path (a fast launch downwards) lands within its own tiny bend. It stops on a step
+        below 2**-50 of d, or on a height within 2**-46 of the apex height, the rounding of y = rise - fall: a steep
+        landing (a launch far faster than v_t) has dy/dp ~ 1 / |p|, and y's rounding moves d by more than 2**-50 of
+        itself."""
+        top = max(self.p0, 0.0)  # the apex, p = 0, or the start when launched downwards
+        peak = self.height + (self.integrals_to(top)[2] if top > 0 else 0.0)
         if peak <= 0:
             return top
-        lo, hi = top - 1.0, top
-        while self.height + self.integrals(lo)[2] > 0:
-            lo, hi = 2.0 * lo - 1.0, lo
-        p = 0.5 * (lo + hi)
+        lo, hi = top, top + 1.0
+        while self.height + self.integrals_to(hi)[2] > 0:
+            lo, hi = hi, 2.0 * hi + 1.0
+        d = 0.5 * (lo + hi)
         for _ in range(200):
-            y = self.height + self.integrals(p)[2]
+            y = self.height + self.integrals_to(d)[2]
             if y > 0:
-                hi = p
+                lo = d
             else:
-                lo = p
-            slope = -float(self.horizontal_speed_squared(np.array(p))) * p
-            new = p - y / slope if slope > 0 else 0.5 * (lo + hi)
+                hi = d
+            slope = float(self._speed_squared_after(np.array(d))) * (self.p0 - d)
+            new = d - y / slope if slope < 0 else 0.5 * (lo + hi)
             if not lo <= new <= hi:
                 new = 0.5 * (lo + hi)
-            if abs(new - p) <= 2.0**-50 * max(1.0, abs(new)) or y == 0:
+            if abs(new - d) <= 2.0**-50 * new or abs(y) <= 2.0**-46 * max(peak, 1.0):
                 return new
-            p = new
+            d = new
         raise ConvergenceError(f"quadratic-drag landing: no convergence from speed {self.speed!r} v_t, "
                                f"angle {self.angle!r} rad, height {self.height!r} v_t**2 / g")
 
@@ -398,13 +416,14 @@ def _one_quadratic_flight(speed, angle, height, terminal_speed, g):
         return (total * time_unit, 0.0, apex * length_unit, apex_time * time_unit, 0.0, landing * terminal_speed,
                 -0.5 * math.pi)
     path = QuadraticDragPath(v, angle, h)
-    p_land = path.landing_slope()
-    t, x, _ = path.integrals(p_land)
+    drop = path.landing_drop()
+    p_land = path.p0 - drop
+    t, x, _ = path.integrals_to(drop)
     if path.p0 > 0:
         apex_t, apex_x, rise = path.integrals(0.0)
     else:
         apex_t, apex_x, rise = 0.0, 0.0, 0.0
-    landing_u = math.sqrt(float(path.horizontal_speed_squared(np.array(p_land))))
+    landing_u = math.sqrt(float(path._speed_squared_after(np.array(drop))))
     return (t * time_unit, x * length_unit, (h + rise) * length_unit, apex_t * time_unit, apex_x * length_unit,
             landing_u * math.hypot(1.0, p_land) * terminal_speed, math.atan(p_land))
 

@@ -95,7 +95,7 @@ from orbits.core._propagate_shared import (
     SMALLEST_MEAN_MOTION_SQUARED,
 )
 from orbits.core._roots import halley_in_bracket
-from orbits.core.checks import check_finite
+from orbits.core.checks import broadcast_shape, check_finite
 from orbits.core.elements import check_state
 from orbits.core.errors import DegenerateOrbitError
 from orbits.core.kepler import markley_starter, reduce_two_pi, sixth_order_step
@@ -720,7 +720,7 @@ def _propagate_numpy(r0, v0, mu, dt):
     r0, v0, mu = check_state(r0, v0, mu)
     dt = np.asarray(dt, dtype=float)
     check_finite(dt, "time step dt", "s")
-    batch = np.broadcast_shapes(mu.shape, dt.shape)
+    batch = broadcast_shape(**{"r0, v0 and mu": mu.shape, "dt": dt.shape})
     r0, v0 = np.broadcast_to(r0, batch + (3,)).reshape(-1, 3), np.broadcast_to(v0, batch + (3,)).reshape(-1, 3)
     mu, dt = np.broadcast_to(mu, batch).reshape(-1), np.broadcast_to(dt, batch).reshape(-1)
     h = np.cross(r0, v0)

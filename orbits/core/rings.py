@@ -29,18 +29,23 @@ NEUTRAL_GROWTH = 1e-9
 
 #: Largest n for the linear-stability analysis, which costs O(n**2) operations and memory per call.
 MAX_STABILITY_COUNT = 4096
+#: Largest n of a ring: its csc sum takes O(n) time and memory (80 MB at the limit)
+MAX_COUNT = 10_000_000
 
 _J = np.array([[0.0, 1.0], [-1.0, 0.0]])
 _CHUNK = 1 << 18  # (mode, pair) elements handled at once when building the mode matrices
 
 
 def check_count(n: int) -> int:
-    """n as a Python int; TypeError unless an integer (bool excluded), OrbitDomainError unless n >= 2."""
+    """n as a Python int; TypeError unless an integer (bool excluded), OrbitDomainError unless 2 <= n <= MAX_COUNT."""
     if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)):
         kind = type(n).__name__
         raise TypeError(f"number of ring bodies n = {n!r} is a {kind}; it must be an integer (int or numpy integer)")
     if n < 2:
         raise OrbitDomainError(f"number of ring bodies n = {int(n)} is outside [2, inf): a ring needs 2 bodies or more")
+    if n > MAX_COUNT:
+        raise OrbitDomainError(f"number of ring bodies n = {int(n)} is outside [2, {MAX_COUNT}]: the ring's sum over "
+                               f"its bodies takes time and memory in proportion to n")
     return int(n)
 
 
@@ -153,7 +158,7 @@ def _check_stability_inputs(n, central_ratio):
     if n > MAX_STABILITY_COUNT:
         raise OrbitDomainError(
             f"number of ring bodies n = {n} is outside [2, {MAX_STABILITY_COUNT}] for the linear-stability analysis, "
-            "which costs O(n**2); the ring's other quantities have no limit"
+            f"which costs O(n**2); the ring's other quantities go up to n = {MAX_COUNT}"
         )
     beta = float(central_ratio)
     if not (np.isfinite(beta) and beta >= 0.0):

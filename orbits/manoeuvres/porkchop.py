@@ -45,15 +45,10 @@ from astropy.time import Time, TimeDelta
 from astropy.utils.masked import Masked
 
 from orbits import display, ephemeris, inputs, units
-from orbits.core import frames
 from orbits.core.errors import OrbitDomainError
-from orbits.manoeuvres.lambert import lambert
+from orbits.manoeuvres.lambert import ECLIPTIC_POLE, SUN_GM, lambert
 from orbits.tables import quantity_table
 
-#: the Sun's GM (m3/s2) used for the transfers: JPL DE430's, the mass that goes with the ephemeris
-SUN_GM = ephemeris.DE430_GM["Sun"]
-#: the north pole of the ecliptic of J2000 in the ICRF: a prograde transfer's angular momentum points to its side
-ECLIPTIC_POLE = frames.ecliptic_to_equatorial(np.array([0.0, 0.0, 1.0]))
 #: the largest grid computed (cells): 4 million cells take about 0.5 GB of float64 arrays
 MAX_CELLS = 4_000_000
 KM2_PER_S2 = u.km**2 / u.s**2
@@ -75,10 +70,19 @@ def _window(value: Any, name: str) -> tuple[Time, Time]:
     return start, end
 
 
-def _dates(start: Time, end: Time, step_days: float) -> Time:
-    """start, start + step, ... up to end (within a microsecond), TDB."""
+def _date_count(start: Time, end: Time, step_days: float) -> int:
+    """How many dates start, start + step, ... reach up to end (within a microsecond): counted, not made."""
     span = float((end - start).to_value(u.day))
-    count = int(np.floor(span / step_days + 1e-9)) + 1
+    return int(np.floor(span / step_days + 1e-9)) + 1
+
+
+def _count(n: int) -> str:
+    """A count with thousands separators, or to 3 digits beyond 1e15 (where a float's span / step has no more)."""
+    return f"{n:,}" if n < 1e15 else f"{n:.3g}"
+
+
+def _dates(start: Time, count: int, step_days: float) -> Time:
+    """start, start + step, ... (`count` dates), TDB."""
     return start + TimeDelta(np.arange(count) * step_days, format="jd", scale="tdb")
 
 
@@ -91,10 +95,21 @@ def _date_text(when: Time) -> str:
     return f"{when.tdb.iso[:10]}"
 
 
+def _edges(row: int, col: int, shape: tuple[int, int]) -> tuple[str, ...]:
+    """The sides of an (arrival, launch) grid the cell (row, col) lies on, along axes of more than one date."""
+    sides = []
+    for index, size, axis in ((col, shape[1], "launch"), (row, shape[0], "arrival")):
+        if size > 1 and index in (0, size - 1):
+            sides.append(f"{'first' if index == 0 else 'last'} {axis} date")
+    return tuple(sides)
+
+
 @dataclass(frozen=True, eq=False, repr=False)
 class PorkchopMinimum(display.Displayed):
     """The grid cell where one figure of merit (`kind`: C3, arrival v_inf or total v_inf) is least: its dates and
-    the transfer's C3 (m2/s2), departure and arrival v_inf (m/s) and time of flight (s), SI floats."""
+    the transfer's C3 (m2/s2), departure and arrival v_inf (m/s) and time of flight (s), SI floats. `edges` names
+    the sides of the grid the cell lies on ("first launch date", ...; only along an axis of more than one date):
+    a least value there may be no minimum at all, the merit still falling outside the windows."""
 
     kind: str
     launch: Time
@@ -103,6 +118,15 @@ class PorkchopMinimum(display.Displayed):
     departure_v_inf_si: float
     arrival_v_inf_si: float
     tof_si: float
+    edges: tuple[str, ...] = ()
+
+    @property
+    def edge_note(self) -> str | None:
+        """A sentence when the cell lies on the grid's edge, else None."""
+        if not self.edges:
+            return None
+        return (f"least {self.kind} on the grid's edge ({' and '.join(self.edges)}): the minimum may lie outside "
+                f"the windows")
 
     @property
     def c3(self) -> u.Quantity:
@@ -152,7 +176,8 @@ class PorkchopMinimum(display.Displayed):
             "PorkchopMinimum", self.kind, f"launch {_date_text(self.launch)}", f"arrival {_date_text(self.arrival)}",
             "C3 = " + display.summary(self.c3, digits=4), "v_inf arrival = " + display.summary(self.arrival_v_inf,
                                                                                             digits=4),
-            "tof = " + display.summary(self.time_of_flight, digits=4))
+            "tof = " + display.summary(self.time_of_flight, digits=4),
+            f"on the grid's edge ({', '.join(self.edges)})" if self.edges else "")
 
 
 #: what PorkchopMinimum.quantities() lists
@@ -214,11 +239,13 @@ class Porkchop(display.Displayed):
             raise OrbitDomainError(
                 f"porkchop: the arrival window ends ({arrival_window[1].iso[:16]} TDB) before the launch window "
                 f"starts ({launch_window[0].iso[:16]} TDB): no transfer has a positive time of flight")
-        launches, arrivals = _dates(*launch_window, step_days), _dates(*arrival_window, step_days)
-        if launches.size * arrivals.size > MAX_CELLS:
-            raise OrbitDomainError(f"porkchop: {launches.size} launch x {arrivals.size} arrival dates = "
-                                   f"{launches.size * arrivals.size:,} cells; at most {MAX_CELLS:,}: take a longer "
+        counts = _date_count(*launch_window, step_days), _date_count(*arrival_window, step_days)
+        if counts[0] * counts[1] > MAX_CELLS:  # before any date is made
+            raise OrbitDomainError(f"porkchop: {_count(counts[0])} launch x {_count(counts[1])} arrival dates = "
+                                   f"{_count(counts[0] * counts[1])} cells; at most {MAX_CELLS:,}: take a longer "
                                    f"step or shorter windows")
+        launches, arrivals = _dates(launch_window[0], counts[0], step_days), _dates(arrival_window[0], counts[1],
+                                                                                     step_days)
         start = ephemeris.state(names[0], launches, "Sun", source=source)
         end = ephemeris.state(names[1], arrivals, "Sun", source=source)
         return cls._solved(names, launches, arrivals, start, end)
@@ -302,7 +329,8 @@ class Porkchop(display.Displayed):
         row, col = np.unravel_index(flat, self.shape)
         return PorkchopMinimum(kind, self.launch_dates[col], self.arrival_dates[row],
                                float(self._departure_v_inf[row, col] ** 2), float(self._departure_v_inf[row, col]),
-                               float(self._arrival_v_inf[row, col]), float(self._tof[row, col]))
+                               float(self._arrival_v_inf[row, col]), float(self._tof[row, col]),
+                               _edges(row, col, self.shape))
 
     @cached_property
     def minimum_c3(self) -> PorkchopMinimum:

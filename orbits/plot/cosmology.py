@@ -74,7 +74,7 @@ def hubble_diagram(
     order = [label for label in models if label != emphasis] + ([emphasis] if emphasis in models else [])
     for k, label in enumerate(order):
         style = dict(color="k", lw=2.6, zorder=3) if label == emphasis else dict(color=f"C{k}", lw=1.4)
-        ax.plot(z, models[label].distance_modulus(z).to_value(u.one), label=label, **style)
+        ax.plot(z, models[label].distance_modulus(z).to_value(u.mag), label=label, **style)
     ax.set_xscale("log")
     ax.set_xlabel("redshift z")
     ax.set_ylabel("distance modulus m - M [mag]")

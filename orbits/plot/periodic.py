@@ -173,9 +173,7 @@ def _continued(nu: np.ndarray) -> np.ndarray:
 
 
 def _wrap(text: str, width: int) -> str:
-    import textwrap
-
-    return "\n".join(textwrap.wrap(text, width))
+    return display.filled(text, width)
 
 
 def stability_diagram(family: Any, ax: Any = None) -> tuple[Any, Any]:

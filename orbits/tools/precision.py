@@ -268,8 +268,18 @@ def _row(method, value, problem, scipy_max_periods):
     return Row(method.name, _label(method, value), problem.name, error, seconds, setup, note)
 
 
+def error_target(target: float) -> float:
+    """The error a summary asks each method to reach, checked: a finite number > 0 (relative to the orbit's size);
+    OrbitDomainError otherwise (-1 or nan asked nothing that a run could reach)."""
+    from orbits.core.checks import require_positive
+
+    require_positive(target, "error target", "")
+    return float(target)
+
+
 def summary(rows: Sequence[Row], target: float = 1e-10) -> list[dict[str, object]]:
-    """Per problem and method: the best error reached, and the fastest run reaching `target` (or None)."""
+    """Per problem and method: the best error reached, and the fastest run reaching `target` (error_target)."""
+    target = error_target(target)
     out = []
     for problem in dict.fromkeys(r.problem for r in rows):
         for method in dict.fromkeys(r.method for r in rows if r.problem == problem):

@@ -26,7 +26,7 @@ from collections.abc import Callable, Iterator
 import numpy as np
 
 from orbits.core.errors import OrbitDomainError
-from orbits.nbody import ExponentialDrag, NBodyProblem, NBodyResult, ZonalHarmonics, report
+from orbits.nbody import ExponentialDrag, NBodyProblem, NBodyResult, ZonalHarmonics, python_sigint, report
 
 COMPACT_MODE_MIN_BODIES = 4
 
@@ -62,7 +62,8 @@ def integrate(
     start = time.perf_counter()
     cache_hit = key in _CACHE
     if not cache_hit:
-        _CACHE[key] = _compile(heyoka, *key)
+        with python_sigint():
+            _CACHE[key] = _compile(heyoka, *key)
     ta = copy.copy(_CACHE[key])
     setup_time = time.perf_counter() - start
     dtype = FP_TYPES[fp_type]
@@ -73,7 +74,8 @@ def integrate(
     pars = np.append(pars, _force_parameters(problem.forces))
     ta.pars[:] = pars.astype(dtype)
     start = time.perf_counter()
-    states = _propagate_arcs(heyoka, ta, problem, dtype)
+    with python_sigint():  # its step callback is Python: a Ctrl-C raises there, whatever handler was left behind
+        states = _propagate_arcs(heyoka, ta, problem, dtype)
     wall_time = time.perf_counter() - start
     states = states.reshape(problem.times.size, problem.n_bodies, 6)
     settings = {

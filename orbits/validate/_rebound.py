@@ -18,7 +18,7 @@ import time
 import numpy as np
 
 from orbits.core.errors import OrbitDomainError
-from orbits.nbody import ExponentialDrag, NBodyProblem, NBodyResult, ZonalHarmonics, report
+from orbits.nbody import ExponentialDrag, NBodyProblem, NBodyResult, ZonalHarmonics, python_sigint, report
 
 INTEGRATORS = ("ias15", "whfast", "bs")
 #: IAS15's step-size rules. PRS23 (the default) stalls on a ring of small bodies about a dominant central mass
@@ -122,15 +122,22 @@ def _run_adaptive(rebound, problem: NBodyProblem, integrator: str, configure):
         setup_time += time.perf_counter() - start
         start = time.perf_counter()
         for k in arc.outputs:
-            sim.integrate(float(problem.times[k]), exact_finish_time=1)
+            _integrate_to(sim, float(problem.times[k]))
             reached[k] = sim.t
             positions[k], velocities[k] = _snapshot(sim)
             report(problem.times[k], problem.times[-1])
         if sim.t < arc.end:
-            sim.integrate(arc.end, exact_finish_time=1)
+            _integrate_to(sim, arc.end)
         r, v = _snapshot(sim)
         wall_time += time.perf_counter() - start
     return reached, positions, velocities, wall_time, setup_time, settings
+
+
+def _integrate_to(sim, t: float) -> None:
+    """sim.integrate(t, exact_finish_time=1), with Python's Ctrl-C handler back in place after it (rebound installs
+    its own during the call and leaves it behind: orbits.nbody.python_sigint)."""
+    with python_sigint():
+        sim.integrate(t, exact_finish_time=1)
 
 
 def _reboundx_effects(sim, problem: NBodyProblem, integrator: str):

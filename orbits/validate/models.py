@@ -20,7 +20,7 @@ import numpy as np
 
 from orbits.core import lagrange
 from orbits.core.errors import OrbitsError, ParameterError, SceneError
-from orbits.nbody import NBodyProblem
+from orbits.nbody import NBodyProblem, check_states
 from orbits.scene import MODEL_KEYS, show, unknown_keys
 from orbits.validate.builders import (
     POINTS,
@@ -75,9 +75,10 @@ def _plan_model_scene(model: ModelScene) -> Plan:
 
 def _expanding_universe(n_shells=8, duration=20.0, outputs=40):
     """The notes' sphere of test shells (XXIV) expanding at the zero-energy speed about a unit mass."""
-    if outputs * (n_shells + 1) > MAX_STATES:
-        raise ParameterError(None, f"outputs x bodies = {outputs} x {n_shells + 1} = {outputs * (n_shells + 1)} "
-                             f"stored states, more than {MAX_STATES}: lower outputs or n_shells")
+    try:
+        check_states(outputs, n_shells + 1)
+    except OrbitsError as err:
+        raise ParameterError(None, f"{err}, or lower n_shells") from None
     start = time.perf_counter()
     problem, expected = expanding_sphere_problem(n_shells, duration=duration, n_times=outputs + 1)
     seconds = time.perf_counter() - start
@@ -337,8 +338,6 @@ def missing_extra(name: str) -> str | None:
 
 # ---- parameters of a model scene ------------------------------------------------------------------------------
 MAX_OUTPUTS = 1_000_000
-#: outputs x bodies: the states one trajectory stores (positions alone take 24 bytes each)
-MAX_STATES = 10_000_000
 MAX_SHELLS = 1000
 #: code units; the shells then reach r ~ 1e4, and runs stay short (a millisecond per 1e5 time units)
 MAX_DURATION = 1e6

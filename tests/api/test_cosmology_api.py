@@ -74,8 +74,8 @@ def test_densities_are_completed_by_the_friedmann_constraint():
         Cosmology.from_densities(70 * KM_S_MPC, Ok0=0.1)
     with pytest.raises(OrbitDomainError, match="sum to"):
         Cosmology.from_densities(70 * KM_S_MPC, Om0=0.3, Ol0=0.6, Ok0=0.0)
-    with pytest.raises(OrbitDomainError, match="Omega_Lambda = -0.5 is outside"):
-        Cosmology.from_densities(70 * KM_S_MPC, Om0=1.5)
+    with pytest.raises(OrbitDomainError, match=r"Omega_Lambda = -0.5 follows from Om0 = 1.5 in a flat universe"):
+        Cosmology.from_densities(70 * KM_S_MPC, Om0=1.5)  # a density the user never gave: the message says so
 
 
 # ---- astropy.cosmology as the reference -------------------------------------------------------------------
@@ -336,3 +336,43 @@ def test_sphere_from_mass_and_its_errors():
 
 def test_docstring_examples_run():
     assert doctest.testmod(orbits.cosmology).failed == 0
+
+
+# ---- values beyond float64, and times beyond z = -1 -----------------------------------------------------------
+
+
+@pytest.mark.parametrize("model", [Cosmology.einstein_de_sitter(0.5e-10 / u.yr),
+                                   Cosmology.from_densities(67.66 * KM_S_MPC, Om0=0.3)])
+def test_a_finite_value_beyond_float64_is_an_error_not_inf(model):
+    """luminosity_distance(1e300) returned inf with an overflow warning; H and rho_c read inf at finite z."""
+    with pytest.raises(OrbitDomainError, match=r"the luminosity distance D_L at z = 1e\+300 is larger than float64"):
+        model.luminosity_distance(1e300)
+    with pytest.raises(OrbitDomainError, match=r"the Hubble parameter H at z = 1e\+300 is larger than float64"):
+        model.hubble_parameter(1e300)
+    with pytest.raises(OrbitDomainError, match=r"the critical density rho_c at z = 1e\+200 is larger than float64"):
+        model.critical_density(1e200)
+    assert model.luminosity_distance(np.inf).value == np.inf and model.hubble_parameter(np.inf).value == np.inf
+    assert model.density_parameter(1e200).value == 1.0  # matter dominates; no overflow in the unused branch
+
+
+def test_the_distance_modulus_stays_finite_where_the_luminosity_distance_does_not():
+    import mpmath
+
+    model = Cosmology.einstein_de_sitter(0.5e-10 / u.yr)
+    for z in (1.0, 1e10, 1e300):
+        transverse = model.comoving_distance(z).to_value(u.m)  # flat: D_M = D_C
+        with mpmath.workdps(40):
+            ten_parsecs = mpmath.mpf(orbits.cosmology.TEN_PARSECS)
+            exact = 5 * mpmath.log10((1 + mpmath.mpf(z)) * mpmath.mpf(transverse) / ten_parsecs)
+        assert model.distance_modulus(z).value == pytest.approx(float(exact), rel=4e-16, abs=0)  # measured 1 ulp
+
+
+def test_a_time_so_late_that_z_rounds_to_minus_one_names_the_time():
+    """--t '1e30 Gyr' blamed a redshift z = -1 the user never gave."""
+    model = Cosmology.einstein_de_sitter(0.5e-10 / u.yr)
+    with pytest.raises(OrbitDomainError, match=r"t = 1e\+30 Gyr is so late that the scale factor a = 1\.77845e\+19 "
+                                               r"leaves z = 1 / a - 1 = -1"):
+        model.quantities(t=1e30 * u.Gyr)
+    late = model.quantities(t=1e30 * u.Gyr, only=["scale_factor", "hubble_parameter"])
+    expected = 2 / (3 * (1e30 * u.Gyr).to_value(u.s))  # Einstein-de Sitter: H = 2 / (3 t)
+    assert late["hubble_parameter"].to_value(1 / u.s) == pytest.approx(expected, rel=4e-16)  # measured 1.1e-16

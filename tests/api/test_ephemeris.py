@@ -307,7 +307,7 @@ def test_an_orbit_needs_a_parent_and_an_ephemeris_point():
         Orbit.from_body("Sun", "2026-11-25")
     with pytest.raises(UnknownNameError, match="not in the ephemeris"):
         Orbit.from_body("Titan", "2026-11-25")
-    with pytest.raises(OrbitDomainError, match="no mean orbit"):
+    with pytest.raises(OrbitDomainError, match="no published orbit"):
         Orbit.from_body("Titan")
 
 
@@ -370,3 +370,27 @@ def test_the_ephemeris_is_imported_only_when_asked():
     code = "import sys, orbits; orbits.Orbit; print('jplephem' in sys.modules, 'orbits.ephemeris' in sys.modules)"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.split() == ["False", "False"]
+
+
+@pytest.mark.parametrize("text, fragment", [
+    ("2026-11-25T12:00:99", "has 99 seconds, past the end of its minute"),  # became 12:01:39
+    ("2026-11-25T12:00:60", "60 only in a UTC leap second"),  # taken on a day without one
+    ("2016-12-31T23:59:61", "has 61 seconds"),
+    ("2016-12-31T23:59:60 TT", "60 only in a UTC leap second"),
+])
+def test_seconds_past_the_minute_are_refused(text, fragment):
+    with pytest.raises(OrbitDomainError, match=fragment):
+        ephemeris.epoch(text)
+
+
+def test_a_real_leap_second_is_read_as_one():
+    leap = ephemeris.epoch("2016-12-31T23:59:60.5")
+    after = ephemeris.epoch("2017-01-01T00:00:00")
+    assert (after - leap).to_value(u.s) == pytest.approx(0.5, abs=1e-6)  # the day had 86401 s
+
+
+def test_an_epoch_just_past_de421_says_so_to_the_second():
+    """'where Mars --epoch 2053-10-09' said the date was outside a span that ends on 2053-10-09."""
+    with pytest.raises(OrbitDomainError, match=r"epoch 2053-10-09 00:01:09 TDB is outside DE421, which covers "
+                                               r"1899-07-29 00:00:00 to 2053-10-09 00:00:00 TDB"):
+        ephemeris.state("Mars", "2053-10-09", source="de421")

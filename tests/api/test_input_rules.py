@@ -2,15 +2,18 @@
 with a one-line error that names the quantity, its value, what is allowed and the unit; no RuntimeWarning."""
 
 import os
+import re
 import stat
 import warnings
 
 import astropy.units as u
 import numpy as np
 import pytest
+from astropy.utils.masked import Masked
 from typer.testing import CliRunner
 
 from orbits import Binary, Flyby, Orbit, OrbitDomainError, Ring, UnknownNameError, body
+from orbits.core import anomalies, elements, kepler, propagate
 from orbits.io import check_target, write_atomic
 from orbits_cli.main import app
 
@@ -25,9 +28,9 @@ def _warnings_are_errors():
 @pytest.mark.parametrize(
     "build, fragment",
     [
-        (lambda: Orbit.from_elements("Earth", a=7000 * u.km, e=0.1, inc=np.nan * u.deg), "inclination i = nan rad"),
-        (lambda: Orbit.from_elements("Earth", a=7000 * u.km, e=0.1, raan=np.nan * u.deg), "Omega = nan rad"),
-        (lambda: Orbit.from_elements("Earth", a=7000 * u.km, e=0.1, argp=np.inf * u.deg), "omega = inf rad"),
+        (lambda: Orbit.from_elements("Earth", a=8000 * u.km, e=0.1, inc=np.nan * u.deg), "inclination i = nan rad"),
+        (lambda: Orbit.from_elements("Earth", a=8000 * u.km, e=0.1, raan=np.nan * u.deg), "Omega = nan rad"),
+        (lambda: Orbit.from_elements("Earth", a=8000 * u.km, e=0.1, argp=np.inf * u.deg), "omega = inf rad"),
         (lambda: Orbit.from_elements("Earth", a=1e-300 * u.km, e=0.1), "|a| = 1e-297 m is outside the range"),
         (lambda: Orbit.from_elements("Earth", a=1e300 * u.km, e=0.1), "overflow or underflow float64"),
         (lambda: Orbit.from_elements("Earth", q=7000 * u.km, e=1e300), "e = 1e+300 is outside [0, 1e+12]"),
@@ -102,3 +105,97 @@ def test_the_command_line_refuses_them_in_one_line(args, fragment):
     result = CliRunner().invoke(app, args)
     assert result.exit_code == 2, result.output
     assert fragment in result.stderr and len(result.stderr.strip().splitlines()) == 1
+
+
+def test_a_body_name_where_a_quantity_belongs_is_named_as_a_body():
+    from orbits.inputs import parse_quantity
+
+    with pytest.raises(OrbitDomainError, match="--r1: 'Earth' is a body, not a length"):
+        parse_quantity("Earth", "length", "--r1")
+    with pytest.raises(OrbitDomainError, match="cannot read 'Eartth' as a quantity"):
+        parse_quantity("Eartth", "length", "--r1")
+
+
+# ---- what a float64 array cannot stand for, and angles that count modulo a turn -----------------------------
+
+
+@pytest.mark.parametrize("build, fragment", [
+    (lambda: Orbit.from_elements("Earth", a=Masked([7000.0, 8000.0] * u.km, mask=[False, True]), e=0.1),
+     "semi-major axis a is a masked array; orbits computes every element"),
+    (lambda: Orbit.from_elements("Earth", a=[7000, 8000] * u.km, e=np.ma.MaskedArray([0.1, 0.2], mask=[0, 1])),
+     "eccentricity e is a masked array"),
+    (lambda: Orbit.from_elements("Earth", a=(7000 + 1j) * u.km, e=0.1), "is complex; pass real numbers"),
+    (lambda: Orbit.from_elements("Earth", a=8000 * u.km, e=0.1 + 0j), "eccentricity e = (0.1+0j) is complex"),
+])
+def test_masked_and_complex_values_are_refused_not_stripped(build, fragment):
+    """A masked array's masked elements were computed and the mask dropped; a complex length kept its real part
+    with only NumPy's warning."""
+    with pytest.raises(TypeError, match=re.escape(fragment)):
+        build()
+
+
+def wrapped(value: float, turn: int) -> float:
+    """An integer-valued float modulo `turn`, in (-turn/2, turn/2], exactly (Python integers)."""
+    rest = int(value) % turn
+    return float(rest - turn if rest > turn / 2 else rest)
+
+
+@pytest.mark.parametrize("degrees, exact", [(1e15, -80.0), (1e20, -80.0), (-1e20, 80.0), (720.5, 0.5), (540.0, 180.0),
+                                            (-180.0, 180.0), (2.0**60 + 2.0**10, wrapped(2.0**60 + 2.0**10, 360))])
+def test_an_angle_in_degrees_keeps_its_value_however_large(degrees, exact):
+    """nu = 1e15 deg gave -79.954 deg (exact: 1e15 mod 360 = 280, i.e. -80); 1e20 deg as a node gave 100.35 deg."""
+    orbit = Orbit.from_elements("Earth", a=8000 * u.km, e=0.1, inc=10 * u.deg, raan=degrees * u.deg,
+                                nu=degrees * u.deg)
+    assert orbit.true_anomaly.to_value(u.deg) == pytest.approx(exact, abs=2e-14)  # one rounding to rad and back
+    assert orbit.ascending_node.to_value(u.deg) == pytest.approx(exact % 360, abs=2e-14)
+
+
+def test_whole_turns_come_off_in_any_unit_a_turn_is_a_whole_number_of():
+    one = Orbit.from_elements("Earth", a=8000 * u.km, e=0.1, nu=1e20 * u.arcsec).true_anomaly
+    assert one.to_value(u.arcsec) == pytest.approx(wrapped(1e20, 1296000), abs=1e-9)  # 640000 arcsec
+    with pytest.raises(OrbitDomainError, match=r"true anomaly nu = 1e\+20 rad is too large for an exact reduction"):
+        Orbit.from_elements("Earth", a=8000 * u.km, e=0.1, nu=1e20 * u.rad)
+
+
+def test_the_mean_and_true_anomalies_agree_and_e_lies_in_its_documented_range():
+    """kepler --e 0.1 --nu '1e20 deg' answered while the same --M was refused, and --nu '280 deg' gave E = 285.6 deg,
+    outside the documented [-180, 180]."""
+    from orbits import anomalies
+
+    from_true = anomalies(0.1, true_anomaly=280 * u.deg)
+    assert -np.pi <= from_true["eccentric_anomaly"].to_value(u.rad) <= np.pi
+    assert from_true["true_anomaly"].to_value(u.deg) == pytest.approx(-80, abs=1e-13)
+    large = anomalies(0.1, mean_anomaly=1e20 * u.deg)  # 1e20 mod 360 = 280: the same as -80 deg
+    assert large["mean_anomaly"].to_value(u.deg) == pytest.approx(-80, abs=1e-13)
+    back = anomalies(0.1, true_anomaly=large["true_anomaly"])
+    assert back["mean_anomaly"].to_value(u.deg) == pytest.approx(-80, abs=1e-12)
+    hyperbolic = anomalies(2.0, mean_anomaly=1e5 * u.deg)  # a hyperbola's mean anomaly counts no turns
+    assert hyperbolic["mean_anomaly"].to_value(u.deg) == pytest.approx(1e5, rel=1e-15)
+
+
+@pytest.mark.parametrize("call, named", [
+    (lambda: __import__("orbits").lambert([[1, 0, 0], [1, 0, 0]] * u.AU, [[0, 1.5, 0], [0, 1, 0], [0, 2, 0]] * u.AU,
+                                          200 * u.day), "r1 (2,), r2 (3,)"),
+    (lambda: __import__("orbits").lambert([1, 0, 0] * u.AU, [0, 1.5, 0] * u.AU, [200, 300, 400] * u.day,
+                                          revolutions=[0, 1]), "tof (3,), mu (), revolutions (2,)"),
+    (lambda: kepler.eccentric_anomaly(np.array([1.0, 2.0]), np.array([0.1, 0.2, 0.3])), "M (2,), e (3,)"),
+    (lambda: propagate.propagate(np.ones((2, 3)), np.ones((2, 3)), 1.0, np.ones(3)), "r0, v0 and mu (2,), dt (3,)"),
+    (lambda: elements.elements_to_state(np.ones(2), np.zeros(3), 0, 0, 0, 0, 1.0), "p (2,), e (3,)"),
+    (lambda: anomalies.true_from_eccentric(np.ones(2), np.zeros(3)), "E (2,), e (3,)"),
+])
+def test_a_broadcast_mismatch_names_the_arguments(call, named):
+    """lambert and the core said only NumPy's "arg 0 with shape (2,) and arg 1 with shape (3,)"."""
+    with pytest.raises(OrbitDomainError, match="argument shapes do not broadcast together: .*" + re.escape(named)):
+        call()
+
+
+@pytest.mark.parametrize("args, fragment", [
+    (["orbit", "--primary", "Earth", "--r", "1e-300,0,0 km", "--v", "0,7,0 km/s"],
+     "|position r| = 1e-297 m is outside the range orbits computes in"),  # 'radial' or 'coincides with the primary'
+    (["orbit", "--primary", "Earth", "--r", "1e-330,0,0 km", "--v", "0,7,0 km/s"],
+     "--r: '1e-330' is below the smallest float64 (5e-324) and would read as 0"),
+    (["orbit", "--primary", "Earth", "--a", "1e-400 km"], "--a: '1e-400' is below the smallest float64"),
+])
+def test_a_tiny_position_is_named_for_what_it_is(args, fragment):
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 2 and fragment in result.stderr and len(result.stderr.splitlines()) == 1

@@ -21,6 +21,7 @@ import pytest
 from astropy.time import Time
 
 from orbits import OrbitDomainError, Porkchop, ephemeris
+from orbits.manoeuvres import porkchop
 from orbits.tools.reference import propagate
 
 matplotlib.use("Agg")
@@ -205,6 +206,20 @@ def test_bad_windows_are_one_line_errors(kwargs, message):
     assert "\n" not in str(err.value)
 
 
+@pytest.mark.parametrize("step, counts", [(1 * u.min, "78,893,281 launch x 78,893,281 arrival dates"),
+                                         (1e-9 * u.s, "4.73e\\+18 launch x 4.73e\\+18 arrival dates = 2.24e\\+37")])
+def test_the_grid_is_counted_and_refused_before_any_date_is_made(step, counts, monkeypatch):
+    """1900-2050 at one minute built both 79-million-date axes (8.3 GB) before the cell check; a 1e-9 s step
+    attempted 629 TiB."""
+    def made(*args):
+        raise AssertionError("a date axis was built before the grid was checked")
+
+    monkeypatch.setattr(porkchop, "_dates", made)
+    window = ("1900-01-01", "2050-01-01")
+    with pytest.raises(OrbitDomainError, match=f"{counts}.* cells; at most 4,000,000: take a longer step"):
+        Porkchop.between("Earth", "Mars", window, window, step, source="builtin")
+
+
 @pytest.mark.parametrize("a, b, message", [("Earth", "Vulcan", "no ephemeris for 'Vulcan'"),
                                            ("Sun", "Mars", "Sun cannot be a departure or target"),
                                            ("mars", "Mars", "both Mars")])
@@ -244,3 +259,19 @@ def test_dates_are_on_the_grid(chart):
     steps = np.diff(chart.launch_dates.jd)
     np.testing.assert_allclose(steps, 10.0, rtol=0, atol=1e-9)
     assert abs((chart.launch_dates[0] - Time("2026-09-01", scale="utc")).to_value(u.s)) < 1e-6
+
+
+def test_a_least_value_on_the_grid_edge_is_flagged():
+    """Launches ending 2026-10-15, before the 2026 window's least C3 (2026-10-31): the least C3 on the grid is its
+    last launch date (2026-10-01), flagged; the arrival window around 2027-08-20 holds it inside, not on its
+    edge."""
+    early = Porkchop.between("Earth", "Mars", ("2026-09-01", "2026-10-15"), ("2027-06-01", "2027-11-01"),
+                             step=15 * u.day)
+    best = early.minimum_c3
+    assert best.launch.tdb.iso[:10] == "2026-10-01" and best.edges == ("last launch date",)
+    assert best.edge_note.startswith("least C3 on the grid's edge (last launch date)")
+    assert "on the grid's edge (last launch date)" in repr(best)
+    whole = Porkchop.between("Earth", "Mars", LAUNCH_2026, ARRIVAL_2027, step=15 * u.day)
+    assert whole.minimum_c3.edges == () and whole.minimum_c3.edge_note is None
+    one_launch = Porkchop.between("Earth", "Mars", ("2026-10-31", "2026-10-31"), ARRIVAL_2027, step=15 * u.day)
+    assert "launch" not in " ".join(one_launch.minimum_c3.edges)  # a single date is no edge of a search

@@ -257,9 +257,10 @@ def test_results_record_backend_metadata():
 
 
 def test_heyoka_raises_on_failed_propagation():
-    """A collision (coincident bodies) makes heyoka stop with err_nf_state, reported as RuntimeError."""
+    """A collision (two bodies falling from rest, meeting at t = pi / 4) makes heyoka stop with err_nf_state,
+    reported as RuntimeError."""
     problem = NBodyProblem(
-        gm=[1.0, 1.0], positions=np.zeros((2, 3)), velocities=np.zeros((2, 3)), n_active=2, times=[1.0]
+        gm=[1.0, 1.0], positions=[[0, 0, 0], [1, 0, 0]], velocities=np.zeros((2, 3)), n_active=2, times=[1.0]
     )
     with pytest.raises(RuntimeError, match="err_nf_state"):
         _heyoka.integrate(problem)

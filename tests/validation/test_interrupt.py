@@ -1,6 +1,9 @@
-"""Ctrl-C stops an integration promptly with either backend (heyoka ran to the end of its grid before)."""
+"""Ctrl-C stops an integration promptly with either backend (heyoka ran to the end of its grid before), and a
+command line run at once, also after a rebound integration has finished (rebound's handler stayed installed)."""
 
 import os
+import pty
+import select
 import signal
 import subprocess
 import sys
@@ -37,3 +40,98 @@ def test_ctrl_c_stops_an_integration_promptly(backend, tmp_path):
     out, _ = process.communicate(timeout=60)
     assert out.strip() == "interrupted"
     assert time.perf_counter() - sent < 2.0  # measured 0.06 s (rebound), 0.26 s (heyoka); 18 s before
+
+
+LONG_SCENE = """
+name = "long_after_rebound"
+description = "a satellite over half a million orbits: minutes of integration"
+asks = ["positions"]
+[time]
+periods = 500000
+outputs = 10
+[[bodies]]
+name = "Earth"
+body = "Earth"
+[[bodies]]
+name = "satellite"
+test_particle = true
+orbit = { primary = "Earth", p = "7000 km", e = 0.1 }
+"""
+
+
+def _orbits(*args: str) -> list[str]:
+    return [sys.executable, "-c", "from orbits_cli.main import app; app()", *args]
+
+
+def _read_until(fd: int, text: bytes, timeout: float) -> bytes:
+    """What the terminal `fd` shows until `text` appears (or the time is up)."""
+    seen, end = b"", time.monotonic() + timeout
+    while text not in seen and time.monotonic() < end:
+        ready, _, _ = select.select([fd], [], [], 0.2)
+        if ready:
+            try:
+                seen += os.read(fd, 65536)
+            except OSError:  # the process ended: the terminal is closed
+                break
+    return seen
+
+
+def _interrupted_within_two_seconds(process: subprocess.Popen) -> float:
+    """Send Ctrl-C; the seconds until the process has ended (a process still running after 30 s is killed)."""
+    sent = time.perf_counter()
+    process.send_signal(signal.SIGINT)
+    try:
+        process.wait(timeout=30)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        process.wait()
+    return time.perf_counter() - sent
+
+
+def test_ctrl_c_stops_orbits_validate_after_a_rebound_integration_and_writes_nothing(tmp_path):
+    """rebound left its own SIGINT handler installed after each integrate, so a Ctrl-C in a later heyoka run or in
+    Python went unseen: `orbits validate --output` ran to the end and wrote its file."""
+    for name in ("rebound", "heyoka"):
+        if not backends.available(name):
+            pytest.skip(f"{name} is not installed")
+    scene = tmp_path / "long.toml"
+    scene.write_text(LONG_SCENE)
+    output = tmp_path / "report.json"
+    terminal, child = pty.openpty()  # a terminal, so that the progress bar names the scene being run
+    process = subprocess.Popen(_orbits("validate", "circular", str(scene), "--backend", "heyoka,rebound", "--output",
+                                       str(output)),
+                               stdin=subprocess.DEVNULL, stdout=child, stderr=subprocess.PIPE, cwd=tmp_path,
+                               env={**os.environ, "HEYOKA_CACHE_DIR": str(tmp_path), "TERM": "xterm"})
+    os.close(child)
+    try:
+        # the scene `circular` has run with heyoka, then rebound: the long scene starts after a rebound integration
+        shown = _read_until(terminal, b"validating long_after_rebound", timeout=60)
+        assert b"validating long_after_rebound" in shown, shown[-400:]
+        seconds = _interrupted_within_two_seconds(process)
+    finally:
+        os.close(terminal)
+    assert seconds < 2.0, seconds  # measured 0.5 s; ran on for 3 minutes before (heyoka 18 s, then rebound)
+    with process.stderr:
+        assert process.returncode == 130 and process.stderr.read().decode().strip() == "orbits: interrupted"
+    assert not output.exists() and not list(tmp_path.glob(".report.json.*"))
+
+
+def test_ctrl_c_stops_bench_precision_after_its_rebound_runs_and_writes_nothing(tmp_path):
+    """The same for `orbits bench precision`: its rebound runs come first, then heyoka's and scipy's (about 15 s
+    on this problem), which a Ctrl-C did not stop."""
+    for name in ("rebound", "heyoka"):
+        if not backends.available(name):
+            pytest.skip(f"{name} is not installed")
+    pytest.importorskip("scipy")
+    output = tmp_path / "precision.json"
+    process = subprocess.Popen(_orbits("bench", "precision", "--quick", "--problem", "e=0.999", "--output",
+                                       str(output)),
+                               stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                               cwd=tmp_path, env={**os.environ, "HEYOKA_CACHE_DIR": str(tmp_path)})
+    time.sleep(8.0)  # the rebound runs end about 3 s in (start-up included); scipy's DOP853 runs until about 20 s
+    assert process.poll() is None, "the run ended before it was interrupted"
+    seconds = _interrupted_within_two_seconds(process)
+    assert seconds < 2.0, seconds  # measured 0.1 s; ran to the end before (about 12 s more)
+    with process.stderr:
+        assert process.returncode == 130 and process.stderr.read().decode().strip().endswith("orbits: interrupted")
+    assert not output.exists()

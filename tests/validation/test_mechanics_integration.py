@@ -272,6 +272,23 @@ def test_quadratic_drag_range_apex_and_flight_time_match_the_integration(quadrat
         assert abs(top.state[0] - apex_x) < 4e-13 * size  # measured 3.3e-14
 
 
+@pytest.mark.parametrize("ratio", [1e3, 1e6, 1e9, 2e11])
+@pytest.mark.parametrize("angle", [10.0, 45.0, 80.0])
+def test_launches_far_faster_than_the_terminal_speed_match_the_integration(quadratic_drag, ratio, angle):
+    """Launched 1e3 to 2e11 times faster than v_t (20 m/s against v_t = 1e-10 m/s never returned: the quadrature's
+    panels stalled where the branch point lay within p0's last bit), in units of v_t and v_t / g."""
+    y, _, equations = quadratic_drag
+    theta = math.radians(angle)
+    start = [0.0, 0.0, ratio * math.cos(theta), ratio * math.sin(theta)]
+    total, reach, apex_y, _, _, landing_speed, landing_angle = (
+        float(q) for q in projectile.quadratic_drag_flight(ratio, theta, 0.0, 1.0, 1.0))
+    landed, state = first_crossing(equations, start, [1.0, 1.0], y, hy.event_direction.negative, total / 2)
+    assert relative(landed, total) < 1e-14  # measured 9.4e-16
+    assert abs(state[0] - reach) < 7e-15 * max(reach, apex_y)  # measured 6.6e-16
+    assert relative(math.hypot(state[2], state[3]), landing_speed) < 2e-15  # measured 1.2e-16
+    assert abs(math.atan2(state[3], state[2]) - landing_angle) < 5e-15  # measured 4.4e-16 rad
+
+
 @pytest.mark.parametrize("speed", [0.0, 20.0, -10.0, -30.0, -45.0])
 def test_vertical_quadratic_drag_flights_match_the_integration(speed):
     """Straight up, dropped, and thrown down slower than, at and faster than v_t: closed forms against the 1-D

@@ -226,7 +226,7 @@ def test_scenes_the_integrators_cannot_start_are_refused(bodies, expected):
         ("expanding_universe", "outputs = true", "parameters.outputs: True must be an integer in [1, 1000000]"),
         ("expanding_universe", "outputs = 2_000_000", "parameters.outputs: 2000000 is outside [1, 1000000]"),
         ("expanding_universe", "n_shells = 1000\noutputs = 1_000_000", "parameters: outputs x bodies = 1000000 x "
-         "1001 = 1001000000 stored states, more than 10000000"),
+         "1001 = 1e+09 stored states; at most 1e+07 are allowed: ask for fewer outputs, or lower n_shells"),
         ("lagrange_L4_L5", "periods = inf", "parameters.periods: inf is outside (0, 10000] binary periods"),
         ("lagrange_L4_L5", "periods = 0", "parameters.periods: 0 is outside (0, 10000] binary periods"),
         ("ring_5", "outputs = 3", "parameters.outputs: 3 is outside [10, 1000000]: the shape check needs outputs"),
@@ -276,3 +276,36 @@ def test_the_command_line_prints_one_line_and_exits_2(tmp_path, name, content):
     lines = result.stderr.splitlines()
     assert len(lines) == 1 and lines[0].startswith(f"orbits: error: {path}: "), result.stderr
     assert "Traceback" not in result.stderr
+
+
+@pytest.mark.parametrize("old, new", [('name = "test"', 'name = ""'), ('name = "test"', 'name = "   "'),
+                                      ('name = "sat"', 'name = "\\u200b"'), ('name = "Earth"', 'name = "\\t"')])
+def test_empty_and_blank_names_are_refused(tmp_path, old, new):
+    """An empty or blank scene or body name was accepted and read ': passed' in the report."""
+    field = "name" if old == 'name = "test"' else ("bodies[1].name" if "sat" in old else "bodies[0].name")
+    message = refusal(write(tmp_path, DATA.replace(old, new)))
+    assert f"{field}: " in message and "is empty or blank; give a name that shows" in message
+
+
+EVIL = (DATA.replace('name = "test"', 'name = "red\\u001b[31mtext\\u202e"')
+        .replace('description = "a test"', 'description = "clear\\u001b[2J\\nscreen"')
+        .replace('name = "sat"', 'name = "s\\u001b[5mat"'))
+
+
+def test_control_characters_from_a_scene_file_reach_the_terminal_escaped(tmp_path):
+    """A scene's name and description went to the terminal raw: ESC [2J cleared the screen."""
+    pytest.importorskip("rebound")
+    result = CliRunner().invoke(app, ["validate", str(write(tmp_path, EVIL)), "--backend", "rebound"])
+    assert result.exit_code == 0, result.output
+    assert "\x1b" not in result.stdout and "\u202e" not in result.stdout
+    assert "red\\x1b[31mtext\\u202e: passed" in result.stdout and "clear\\x1b[2J\\nscreen" in result.stdout
+    assert "period[s\\x1b[5mat]" in result.stdout
+    data = json.loads(CliRunner().invoke(app, ["validate", str(tmp_path / "bad.toml"), "--backend", "rebound",
+                                               "--format", "json"]).stdout)
+    assert data["scenes"][0]["name"] == "red\x1b[31mtext\u202e"  # JSON keeps the text, escaped by JSON itself
+
+
+def test_an_error_about_a_file_is_one_line_without_raw_controls(tmp_path):
+    result = CliRunner().invoke(app, ["validate", str(tmp_path / "no\x1b[2Jfile")])
+    assert result.exit_code == 2 and len(result.stderr.splitlines()) == 1
+    assert "\x1b" not in result.stderr and "no\\x1b[2Jfile" in result.stderr

@@ -20,6 +20,22 @@ NEWTON_MAX_ITER = 50
 #: calls: on a shared machine the best of 3 calls of 10 ms missed the quiet moments (58 M/s against 100 in a
 #: second run, same kernel)
 BEST_OF_SECONDS, BEST_OF_CALLS = 0.3, 30
+#: the most elements a benchmark set may hold: 1e7 Kepler pairs take about 1 GB over their inputs and results
+MAX_SET = 10_000_000
+#: the most elements checked against the mpmath reference (a few milliseconds each)
+MAX_REFERENCE = 100_000
+#: the most timing repeats, or fresh processes per command
+MAX_REPEATS = 1000
+
+
+def check_count(value: int, name: str, high: int) -> int:
+    """`value` if it is an integer in [1, high], else OrbitDomainError naming it and the range: every size of a
+    benchmark is checked here before anything is allocated (an empty set would time nothing and print nan)."""
+    from orbits.core.errors import OrbitDomainError
+
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not 1 <= value <= high:
+        raise OrbitDomainError(f"{name} = {value!r} is outside [1, {high:,}]")
+    return int(value)
 
 
 def _as_pair(e, M):
@@ -58,6 +74,7 @@ def best_time(call, repeats):
     counts the CPU it got, not the time other processes held the core (on a shared 2-core machine at load 4-7,
     heyoka's lagrange_prop took 4.2 to 11.7 M states/s of wall time in three runs, 21.7 to 22.6 of CPU time in
     four); work on several threads adds up more CPU than wall time and keeps the wall time."""
+    check_count(repeats, "repeats", MAX_REPEATS)
     best, result, calls, begin = math.inf, None, 0, time.perf_counter()
     while calls < repeats or (calls < BEST_OF_CALLS and time.perf_counter() - begin < BEST_OF_SECONDS):
         start, start_cpu = time.perf_counter(), time.process_time()
