@@ -3,11 +3,10 @@ universal variables).
 
 Float64 arrays, SI units; r0, v0 of shape (..., 3), mu and dt broadcast against the batch shape.
 
-Method. The states known to be bound (|r0| |v0|**2 <= 2 mu in float64) go through the elliptic pass, the open
-ones through the hyperbolic pass; what neither certifies (an exact parabola, a state on the other side of e = 1
-than float64 said, any solve it cannot vouch for: none of 1e6 random ellipses with e up to 1 - 1e-9 and flights
-from 1e-7 to 1e4 periods, none of the benchmark's open states, 0.04 % of 2e5 random hyperbolas flown up to 1e6
-sqrt(p**3 / mu)) goes through the universal passes.
+Method. Bound states (|r0| |v0|**2 <= 2 mu in float64) go through the elliptic pass, open ones through the
+hyperbolic pass; what neither certifies (exact parabolas, a state on the other side of e = 1 than float64 said,
+a solve it cannot vouch for: no ellipse of 2e5 random ones, 0.1 % of random inbound hyperbolas) goes through
+the universal passes.
 
 Both passes solve the universal Kepler equation in a scaled anomaly x, multiplied by the mean motion n. Elliptic:
 x = chi / sqrt(a) = E - E0,
@@ -52,16 +51,12 @@ On a hyperbola (beta = -alpha > 0) started far out on its way in, the terms r0 G
 is summed in the hyperbolic anomaly H = H0 + sqrt(beta) chi instead: F = e sinh H / beta**1.5 - (sigma0 + chi)
 / beta, with e exp(+-H0) from 1 + r0 beta +- sigma0 sqrt(beta) and, for the one that cancels, from their
 product e**2 = 1 + beta h**2; likewise r and the Lagrange g, each where that form cancels less.
-Radial orbits (r x v = 0) raise DegenerateOrbitError: the collision with the primary is not
-regularised here.
+Radial orbits (r x v = 0) raise DegenerateOrbitError: the collision with the primary is not regularised.
 
-Speed: the compiled kernel (orbits/core/_fast_propagate.py) is a port of this algorithm, step by step
-(same passes, starters, safeguards, certificates and formulas; its sin, cos, exp, atan2, log and cube root are
-its own vectorisable versions and it may fuse a * b + c into one rounding, so the two agree to rounding, not
-bit for bit). orbits.core._fast.use decides: batches
-from AUTO_MIN_BATCH states on run compiled, smaller ones (a calculator query, a scene's outputs) here without
-importing numba. This version also re-runs any batch the kernel flags, so that invalid input raises the same
-messages. Timings are in the README's Benchmarks section.
+Speed: the compiled kernel (orbits/core/_fast_propagate.py, _fast_universal.py) ports this algorithm step by
+step (its sin, cos, exp, atan2, log and cube root are its own, and it may fuse a * b + c, so the two agree to
+rounding). Batches from orbits.core._fast.AUTO_MIN_BATCH states run compiled, smaller ones here without numba;
+a batch the kernel flags runs here, so that invalid input raises the same messages. Timings: README, Benchmarks.
 """
 
 from typing import NamedTuple
@@ -740,9 +735,8 @@ def _propagate_numpy(r0, v0, mu, dt):
 
 
 def _open(r0, v0, mu):
-    """Whether each state is known to be open, |r0| |v0|**2 > 2 mu in float64: which of the elliptic and the
-    hyperbolic pass it goes to (either refuses a state on the wrong side, by its double-double alpha, and leaves it
-    to the universal passes)."""
+    """Whether each state is open, |r0| |v0|**2 > 2 mu in float64: which pass it goes to (a pass refuses a state
+    on the wrong side by its double-double alpha, and leaves it to the universal passes)."""
     return np.sqrt(np.sum(r0 * r0, axis=-1)) * np.sum(v0 * v0, axis=-1) > 2.0 * mu
 
 
