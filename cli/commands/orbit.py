@@ -78,7 +78,8 @@ def command(
     if plot:
         from orbits.plot import orbit_plane
 
-        save_plot(lambda: orbit_plane(result), plot)
+        when = None if about is None or "epoch_tdb" not in about else f"{about['epoch_tdb']} TDB"
+        save_plot(lambda: orbit_plane(result, epoch=when), plot)
     render.emit(title, quantities, fmt.value, about=about)
 
 
