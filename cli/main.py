@@ -22,6 +22,7 @@ from orbits_cli.commands import (
     lambert,
     orbit,
     pendulum,
+    periodic,
     perturb,
     porkchop,
     precision,
@@ -76,6 +77,7 @@ app.command("cosmology")(reports_errors(displays(cosmology.command)))
 app.command("binary")(reports_errors(displays(binary.command)))
 app.command("flyby")(reports_errors(displays(flyby.command)))
 app.command("lagrange")(reports_errors(displays(lagrange.command)))
+app.command("periodic")(reports_errors(displays(periodic.command)))
 app.command("ring")(reports_errors(displays(ring.command)))
 app.add_typer(escape.app, name="escape")
 app.command("rocket")(reports_errors(displays(rocket.command)))
@@ -91,6 +93,7 @@ app.command("info")(reports_errors(info.command))
 bench_app.command("kepler")(reports_errors(bench.kepler))
 bench_app.command("propagate")(reports_errors(bench.propagate))
 bench_app.command("stm")(reports_errors(bench.stm))
+bench_app.command("periodic")(reports_errors(bench.periodic))
 bench_app.command("api")(reports_errors(bench.api))
 bench_app.command("cli")(reports_errors(bench.cli))
 bench_app.command("validate")(reports_errors(bench.validate))

@@ -6,8 +6,6 @@ two to four examples that run (tests/cli/test_help_pages.py runs every one and h
 builds them. It imports nothing of the library: `orbits --help` stays fast.
 """
 
-import textwrap
-
 import typer
 from typer.core import TyperCommand
 
@@ -20,10 +18,11 @@ SUMMARY = {
     "binary": "A binary: orbits about the barycentre, K, mass function.",
     "flyby": "Closest approach and deflection of a hyperbolic flyby.",
     "lagrange": "Lagrange points, Jacobi constants and their stability.",
+    "periodic": "Halo, Lyapunov, DRO and NRHO orbits, and their families.",
     "ring": "A ring of equal masses: period, stability, break-up.",
     "rocket": "Delta-v and burn times of a rocket, one stage or several.",
     "where": "Where a planet is at a date: distance, elongation, RA, Dec.",
-    "lambert": "Lambert's problem: from r1 to r2 in a given time.",
+    "lambert": "Lambert's problem: r1 to r2, or body to body on dates.",
     "porkchop": "C3 and arrival v_inf over launch and arrival dates.",
     "collide": "A collision with restitution: velocities and energies.",
     "projectile": "A projectile, without drag or with linear or quadratic drag.",
@@ -52,6 +51,7 @@ SUMMARY = {
     "bench": "Benchmarks: speed and worst error against the peers.",
     "bench kepler": "Kepler solvers against heyoka, rebound and Newton.",
     "bench propagate": "Two-body propagation against heyoka's lagrange_prop.",
+    "bench periodic": "Periodic orbits: one halo and a family, corrections counted.",
     "bench api": "The unit-aware API's cost over the float64 core.",
     "bench cli": "Command-line cold start in fresh processes.",
     "bench validate": "Where the time of orbits validate goes.",
@@ -72,8 +72,9 @@ EXAMPLES = {
     "orbit": [
         "orbits orbit Earth",
         'orbits orbit --primary Earth --a "42164 km" --only period,speed',
-        'orbits orbit --primary Earth --r "7000,0,0 km" --v "0,7.5,1 km/s"',
-        "orbits orbit Mars --epoch 2026-11-25 --format json",
+        "orbits orbit Ceres --epoch 2026-01-01 --format json",
+        'orbits orbit --primary Earth --a "8000 km" --e 0.1 --mass "1000 kg" \\\n'
+        '    --at-r "7500 km" --area-between "0 h,1 h"',
     ],
     "kepler": [
         'orbits kepler --e 0.9 --M "0.1 rad"',
@@ -88,6 +89,7 @@ EXAMPLES = {
     "binary": [
         'orbits binary --m1 Sun --m2 Jupiter --a "5.2 AU" --e 0.048',
         'orbits binary --m1 Earth --m2 Moon --a "384399 km" --format json',
+        'orbits binary --m1 "1 solMass" --m2 "1 jupiterMass" --period "4.23 d" --inc 90',
         'orbits binary --K "59 m/s" --period "4.2293 d" --m1 "1 solMass"',
     ],
     "flyby": [
@@ -98,6 +100,12 @@ EXAMPLES = {
         "orbits lagrange Earth Moon",
         "orbits lagrange Sun Earth --points L1,L2 --format json",
         'orbits lagrange "1 solMass" "0.1 solMass" --r "1 AU" --plot lagrange.png',
+    ],
+    "periodic": [
+        'orbits periodic Earth Moon --family halo --point L2 --az "20000 km"',
+        "orbits periodic Earth Moon --family nrho --resonance 9:2",
+        'orbits periodic Sun Earth --family lyapunov --point L1 --ax "200000 km"',
+        "orbits periodic Earth Moon --family nrho --resonance 9:2 --members 12",
     ],
     "ring": [
         'orbits ring 7 --m "1e20 kg" --r "1e5 km" --central-mass Earth',
@@ -112,11 +120,13 @@ EXAMPLES = {
         "orbits where Mars --epoch 2026-11-25",
         "orbits where Venus --observer Mars --epoch 2027-01-01 --format json",
         "orbits where Jupiter --epoch 2026-11-25 --plot sky.png",
+        "orbits where Ceres --epoch 2026-01-01",
     ],
     "lambert": [
         'orbits lambert --r1 "1,0,0 AU" --r2 "0,1.5,0 AU" --tof "200 d"',
         'orbits lambert --r1 "1,0,0 AU" --r2 "0,1.5,0 AU" --tof "900 d" \\\n'
         "    --revolutions 1 --branch left",
+        "orbits lambert --from Earth --to Mars --depart 2026-11-26 --arrive 2027-08-15",
     ],
     "porkchop": [
         "orbits porkchop --from EMB --to Mars --step \"5 d\"",
@@ -159,6 +169,7 @@ EXAMPLES = {
     "transfer hohmann": [
         'orbits transfer hohmann --r1 "6678 km" --r2 "42164 km"',
         'orbits transfer hohmann --r1 "6678 km" --r2 "42164 km" --inc "28.5 deg"',
+        "orbits transfer hohmann --from Earth --to Mars",
     ],
     "transfer bi-elliptic": [
         'orbits transfer bi-elliptic --r1 "7000 km" --r2 "105000 km" --rb "210000 km"',
@@ -185,34 +196,45 @@ EXAMPLES = {
     "perturb rates": [
         'orbits perturb rates Earth --altitude "400 km" --inc 51.64',
         'orbits perturb rates Mars --a "9378 km" --inc 1.1 --format json',
+        'orbits perturb rates --a "26554 km" --e 0.74 --inc 63.43 --argp 270 \\\n'
+        "    --revolutions 10 --plot molniya.png  # a Molniya orbit's node and periapsis",
     ],
     "perturb sun-synchronous": [
-        'orbits perturb sun-synchronous --altitude "700 km"',
+        'orbits perturb sun-synchronous --altitude "700 km"  # 98.19 deg',
         "orbits perturb sun-synchronous --inc 99",
+        'orbits perturb sun-synchronous --altitude "700 km" --revolutions 15 \\\n'
+        "    --plot sun-synchronous.png",
     ],
     "perturb frozen": [
         'orbits perturb frozen --altitude "700 km" --inc 98.19',
         'orbits perturb frozen --altitude "1336 km" --inc 66',
     ],
     "perturb repeat": [
-        "orbits perturb repeat --revolutions 127 --days 10 --inc 66",
+        "orbits perturb repeat --revolutions 127 --days 10 --inc 66.04  # TOPEX/Jason",
         "orbits perturb repeat --revolutions 15 --days 1 --inc 98",
     ],
     "perturb decay": [
         'orbits perturb decay --altitude "280 km" --ballistic "0.022 m2/kg"',
-        'orbits perturb decay --altitude "400 km" --ballistic "0.005 m2/kg"',
+        'orbits perturb decay --altitude "400 km" --ballistic "0.005 m2/kg" --plot decay.png',
+        'orbits perturb decay Mars --altitude "200 km" --ballistic "0.01 m2/kg" \\\n'
+        '    --density "0.020 kg/m3" --scale-height "11.1 km" --base-altitude "0 km" \\\n'
+        "    --plot mars.png  # ends where it sinks H a revolution",
     ],
     "perturb kozai": [
         'orbits perturb kozai --m0 Sun --m3 Jupiter --a "1 AU" --a-out "5.2 AU" --inc 65',
         'orbits perturb kozai --m0 Earth --m3 Sun --a "50000 km" --a-out "1 AU" --inc 80',
     ],
     "perturb relativity": [
-        "orbits perturb relativity Mercury",
+        "orbits perturb relativity Mercury  # 42.98 arcsec per century",
         "orbits perturb relativity Earth --format json",
     ],
     "bench kepler": [
         "orbits bench kepler --easy 10000 --hard 1000 --hyperbolic 1000 --reference 100",
         "orbits bench kepler --easy 100000 --repeats 5 --output kepler.json",
+    ],
+    "bench periodic": [
+        "orbits bench periodic --members 10 --repeats 1 --no-numpy",
+        "orbits bench periodic --members 20 --repeats 1 --format json",
     ],
     "bench propagate": [
         "orbits bench propagate --states 10000 --reference 50",
@@ -270,9 +292,10 @@ class ListsScenes(TyperCommand):
 
     @property
     def epilog(self) -> str:
+        from orbits.display import filled
         from orbits.validate import summaries
 
-        scenes = "\n".join(textwrap.fill(f"{name}: {line}", width=76, initial_indent="  ", subsequent_indent="      ")
+        scenes = "\n".join(filled(f"{name}: {line}", 76, initial_indent="  ", subsequent_indent="      ")
                            for name, line in summaries().items())
         return f"Built-in scenes (give their names, or none for all):\n{scenes}\n\n{self._examples}"
 

@@ -8,7 +8,6 @@ JSON (RFC 8259) cannot hold, is the string "inf", "-inf" or "nan", which float()
 
 import json
 import math
-import textwrap
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -94,10 +93,10 @@ def to_json(quantities: "Mapping[str, Quantity]", about: "Mapping[str, str] | No
 # ---- tables ----------------------------------------------------------------------------------------------
 
 
-def _shown(q, name):
+def _shown(q, name, unit=None):
     from orbits.display import shown
 
-    return shown(q, name, DISPLAY.system, DISPLAY.overrides, DISPLAY.digits)
+    return shown(q, name, DISPLAY.system, DISPLAY.overrides, DISPLAY.digits, unit)
 
 
 def number(x: float) -> str:
@@ -118,8 +117,11 @@ def quantity_table(title: str, quantities: "Mapping[str, Quantity]", prefix: str
     grid.add_column("quantity", overflow="fold")
     grid.add_column("value", justify="right", overflow="fold")
     grid.add_column("unit", overflow="fold")
+    from orbits.display import table_units
+
+    units = table_units({prefix + name: q for name, q in quantities.items()}, DISPLAY.system, DISPLAY.overrides)
     for name, q in quantities.items():
-        value, unit = _shown(q, prefix + name)
+        value, unit = _shown(q, prefix + name, units[prefix + name])
         grid.add_row(escape(name), value, escape(unit))
     return grid
 
@@ -127,9 +129,11 @@ def quantity_table(title: str, quantities: "Mapping[str, Quantity]", prefix: str
 def _grid(columns):
     """A table whose headers are wrapped to the width of their numbers (10 columns at least), so that nothing
     in it wraps again and its measured width is the width it prints at."""
+    from orbits.display import wrapped
+
     grid = Table(box=box.SIMPLE_HEAD, pad_edge=False)
     for header, cells in columns:
-        lines = textwrap.wrap(header, width=max(10, *map(len, cells)), break_long_words=False)
+        lines = wrapped(header, max(10, *map(len, cells)))
         grid.add_column(escape("\n".join(lines)), justify="right", no_wrap=True)
     for row in zip(*(cells for _, cells in columns)):
         grid.add_row(*row)
@@ -163,7 +167,7 @@ def column(name: str, q: "Quantity", header: str | None = None, like: "Quantity 
     unit = unit_for(q if like is None else like, name, DISPLAY.system, DISPLAY.overrides)
     cells = [number(v, DISPLAY.digits) for v in np.ravel(q.to_value(unit))]
     header = _label(name) if header is None else header
-    return header + (f" [{unit_text(unit)}]" if unit_text(unit) else ""), cells
+    return header + (f" [{unit_text(unit, compact=True)}]" if unit_text(unit) else ""), cells
 
 
 def element_tables(index: str, quantities: "Mapping[str, Quantity]") -> list[Table]:
@@ -200,9 +204,11 @@ def grouped_tables(quantities: "Mapping[str, Quantity]", groups: Sequence[tuple[
 
 def print_tables(tables: Sequence[Table], title: str = "") -> None:
     """Print the title wrapped to the console's width, then the tables."""
+    from orbits.display import filled
+
     out = console()
     if title:
-        out.print(escape(textwrap.fill(title, out.width)))
+        out.print(escape(filled(title, out.width)))
     for grid in tables:
         out.print(grid)
 
@@ -253,15 +259,20 @@ _KINDS = {"relative error": "rel", "relative drift": "rel drift", "absolute drif
 def validation_report(data: dict[str, Any]) -> None:
     """Print a validation report (the dict of ValidationReport.to_dict): per scene its verdict, then one line
     per check led by its verdict, each backend's error and the tolerance; settings follow as plain lines."""
-    from orbits.display import printable  # text from scene files: no control character reaches the terminal
+    from orbits.display import (
+        filled,
+        printable,  # text from scene files: no control character reaches the terminal
+    )
 
     out = console()
-    wrap = textwrap.TextWrapper(width=out.width, initial_indent="  ", subsequent_indent="    ")
+    def line(text):
+        return escape(filled(text, out.width, initial_indent="  ", subsequent_indent="    "))
+
     for scene in data["scenes"]:
         backends = list(scene["wall_time_s"])[1:]
         verdict = "[green]passed[/green]" if scene["passed"] else "[red]FAILED[/red]"
         out.print(f"[bold]{escape(printable(scene['name']))}[/bold]: {verdict}")
-        out.print(escape(textwrap.fill(printable(scene["description"]), out.width, initial_indent="  ",
+        out.print(escape(filled(printable(scene["description"]), out.width, initial_indent="  ",
                                        subsequent_indent="  ")))
         grid = Table(box=box.SIMPLE_HEAD, pad_edge=False, padding=(0, 1))
         grid.add_column("", no_wrap=True)
@@ -280,10 +291,10 @@ def validation_report(data: dict[str, Any]) -> None:
             f"{k} {v * 1e3:.1f} ms" + (f" (+ setup {setup[k] * 1e3:.1f} ms)" if k in setup else "")
             for k, v in scene["wall_time_s"].items()
         )
-        out.print(escape(wrap.fill(f"wall time: {times}")))
+        out.print(line(f"wall time: {times}"))
         for name in backends:
             settings = ", ".join(f"{k}={v}" for k, v in scene["settings"][name].items())
-            out.print(escape(wrap.fill(f"{name} {scene['versions'][name]}: {settings}; {scene['time_modes'][name]}")))
+            out.print(line(f"{name} {scene['versions'][name]}: {settings}; {scene['time_modes'][name]}"))
         out.print()
     verdict = "[green]all checks passed[/green]" if data["passed"] else "[red]some checks FAILED[/red]"
     out.print(f"{verdict} ({len(data['scenes'])} scenes)")
@@ -311,6 +322,8 @@ def _setting(setting: Any) -> str:
 def precision_tables(data: dict[str, Any]) -> None:
     """Print the work-precision summary, one table per problem: each method's best error with its setting and run
     time, and its fastest run reaching the target."""
+    from orbits.display import filled
+
     out = console()
     target = _error(data["target"])
     out.print(f"work-precision: each method's best position error (relative to the orbit's size), and its fastest "
@@ -329,4 +342,4 @@ def precision_tables(data: dict[str, Any]) -> None:
         out.print(grid)
     notes = {r["note"] for r in data["rows"] if r["note"]}
     for note in sorted(notes):
-        out.print(escape(textwrap.fill(f"note: {note}", out.width, initial_indent="  ", subsequent_indent="    ")))
+        out.print(escape(filled(f"note: {note}", out.width, initial_indent="  ", subsequent_indent="    ")))

@@ -1,9 +1,9 @@
 """orbits: celestial mechanics to the last float64 digit, cross-checked against rebound and heyoka.
 
 Public API (loaded on first use, PEP 562, so that `import orbits` is instant and `import orbits.core.<any>`
-never loads astropy): Orbit, Binary and Star, Flyby, RestrictedThreeBody, Ring, CosmicVelocities,
-SynchronousOrbit, escape_speed, max_elongation, Cosmology, ExpandingSphere, anomalies, the named bodies and
-constants, and the errors. The float64 numeric core lives in orbits.core and takes no units; the N-body
+never loads astropy): Orbit, Binary and Star, Flyby, RestrictedThreeBody, PeriodicOrbit and PeriodicFamily, Ring,
+CosmicVelocities, SynchronousOrbit, escape_speed, max_elongation, Cosmology, ExpandingSphere, anomalies, the named
+bodies and constants, and the errors. The float64 numeric core lives in orbits.core and takes no units; the N-body
 cross-checks live in orbits.validate and the benchmarks in orbits.tools.
 """
 
@@ -19,6 +19,8 @@ _HOMES = {
     "Star": "orbits.binary",
     "Flyby": "orbits.flyby",
     "RestrictedThreeBody": "orbits.lagrange",
+    "PeriodicOrbit": "orbits.periodic",
+    "PeriodicFamily": "orbits.periodic",
     "Ring": "orbits.rings",
     "CosmicVelocities": "orbits.escape",
     "SynchronousOrbit": "orbits.escape",

@@ -81,7 +81,9 @@ class Binary(display.Displayed):
 
     Fields are float64 SI: the stars' parameters gm1 = G m1 and gm2 = G m2 (m3/s2), the relative Orbit, and the
     centre of mass's position com_r (m) and velocity com_v (m/s) at the epoch (zeros: the CM frame). Build it
-    with Binary.from_elements, Binary.circular or Binary.from_vectors.
+    with Binary.from_elements, Binary.circular or Binary.from_vectors. `oriented` is False when the inclination
+    was not given: the relative orbit then lies in the reference plane, and the quantities that need its tilt to
+    the sky (K1, K2, f(M), radial velocities, apparent orbit) raise instead of answering for a face-on orbit.
     """
 
     gm1: np.ndarray
@@ -89,6 +91,7 @@ class Binary(display.Displayed):
     relative: Orbit
     com_r: np.ndarray
     com_v: np.ndarray
+    oriented: bool = True
 
     # ---- constructors -------------------------------------------------------------------------
     @classmethod
@@ -102,7 +105,7 @@ class Binary(display.Displayed):
         p: u.Quantity | None = None,
         q: u.Quantity | None = None,
         period: u.Quantity | None = None,
-        inc: u.Quantity = 0 * u.deg,
+        inc: u.Quantity | None = None,
         raan: u.Quantity = 0 * u.deg,
         argp: u.Quantity = 0 * u.deg,
         nu: u.Quantity = 0 * u.deg,
@@ -113,7 +116,9 @@ class Binary(display.Displayed):
 
         Give one size of the relative orbit: a = a1 + a2 (the notes' a + q = (m + M) alpha), p, q (periapsis
         separation) or the period T (then a = (G (m1 + m2) T**2 / (4 pi**2))**(1/3), e < 1). Angles orient
-        the relative orbit; star 2 shares its periapsis direction, star 1 is opposite.
+        the relative orbit; star 2 shares its periapsis direction, star 1 is opposite. Without `inc` the orbit
+        lies in the reference plane (i = 0) and its tilt to the sky is unknown: what needs sin i (K1, K2, f(M), the
+        radial velocities and the apparent orbit) raises, asking for it (90 deg is edge-on, 0 face-on).
         """
         gm1, gm2 = inputs.gravitational_parameter(m1, "mass m1"), inputs.gravitational_parameter(m2, "mass m2")
         if period is not None:
@@ -124,13 +129,13 @@ class Binary(display.Displayed):
             e,
             p=p,
             q=q,
-            inc=inc,
+            inc=0 * u.deg if inc is None else inc,
             raan=raan,
             argp=argp,
             nu=nu,
             mass=binary_core.reduced_mass(gm1, gm2) / G << units.KG,
         )
-        return cls._assemble(gm1, gm2, relative, com_r, com_v)
+        return cls._assemble(gm1, gm2, relative, com_r, com_v, oriented=inc is not None)
 
     @classmethod
     def circular(
@@ -139,7 +144,7 @@ class Binary(display.Displayed):
         m2: Body | str | u.Quantity,
         separation: u.Quantity,
         *,
-        inc: u.Quantity = 0 * u.deg,
+        inc: u.Quantity | None = None,
         raan: u.Quantity = 0 * u.deg,
         nu: u.Quantity = 0 * u.deg,
         com_r: u.Quantity | None = None,
@@ -173,7 +178,7 @@ class Binary(display.Displayed):
         return cls._assemble(gm1, gm2, relative, com_r << units.M, com_v << units.M_PER_S)
 
     @classmethod
-    def _assemble(cls, gm1, gm2, relative, com_r, com_v):
+    def _assemble(cls, gm1, gm2, relative, com_r, com_v, oriented=True):
         shape = relative.shape
         return cls(
             np.broadcast_to(gm1, shape).astype(float),
@@ -181,6 +186,7 @@ class Binary(display.Displayed):
             relative,
             _vector(com_r, units.M, "centre-of-mass position com_r", shape),
             _vector(com_v, units.M_PER_S, "centre-of-mass velocity com_v", shape),
+            oriented,
         )
 
     # ---- shape and masses (XXII.i) --------------------------------------------------------------
@@ -347,7 +353,13 @@ class Binary(display.Displayed):
         (K1 / K2 = m2 / m1)."""
         return self._semi_amplitude(self.star2)
 
+    def _require_inclination(self, quantity):
+        if not self.oriented:
+            raise OrbitDomainError(f"{quantity} needs the inclination i of the orbit to the sky (sin i), which was "
+                                   f"not given: build the binary with inc=... (90 deg: edge-on, 0: face-on)")
+
     def _semi_amplitude(self, star):
+        self._require_inclination("a radial-velocity semi-amplitude")
         self.relative._require_ellipse("a radial-velocity semi-amplitude")
         a = star.semi_major_axis.to_value(units.M)
         k = binary_core.radial_velocity_semi_amplitude(a, self.period.to_value(units.S), self.relative.inc,
@@ -358,6 +370,7 @@ class Binary(display.Displayed):
     def mass_function(self) -> u.Quantity:
         """f(M) = (m2 sin i)**3 / (m1 + m2)**2 (kg): what star 1's radial velocities give, P K1**3 (1 - e**2)**(3/2)
         / (2 pi G) (tests/api/test_binary_observables.py: the two agree to 1e-15)."""
+        self._require_inclination("the mass function f(M)")
         gm2_sin_i = self.gm2 * np.sin(self.relative.inc)
         total = self.gm1 + self.gm2
         return gm2_sin_i * (gm2_sin_i / total) ** 2 / G << units.KG
@@ -368,6 +381,7 @@ class Binary(display.Displayed):
 
         The z components of `propagate`; equal to gamma + K_i (cos(omega_i + nu) + e cos omega_i) to 1e-15 of K
         (tests/api/test_binary_observables.py)."""
+        self._require_inclination("the radial velocities")
         _, v1, _, v2 = self.propagate(dt)
         return v1[..., 2], v2[..., 2]
 
@@ -375,6 +389,7 @@ class Binary(display.Displayed):
         """(rho, theta): the apparent separation of star 2 from star 1 on the sky (m, projected; divide by the
         distance for an angle) and its position angle (rad, from the north through the east, in [0, 2 pi)), a time
         dt (time Quantity, broadcasting) after the epoch."""
+        self._require_inclination("the apparent orbit on the sky")
         r1, _, r2, _ = self.propagate(dt, barycentric=True)
         north, east = (r2 - r1)[..., 0].to_value(units.M), (r2 - r1)[..., 1].to_value(units.M)
         return np.hypot(north, east) << units.M, np.mod(np.arctan2(east, north), 2 * np.pi) << units.RAD
@@ -436,6 +451,8 @@ class Binary(display.Displayed):
         return quantity_table(self._lookup, QUANTITY_NAMES, only)
 
     def _lookup(self, name):
+        if name == "relative_inclination":
+            self._require_inclination("the inclination to the sky")
         for prefix in ("relative", "star1", "star2"):
             if name.startswith(prefix + "_"):
                 return getattr(getattr(self, prefix), name[len(prefix) + 1 :])

@@ -131,6 +131,27 @@ class Collision(display.Displayed):
         return self._kinetic(self.m1, self._after[0]) + self._kinetic(self.m2, self._after[1]) << units.J
 
     @cached_property
+    def kinetic_energy1_before(self) -> u.Quantity:
+        """K1 = m1 |v1|**2 / 2 (J), body 1's kinetic energy before."""
+        return self._kinetic(self.m1, self.v1) << units.J
+
+    @cached_property
+    def kinetic_energy2_before(self) -> u.Quantity:
+        """K2 = m2 |v2|**2 / 2 (J), body 2's kinetic energy before."""
+        return self._kinetic(self.m2, self.v2) << units.J
+
+    @cached_property
+    def kinetic_energy1_after(self) -> u.Quantity:
+        """K1' = m1 |v1'|**2 / 2 (J), body 1's kinetic energy after."""
+        return self._kinetic(self.m1, self._after[0]) << units.J
+
+    @cached_property
+    def kinetic_energy2_after(self) -> u.Quantity:
+        """K2' = m2 |v2'|**2 / 2 (J), body 2's kinetic energy after: energy_transfer(m1 / m2, e) of K1 when body 2
+        starts at rest."""
+        return self._kinetic(self.m2, self._after[1]) << units.J
+
+    @cached_property
     def internal_kinetic_energy_before(self) -> u.Quantity:
         """K_int = mu |v1 - v2|**2 / 2 (J), the kinetic energy in the centre-of-mass frame (IX.iv)."""
         return core.internal_kinetic_energy(self.m1, self.v1, self.m2, self.v2, self.vectors) << units.J
@@ -164,6 +185,7 @@ class Collision(display.Displayed):
 
 COLLISION_NAMES = [
     "restitution", "reduced_mass", "center_of_mass_velocity", "velocity1_after", "velocity2_after", "momentum",
+    "kinetic_energy1_before", "kinetic_energy2_before", "kinetic_energy1_after", "kinetic_energy2_after",
     "kinetic_energy_before", "kinetic_energy_after", "internal_kinetic_energy_before",
     "internal_kinetic_energy_after", "energy_lost",
 ]

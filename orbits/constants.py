@@ -38,7 +38,9 @@ EARTH_MEAN_RADIUS = 6_371_000.0
 
 @dataclass(frozen=True)
 class MeanElements:
-    """Osculating-like mean elements of a body about its primary (SI, radians)."""
+    """Osculating-like mean elements of a body about its primary (SI, radians) at `epoch` (Julian date, TDB), in
+    the ecliptic and equinox of J2000, or (`pole` = (ra, dec), rad) in the plane with that ICRF pole, the node
+    counted from its ascending node on the ICRF equator (orbits.catalogue_orbits); `accuracy` says how well."""
 
     primary: str
     a: float
@@ -48,6 +50,9 @@ class MeanElements:
     argp: float
     mean_anomaly: float
     source: str
+    epoch: float = 2451545.0
+    pole: tuple[float, float] | None = None
+    accuracy: str = ""
 
 
 @dataclass(frozen=True)

@@ -26,7 +26,7 @@ The matching N-body problem for rebound and heyoka is built in orbits.validate.b
 """
 
 from collections.abc import Iterable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 import astropy.constants as const
@@ -112,6 +112,8 @@ class Cosmology(display.Displayed):
     omega_r: float = 0.0
     omega_k: float = 0.0
     omega_l: float = 0.0
+    #: a published model's name ("Planck 2018"), shown before the kind of model; None for a model of one's own
+    name: str | None = None
     model: friedmann.Friedmann = field(init=False, repr=False)
 
     def __post_init__(self):
@@ -161,7 +163,8 @@ class Cosmology(display.Displayed):
         """
         hubble = PLANCK18_H0 * u.km / u.s / u.Mpc
         orad = _radiation_density(float(_hubble(hubble)), PLANCK18_TCMB, PLANCK18_NEFF) if radiation else 0.0
-        return cls.from_densities(hubble, Om0=PLANCK18_OM0, Or0=orad)
+        model = cls.from_densities(hubble, Om0=PLANCK18_OM0, Or0=orad)
+        return replace(model, name="Planck 2018" + (" with radiation" if radiation else ""))
 
     # ---- scales -------------------------------------------------------------------------------
     @cached_property
@@ -245,14 +248,14 @@ class Cosmology(display.Displayed):
         return np.where(np.isinf(z), 0.0, ratio) << units.M
 
     def distance_modulus(self, z: float | np.ndarray | u.Quantity) -> u.Quantity:
-        """mu = m - M = 5 log10(|D_L| / 10 pc) = 5 [log10(1 + z) + log10(|D_M| / 10 pc)] (magnitudes, a dimensionless
-        number); -inf at z = 0. Formed from the logarithms, so it stays finite where D_L itself leaves float64.
+        """mu = m - M = 5 log10(|D_L| / 10 pc) = 5 [log10(1 + z) + log10(|D_M| / 10 pc)] (mag, as astropy gives it);
+        -inf at z = 0. Formed from the logarithms, so it stays finite where D_L itself leaves float64.
 
         |D_L|: beyond the antipode of a closed universe D_M = R sin(D_C / R) < 0, and the flux goes as 1 / D_L**2."""
         z = _redshift(z)
         transverse = np.abs(self.model.transverse_comoving_distance(z, self._d_h))
         with np.errstate(divide="ignore"):
-            return 5.0 * (np.log10(1.0 + z) + np.log10(transverse / TEN_PARSECS)) << u.one
+            return 5.0 * (np.log10(1.0 + z) + np.log10(transverse / TEN_PARSECS)) << u.mag
 
     def comoving_volume(self, z: float | np.ndarray | u.Quantity) -> u.Quantity:
         """V_C (m3): the comoving volume of the whole sky out to z; 4 pi D_C**3 / 3 if flat."""
@@ -309,12 +312,15 @@ class Cosmology(display.Displayed):
     # ---- tables -------------------------------------------------------------------------------
     @property
     def description(self) -> str:
-        """E.g. "Einstein-de Sitter, H0 = 48.8896 km/s/Mpc, Om = 1": the model, H0 and the nonzero densities."""
+        """E.g. "Einstein-de Sitter, H0 = 48.8896 km/s/Mpc, Om = 1", or "Planck 2018: flat matter + Lambda, H0 = ...":
+        the model's name if it has one, its kind, H0 and the nonzero densities."""
         h0 = self.hubble_constant.to_value(u.km / u.s / u.Mpc)
         labels = ("Om", "Or", "Ok", "Ol")
         values = (self.omega_m, self.omega_r, self.omega_k, self.omega_l)
         densities = "".join(f", {label} = {value:.6g}" for label, value in zip(labels, values) if value != 0)
-        return f"{MODEL_NAMES[self.method]}, H0 = {h0:.6g} km/s/Mpc{densities}"
+        kind = MODEL_NAMES[self.method]
+        named = kind if self.name is None else f"{self.name}: {kind[0].lower()}{kind[1:]}"
+        return f"{named}, H0 = {h0:.6g} km/s/Mpc{densities}"
 
     def __repr__(self) -> str:
         return f"Cosmology({self.description})"

@@ -4,7 +4,8 @@ axes of the plots all ask this module how to show a quantity.
 A quantity is shown in the natural unit for its kind and size, the largest finite magnitude choosing the rung:
 
     length    m below 1 km, km below 1e7 km (and for 0), AU below 1e5 AU, pc below 1e5 pc, Mpc beyond
-    time      s below 2 min, min below 2 h, h below 2 d, d below 1000 d, yr below 1e7 yr, Gyr beyond
+    time      s below 2 min, min below 2 h, h below 2 d, d below 1000 d, yr below 1e6 yr, Myr below 1e9 yr, Gyr
+              beyond
     angle     deg; an angular rate in deg per the natural time unit of 1 rad / rate (deg / d for a planet)
     speed     km/s from 1 km/s, m/s below (a projectile, a radial-velocity curve); GM in km3 / s2; specific
               energy in km2 / s2; h and dA/dt in km2 / s
@@ -12,13 +13,18 @@ A quantity is shown in the natural unit for its kind and size, the largest finit
     mass      kg below 1e20 kg, Earth masses below 0.1 M_jup, Jupiter masses below 0.05 M_sun, solar masses beyond
     volume    m3 below 1e9 m3, km3 below (1e5 pc)**3, Mpc3 below (1 Gpc)**3, Gpc3 beyond
 
-with DIGITS significant digits. `system="si"` shows SI units instead, and `overrides` fixes the unit of a named
-quantity. JSON is not display: it carries the exact float64 value in SI (orbits_cli.render). Numbers never show
-as -0; non-finite values show as inf, -inf and nan.
+with DIGITS significant digits, in plain decimals from 1e-3 up to 10**DIGITS (10**4 at least: 7700 km shows as
+7700 with 3 digits) and as "1.538875e7" or "4.739143e-4" beyond. `system="si"`
+shows SI units instead, and `overrides` fixes the unit of a named quantity. A quantity that is exactly zero takes
+the unit its table gives a quantity of its kind (`table_units`). Right ascension and declination read as
+astronomers write them, 10h08m30.34s and +13d45m32.8s. Units are written the astronomers' way: "km / s / Mpc",
+"kg m2 / s", in headers without spaces ("km/s/Mpc"). JSON is not display: it carries the exact float64 value in
+SI (orbits_cli.render). Numbers never show as -0; non-finite values show as inf, -inf and nan.
 """
 
 import html
 import math
+import textwrap
 import unicodedata
 from collections.abc import Mapping
 from typing import Any
@@ -31,8 +37,8 @@ DIGITS = 7
 SYSTEMS = ("natural", "si")
 
 _LENGTHS = [(1e3, u.m), (1e10, u.km), (1e5 * u.AU.to(u.m), u.AU), (1e5 * u.pc.to(u.m), u.pc), (math.inf, u.Mpc)]
-_TIMES = [(120.0, u.s), (7200.0, u.min), (172800.0, u.h), (1000 * 86400.0, u.day), (1e7 * u.yr.to(u.s), u.yr),
-          (math.inf, u.Gyr)]
+_TIMES = [(120.0, u.s), (7200.0, u.min), (172800.0, u.h), (1000 * 86400.0, u.day), (1e6 * u.yr.to(u.s), u.yr),
+          (1e9 * u.yr.to(u.s), u.Myr), (math.inf, u.Gyr)]
 _HUBBLE = u.km / u.s / u.Mpc
 #: units shown by their astronomers' names rather than astropy's (solMass)
 _NAMED = {u.M_sun: "M_sun", u.M_jup: "M_jup", u.M_earth: "M_earth"}
@@ -90,10 +96,15 @@ def natural_unit(q: u.Quantity, name: str = "") -> u.UnitBase:
 
 
 def si_unit(q: u.Quantity) -> u.UnitBase:
-    """The SI unit of q (angles in rad): what JSON carries and `system="si"` shows."""
+    """The SI unit of q (angles in rad, magnitudes in mag): what JSON carries and `system="si"` shows."""
     if q.unit.is_equivalent(u.one):
         return u.one
-    return q.unit.si if not q.unit.is_equivalent(u.rad) else u.rad
+    if q.unit.is_equivalent(u.rad):
+        return u.rad
+    try:
+        return q.unit.si
+    except u.UnitConversionError:  # a magnitude is its own unit
+        return q.unit
 
 
 def unit_for(q: u.Quantity, name: str = "", system: str = "natural", overrides: Mapping[str, Any] | None = None):
@@ -134,11 +145,34 @@ def number(x: float, digits: int = DIGITS) -> str:
         return "nan" if math.isnan(x) else ("inf" if x > 0 else "-inf")
     if x == 0:
         return "0"
-    text = f"{x:.{digits}g}"
-    if "e" in text:
-        mantissa, exponent = text.split("e")
-        text = f"{mantissa}e{int(exponent)}"
-    return text
+    if 1e-3 <= abs(x) < 10.0 ** max(digits, 4):
+        places = digits - 1 - math.floor(math.log10(abs(x)))
+        text = f"{round(x, places):.{max(places, 0)}f}"
+        if abs(float(text)) >= 10.0 ** max(digits, 4):  # rounded up into the next decade
+            return number(float(text), digits)
+        return _trimmed(text)
+    mantissa, exponent = f"{x:.{digits - 1}e}".split("e")
+    return f"{_trimmed(mantissa)}e{int(exponent)}"
+
+
+def _trimmed(text: str) -> str:
+    """A decimal without trailing zeros after its point (and without the point if nothing follows it); "-0" as
+    "0"."""
+    if "." in text:
+        text = text.rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+def wrapped(text: str, width: int, initial_indent: str = "", subsequent_indent: str = "") -> list[str]:
+    """`text` in lines of at most `width` columns, broken between words only: never inside a word, a hyphenated
+    name ("skyfield-data") or a unit; a word longer than the line (a path) stands on a line of its own."""
+    return textwrap.wrap(text, width, initial_indent=initial_indent, subsequent_indent=subsequent_indent,
+                         break_long_words=False, break_on_hyphens=False)
+
+
+def filled(text: str, width: int, initial_indent: str = "", subsequent_indent: str = "") -> str:
+    """`wrapped` joined into one string of lines."""
+    return "\n".join(wrapped(text, width, initial_indent, subsequent_indent))
 
 
 def values_text(values: np.ndarray, digits: int = DIGITS) -> str:
@@ -155,17 +189,41 @@ def values_text(values: np.ndarray, digits: int = DIGITS) -> str:
     return f"{flat.size} values in [{number(finite.min(), digits)}, {number(finite.max(), digits)}]"
 
 
-def unit_text(unit: u.UnitBase) -> str:
-    """The unit as people write it ("km / s", "deg", "" for a pure number). A scaled unit reads by its scale: "10^6 km"
-    when the scale is exactly a power of ten (a scaled axis unit), else the scale itself ("2 s", "3 d"), so that the
-    label always says what the shown numbers count."""
+def unit_text(unit: u.UnitBase, compact: bool = False) -> str:
+    """The unit as astronomers write it ("km / s", "km / s / Mpc", "kg m2 / s", "deg", "" for a pure number);
+    `compact` without spaces around the slashes ("km/s/Mpc", for a column header that must not break inside it). A
+    scaled unit reads by its scale: "10^6 km" when the scale is exactly a power of ten (a scaled axis unit), else
+    the scale itself ("2 s", "3 d"), so that the label always says what the shown numbers count."""
     if unit == u.one:
         return ""
     if unit in _NAMED:
         return _NAMED[unit]
     if isinstance(unit, u.CompositeUnit) and unit.scale != 1 and len(unit.bases) == 1 and unit.powers == [1]:
         return f"{_scale_text(unit.scale)} {unit.bases[0].to_string()}"
+    if isinstance(unit, u.CompositeUnit) and unit.scale == 1 and len(unit.bases) > 1:
+        return _composed(unit, "/" if compact else " / ")
     return unit.to_string()
+
+
+#: the order of factors in a written unit: masses first in a numerator, times first in a denominator
+_ORDER = {"kg": 0, "g": 0, "solMass": 0, "jupiterMass": 0, "earthMass": 0, "s": 1, "min": 1, "h": 1, "d": 1,
+          "yr": 1, "Myr": 1, "Gyr": 1}
+
+
+def _composed(unit: u.CompositeUnit, slash: str) -> str:
+    """Numerator factors (masses first) then each denominator factor after its own slash (times first):
+    km / s / Mpc, kg m2 / s, km3 / s2."""
+    def factor(base, power):
+        return base.to_string() + (str(abs(power)) if abs(power) != 1 else "")
+
+    def key(pair):
+        return (_ORDER.get(pair[0].to_string(), 2), pair[0].to_string())
+
+    pairs = list(zip(unit.bases, unit.powers))
+    top = [factor(b, p) for b, p in sorted((q for q in pairs if q[1] > 0), key=key)]
+    bottom = [factor(b, p) for b, p in sorted((q for q in pairs if q[1] < 0), key=key)]
+    joint = "\u00a0" if slash == "/" else " "  # compact: no break inside the numerator either
+    return slash.join([joint.join(top) if top else "1", *bottom])
 
 
 def _scale_text(scale: float) -> str:
@@ -178,10 +236,57 @@ def _scale_text(scale: float) -> str:
 
 
 def shown(q: u.Quantity, name: str = "", system: str = "natural", overrides: Mapping[str, Any] | None = None,
-          digits: int = DIGITS) -> tuple[str, str]:
-    """(value text, unit text) of a quantity as a table shows it."""
-    unit = unit_for(q, name, system, overrides)
+          digits: int = DIGITS, unit: u.UnitBase | None = None) -> tuple[str, str]:
+    """(value text, unit text) of a quantity as a table shows it (in `unit` when the table has chosen it)."""
+    unit = unit_for(q, name, system, overrides) if unit is None else unit
+    if name in _SEXAGESIMAL and unit == u.deg and np.size(q) <= 4:
+        texts = [_sexagesimal(float(v), *_SEXAGESIMAL[name]) for v in np.ravel(q.to_value(u.deg))]
+        return ", ".join(texts), ""
     return values_text(q.to_value(unit), digits), unit_text(unit)
+
+
+#: angles astronomers write in hours or degrees, minutes and seconds: name -> (in hours, decimals of the seconds)
+_SEXAGESIMAL = {"right_ascension": (True, 2), "declination": (False, 1)}
+
+
+def _sexagesimal(degrees: float, hours: bool, decimals: int) -> str:
+    """10h08m30.34s for a right ascension (hours), +13d45m32.8s for a declination; the seconds rounded first, so
+    that 59.996 s carries into the minutes."""
+    if not math.isfinite(degrees):
+        return number(degrees)
+    value = abs(degrees) / 15.0 if hours else abs(degrees)
+    scale = 10**decimals
+    total = round(value * 3600.0 * scale)  # in units of the last shown decimal of a second
+    whole, fraction = divmod(total, 3600 * scale)
+    whole = whole % 24 if hours else whole  # 23h59m59.999s rounds to 00h, not 24h
+    minutes, seconds = divmod(fraction, 60 * scale)
+    sign = "" if hours else ("-" if degrees < 0 and total else "+")
+    mark = "h" if hours else "d"
+    return f"{sign}{whole:02d}{mark}{minutes:02d}m{seconds / scale:0{3 + decimals}.{decimals}f}s"
+
+
+#: the unit of a quantity that is exactly zero when no other quantity of its kind in its table says otherwise
+_ZERO_UNITS = [(u.m**3, u.Gpc**3)]
+
+
+def table_units(quantities: Mapping[str, u.Quantity], system: str = "natural",
+                overrides: Mapping[str, Any] | None = None) -> dict[str, u.UnitBase]:
+    """The unit each quantity of one table is shown in (unit_for), except that a quantity which is exactly zero
+    takes the unit of the first quantity of its kind in the table that is not (a lookback time of 0 in the Gyr of
+    the age beside it, a distance of 0 in Mpc), else its kind's unit for zero."""
+    units = {name: unit_for(q, name, system, overrides) for name, q in quantities.items()}
+    if system != "natural":
+        return units
+    nonzero = {name: q for name, q in quantities.items() if _size(q, q.unit) > 0 or not np.size(q)}
+    for name, q in quantities.items():
+        if name in nonzero or (overrides and name in overrides) or q.unit.is_equivalent(u.one):
+            continue
+        kin = next((units[other] for other, o in nonzero.items() if o.unit.is_equivalent(q.unit)
+                    and not o.unit.is_equivalent(u.one)), None)
+        if kin is None:
+            kin = next((zero for kind, zero in _ZERO_UNITS if q.unit.is_equivalent(kind)), units[name])
+        units[name] = kin
+    return units
 
 
 def quantity_text(q: u.Quantity, name: str = "", digits: int = DIGITS) -> str:
@@ -200,6 +305,48 @@ def axis_unit(q: u.Quantity) -> u.UnitBase:
         power = 3 * min(int(math.log10(size)) // 3, 2)
         return u.CompositeUnit(10.0**power, [unit], [1])
     return unit
+
+
+# ---- the same, typeset for pictures (matplotlib's mathtext, no LaTeX) ----------------------------------------
+
+#: the astronomers' mass units, with their symbols
+_MATH_NAMES = {"M_sun": r"M$_\odot$", "M_jup": r"M$_J$", "M_earth": r"M$_\oplus$"}
+
+
+def number_math(x: float, digits: int = DIGITS) -> str:
+    """`number(x, digits)` with its power of ten typeset: "1.287$\\times10^{6}$", "$10^{-8}$", "0.74"; a number
+    below a million is written out, rounded to `digits` ("26600", not "2.66e4")."""
+    x = float(x)
+    if math.isfinite(x) and 10.0**digits <= abs(x) < 1e6:
+        x = round(x, digits - 1 - math.floor(math.log10(abs(x))))
+        if abs(x) < 1e6:
+            return number(x, 6)
+    text = number(x, digits)
+    if "e" not in text:
+        return text
+    mantissa, exponent = text.split("e")
+    power = f"10^{{{int(exponent)}}}"
+    if mantissa in ("1", "-1"):
+        return f"${mantissa[:-1]}{power}$"
+    return f"{mantissa}$\\times{power}$"
+
+
+def unit_math(unit: u.UnitBase) -> str:
+    """`unit_text(unit)` typeset: powers raised ("km$^{2}$/s$^{2}$", "$10^{3}$ km"), M_sun as M$_\\odot$."""
+    import re
+
+    text = unit_text(unit)
+    text = re.sub(r"^10\^(-?\d+)", r"$10^{\1}$", text)
+    text = re.sub(r"(?<=[A-Za-z)])(-?\d+)\b", r"$^{\1}$", text)
+    for name, math_name in _MATH_NAMES.items():
+        text = text.replace(name, math_name)
+    return text.replace(" / ", "/")
+
+
+def quantity_math(q: u.Quantity, name: str = "", digits: int = DIGITS, unit: u.UnitBase | None = None) -> str:
+    """A scalar quantity typeset for a picture, in its natural unit (or `unit`): "1.287$\\times10^{6}$ km"."""
+    unit = natural_unit(q, name) if unit is None else unit
+    return f"{number_math(float(q.to_value(unit)), digits)} {unit_math(unit)}".strip()
 
 
 def quantities_html(title: str, quantities: Mapping[str, u.Quantity], digits: int = DIGITS) -> str:

@@ -74,6 +74,9 @@ _CHAINS = {
 }
 #: bodies whose DE421 point is the barycentre of the planet and its moons, not the planet's centre
 SYSTEM_BARYCENTRES = ("Jupiter", "Saturn", "Uranus", "Neptune", "Pluto")
+#: bodies outside DE421 whose heliocentric state is their published osculating orbit (orbits.catalogue_orbits)
+#: carried to the epoch by two-body propagation about the Sun, the accuracy its MeanElements states
+PROPAGATED = ("Ceres", "Vesta")
 _ALIASES = {"ssb": "solar system barycentre", "solar system barycenter": "solar system barycentre",
             "barycentre": "solar system barycentre", "barycenter": "solar system barycentre",
             "emb": "Earth-Moon barycentre", "earth-moon barycenter": "Earth-Moon barycentre"}
@@ -113,6 +116,9 @@ def point_name(name: str) -> str:
     if key in _ALIASES:
         return _ALIASES[key]
     for known in _CHAINS:
+        if known.lower() == key:
+            return known
+    for known in PROPAGATED:
         if known.lower() == key:
             return known
     catalogued = " (it is in the catalogue, but not in the ephemeris)" if key in (b.lower() for b in BODIES) else ""
@@ -309,11 +315,35 @@ def barycentric(point: str, when: Time, source: str = "auto") -> tuple[np.ndarra
 def _read(points: Sequence[str], when: Time, source: str) -> dict[str, tuple[np.ndarray, np.ndarray]]:
     """Barycentric (r, v) of each distinct point at one epoch from the resolved `source`: the epoch checked against
     the source's span once, each point read once."""
+    wanted = list(dict.fromkeys(points))
+    read_from_source = [p for p in dict.fromkeys([*wanted, *(["Sun"] if set(wanted) & set(PROPAGATED) else [])])
+                        if p not in PROPAGATED]
     if source == "de421":
         jd1, jd2 = tdb_julian_dates(when)
         _require_de421_span(jd1, jd2)
-        return {point: _de421_from_ssb(point, jd1, jd2) for point in dict.fromkeys(points)}
-    return {point: _builtin_from_ssb(point, when) for point in dict.fromkeys(points)}
+        read = {point: _de421_from_ssb(point, jd1, jd2) for point in read_from_source}
+    else:
+        read = {point: _builtin_from_ssb(point, when) for point in read_from_source}
+    for point in set(wanted) & set(PROPAGATED):
+        r, v = _propagated_heliocentric(point, when)
+        read[point] = (read["Sun"][0] + r, read["Sun"][1] + v)
+    return read
+
+
+def _propagated_heliocentric(name: str, when: Time) -> tuple[np.ndarray, np.ndarray]:
+    """ICRF heliocentric (r, v) (m, m/s) of a PROPAGATED body: its osculating orbit (orbits.catalogue_orbits)
+    carried from its epoch to `when` by Kepler's equation (orbits.core.propagate)."""
+    from orbits.catalogue_orbits import JPL_SUN_GM, mean_elements
+    from orbits.core import anomalies, elements, frames, propagate
+
+    el = mean_elements(name)
+    nu = anomalies.true_from_mean(el.mean_anomaly, el.e)
+    r0, v0 = elements.elements_to_state(el.a * (1 - el.e) * (1 + el.e), el.e, el.inc, el.raan, el.argp, nu,
+                                        JPL_SUN_GM)
+    jd1, jd2 = tdb_julian_dates(when)
+    dt = ((jd1 - el.epoch) + jd2) * 86_400.0
+    r, v = propagate.propagate(r0, v0, JPL_SUN_GM, dt)
+    return frames.ecliptic_to_equatorial(r), frames.ecliptic_to_equatorial(v)
 
 
 def _relative(read: dict, target: str, origin: str, when: Time, source: str) -> "BodyState":
@@ -321,7 +351,16 @@ def _relative(read: dict, target: str, origin: str, when: Time, source: str) -> 
     r, v = read[target]
     if origin != "solar system barycentre":
         r, v = r - read[origin][0], v - read[origin][1]
-    return BodyState(target, origin, when, r, v, DE421 if source == "de421" else BUILTIN)
+    named = DE421 if source == "de421" else BUILTIN
+    propagated = [p for p in (target, origin) if p in PROPAGATED]
+    if not propagated:
+        return BodyState(target, origin, when, r, v, named)
+    from orbits.catalogue_orbits import mean_elements
+
+    orbits_used = [mean_elements(p) for p in propagated]
+    about = "; ".join(f"{p} by two-body propagation of {el.source}" for p, el in zip(propagated, orbits_used))
+    accuracy = "; ".join(f"{p} {el.accuracy}" for p, el in zip(propagated, orbits_used))
+    return BodyState(target, origin, when, r, v, f"{about}; other bodies: {named}", accuracy)
 
 
 def resolve_source(source: str) -> str:
@@ -346,6 +385,8 @@ class BodyState(display.Displayed):
     r_si: np.ndarray
     v_si: np.ndarray
     source: str
+    #: the accuracy of a state that is not the ephemeris' own (a PROPAGATED body), said by its orbit's source
+    stated_accuracy: str = ""
 
     @property
     def r(self) -> u.Quantity:
@@ -389,7 +430,10 @@ class BodyState(display.Displayed):
 
     @property
     def accuracy(self) -> str:
-        """The source's accuracy against DE421 for this body and centre (exact for DE421 itself)."""
+        """The source's accuracy against DE421 for this body and centre (exact for DE421 itself), or what the
+        published orbit of a PROPAGATED body states."""
+        if self.stated_accuracy:
+            return self.stated_accuracy
         if self.source == DE421:
             return "DE421 as read by jplephem (astropy reading the same kernel agrees to 1 mm)"
         jd1, jd2 = tdb_julian_dates(self.epoch)
@@ -399,6 +443,14 @@ class BodyState(display.Displayed):
                     f"this epoch lies")
         worst = BUILTIN_ACCURACY_KM.get(self.body, 0.0) + BUILTIN_ACCURACY_KM.get(self.center, 0.0)
         return f"approximate: within {worst:,.0f} km of DE421 over {BUILTIN_SPAN[0]}-{BUILTIN_SPAN[1]}"
+
+    @property
+    def provenance(self) -> str:
+        """Where the state comes from, as a title says it once: the source, and its accuracy unless it is DE421
+        itself (exact as read)."""
+        if self.source == DE421 and not self.stated_accuracy:
+            return self.source
+        return f"{self.source}; {self.accuracy}"
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{name: Quantity}: distance, speed, light time and the ICRF components (or `only` those)."""
@@ -444,7 +496,8 @@ def state(body: str, when: Any, center: str = "Sun", *, source: str = "auto", sc
 
     Parameters
     ----------
-    body, center : a planet, "Sun", "Moon", "Earth-Moon barycentre" or "solar system barycentre" (any case).
+    body, center : a planet, "Sun", "Moon", "Earth-Moon barycentre" or "solar system barycentre" (any case), or
+        Ceres or Vesta (PROPAGATED: their published osculating orbit carried to the epoch, with its accuracy).
     when : astropy Time (any scale, any shape) or ISO string(s) in `scale` (default UTC).
     source : "auto" (DE421 when installed, else the built-in), "de421" or "builtin".
 
@@ -597,8 +650,8 @@ def sighting(heliocentric: dict[str, BodyState], body: str, observer: str = "Ear
     body_state, seer_state = heliocentric[target], heliocentric[seer]
     if body_state.center != "Sun" or seer_state.center != "Sun":
         raise OrbitDomainError("sighting: the states must be about the Sun (ephemeris.states(..., center='Sun'))")
-    when, source = body_state.epoch, body_state.source
+    when, source, stated = body_state.epoch, body_state.source, body_state.stated_accuracy
     return Sighting(body_state,
                     BodyState(target, seer, when, body_state.r_si - seer_state.r_si,
-                              body_state.v_si - seer_state.v_si, source),
-                    BodyState("Sun", seer, when, -seer_state.r_si, -seer_state.v_si, source))
+                              body_state.v_si - seer_state.v_si, source, stated),
+                    BodyState("Sun", seer, when, -seer_state.r_si, -seer_state.v_si, source, stated))

@@ -18,6 +18,7 @@ is cancellation-free (orbits.core.flyby); IAS15 and heyoka integrations from 200
 (tests/api/test_flyby_api.py).
 """
 
+import warnings
 from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
@@ -29,7 +30,7 @@ from orbits import display, inputs, units
 from orbits.constants import Body, G
 from orbits.core import binary as binary_core
 from orbits.core import flyby as flyby_core
-from orbits.core.errors import OrbitDomainError
+from orbits.core.errors import InsideBodyWarning, OrbitDomainError
 from orbits.orbit import PRIMARY, Orbit
 from orbits.tables import quantity_table
 
@@ -63,6 +64,13 @@ class Flyby(display.Displayed):
     mass: np.ndarray | None = None
     gm1: np.ndarray | None = None
     gm2: np.ndarray | None = None
+
+    def __post_init__(self):
+        """An InsideBodyWarning when the closest approach is inside the catalogue body passed (its GM exactly), or
+        inside the two bodies' radii added for Flyby.between: a collision, not a flyby."""
+        bodies = [self.mu] if self.gm1 is None else [self.gm1, self.gm2]
+        q = flyby_core.periapsis_distance(self.b, self.v_inf, self.mu)
+        inputs.warn_if_inside(q, [inputs.exact_body(gm) for gm in bodies], "Flyby")
 
     # ---- constructors -------------------------------------------------------------------------
     @classmethod
@@ -200,7 +208,10 @@ class Flyby(display.Displayed):
     def orbit(self) -> Orbit:
         """The relative hyperbola as an Orbit at closest approach (nu = 0), in the xy plane, for state vectors."""
         mass = None if self.mass is None else self.mass << units.KG
-        return Orbit.from_elements(self.mu << units.M3_PER_S2, p=self.semilatus_rectum, e=self.eccentricity, mass=mass)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", InsideBodyWarning)  # said once, by the Flyby
+            return Orbit.from_elements(self.mu << units.M3_PER_S2, p=self.semilatus_rectum, e=self.eccentricity,
+                                       mass=mass)
 
     # ---- the two stars of Flyby.between (XXII.vi) -----------------------------------------------
     @cached_property

@@ -19,7 +19,7 @@ from orbits import units
 from orbits.constants import BODIES, STANDARD_GRAVITY, Body, G, body
 from orbits.core import elements, kepler
 from orbits.core.checks import check_finite, first_where, require_magnitude, require_positive
-from orbits.core.errors import OrbitDomainError
+from orbits.core.errors import InsideBodyWarning, OrbitDomainError
 
 #: the SI unit of each kind of quantity a string may hold, and a unit to suggest when the unit is missing
 KINDS = {
@@ -60,6 +60,9 @@ def parse_quantity(text: str, kind: str, name: str, bare_unit: u.UnitBase | None
             warnings.simplefilter("ignore", u.UnitsWarning)
             value = u.Quantity(text)
     except (TypeError, ValueError):
+        if find_body(text) is not None:
+            raise OrbitDomainError(f"{name}: {text!r} is a body, not a {kind}; write e.g. "
+                                   f"'1.5 {example or 1}'") from None
         raise OrbitDomainError(f"{name}: cannot read {text!r} as a quantity; write e.g. '7000 km'") from None
     if value.unit == u.one and si != u.one:
         if bare_unit is None:
@@ -157,6 +160,39 @@ def orbit_radius(primary: Body | str | u.Quantity, value: u.Quantity, name: str)
             f"{name} = {bad!r} m is inside {named.name} (allowed: above its radius {named.radius!r} m); an orbit "
             f"radius counts from the centre: add the radius to an altitude")
     return r
+
+
+def exact_body(gm: np.ndarray) -> Body | None:
+    """The catalogue body whose own GM every element of `gm` (m3/s2) is, exactly, else None: the primary an orbit
+    names ("about Earth"), found without sorting a large array."""
+    gm = np.asarray(gm, dtype=float)
+    if gm.size == 0:
+        return None
+    first = float(gm.flat[0])
+    named = next((b for b in BODIES.values() if b.gm == first), None)
+    return named if named is not None and (gm.size == 1 or bool(np.all(gm == first))) else None
+
+
+def warn_if_inside(periapsis: np.ndarray, bodies: "list[Body | None]", what: str) -> None:
+    """Warn (InsideBodyWarning) when a closest approach (m, array) lies below the radius of the catalogue body met,
+    or for two bodies meeting below their radii added: the conic passes through the body, or the two collide.
+    Bodies that are None (a mass or GM, not a catalogue body) have no radius and are left out."""
+    known = [b for b in bodies if b is not None]
+    if not known:
+        return
+    reach = sum(b.radius for b in known)
+    inside = np.asarray(periapsis) < reach
+    if not inside.any():
+        return
+    q, = first_where(inside, np.asarray(periapsis, dtype=float))
+    names = " and ".join(f"the {b.name}" if b.name in ("Sun", "Earth", "Moon") else b.name for b in known)
+    if len(known) == 1:
+        size, verdict = f"equatorial radius {reach / 1e3:.7g} km", f"it passes through {names}"
+    else:
+        size, verdict = f"radii added: {reach / 1e3:.7g} km", "they collide"
+    count = f" ({int(inside.sum())} of {inside.size})" if inside.size > 1 else ""
+    warnings.warn(f"{what}{count}: closest approach {q / 1e3:.7g} km is inside {names} ({size}): {verdict}",
+                  InsideBodyWarning, stacklevel=2)
 
 
 def gravitational_parameter(value: Body | str | u.Quantity, name: str = "primary mass M") -> np.ndarray:

@@ -19,10 +19,10 @@ from typing import TYPE_CHECKING, Any
 import astropy.units as u
 import numpy as np
 
-from orbits import display, inputs, units
+from orbits import catalogue_orbits, display, inputs, units
 from orbits.constants import Body, G, body
 from orbits.core import anomalies, elements, propagate, transition, twobody
-from orbits.core.checks import broadcast_shape
+from orbits.core.checks import broadcast_shape, first_where
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
 
@@ -31,6 +31,8 @@ if TYPE_CHECKING:
 
 #: how a primary is named in error messages
 PRIMARY = "primary mass or gravitational parameter"
+#: the relative slack of speed_at's range [q, Q]: a distance computed another way lands within a few ulp of an apsis
+APSIS_SLACK = 1e-12
 
 
 def _shape(x):
@@ -51,7 +53,9 @@ class Orbit(display.Displayed):
     """Kepler orbit(s) about a fixed primary; fields are float64 SI arrays that broadcast together.
 
     Build it with Orbit.from_elements, Orbit.from_vectors or Orbit.circular rather than directly.
-    `mass` (kg) is the orbiting body's mass, needed only for U, K, E, L and the LRL vector.
+    `mass` (kg) is the orbiting body's mass, needed only for U, K, E, L and the LRL vector. An orbit about a
+    catalogue body (its GM exactly) whose periapsis lies inside the body's equatorial radius gives an
+    InsideBodyWarning, whichever constructor built it: it passes through the body.
     """
 
     mu: np.ndarray
@@ -62,6 +66,9 @@ class Orbit(display.Displayed):
     argp: np.ndarray
     nu: np.ndarray
     mass: np.ndarray | None = None
+
+    def __post_init__(self):
+        inputs.warn_if_inside(self.p / (1.0 + self.e), [inputs.exact_body(self.mu)], type(self).__name__)
 
     # ---- constructors -------------------------------------------------------------------------
     @classmethod
@@ -129,8 +136,10 @@ class Orbit(display.Displayed):
     def from_body(cls, name: str, epoch: Any = None, *, source: str = "auto", scale: str = "utc") -> "Orbit":
         """The catalogue body's orbit about its parent, with the body's mass, in the ecliptic frame of J2000.
 
-        Without `epoch`: the J2000 mean orbit of the catalogue (orbits.constants; Standish's mean elements for
-        the planets), its mean anomaly turned into the true anomaly with Kepler's equation. With `epoch` (astropy
+        Without `epoch`: the published orbit of orbits.catalogue_orbits.mean_elements at its own epoch (Standish's
+        J2000 mean elements for the planets, JPL's osculating elements for Ceres and Vesta, JPL's satellite mean
+        elements for the moons, turned to the ecliptic of J2000), its mean anomaly turned into the true anomaly
+        with Kepler's equation. With `epoch` (astropy
         Time or ISO string, see orbits.ephemeris): the osculating two-body orbit through the ephemeris state
         relative to the parent (the Sun for a planet, the Earth for the Moon), mu = G (M_parent + M_body).
         DE421 gives Jupiter-Pluto as system barycentres, and Standish's mean elements are those of the
@@ -140,20 +149,17 @@ class Orbit(display.Displayed):
         target = body(name)
         if epoch is not None:
             return cls._osculating(target, epoch, source, scale)
-        if target.orbit is None:
-            raise OrbitDomainError(f"{target.name} has no mean orbit in the catalogue; give an epoch (planets, Pluto "
-                                   f"and the Moon) or its elements")
-        el = target.orbit
-        return cls.from_elements(
-            el.primary,
-            a=el.a << units.M,
-            e=el.e,
-            inc=el.inc << units.RAD,
-            raan=el.raan << units.RAD,
-            argp=el.argp << units.RAD,
-            nu=anomalies.true_from_mean(el.mean_anomaly, el.e) << units.RAD,
-            mass=target.barycentre_gm / G << units.KG,
-        )
+        el = catalogue_orbits.mean_elements(target.name)
+        mass = target.barycentre_gm / G << units.KG
+        nu = anomalies.true_from_mean(el.mean_anomaly, el.e)
+        if el.pole is None:
+            return cls.from_elements(el.primary, a=el.a << units.M, e=el.e, inc=el.inc << units.RAD,
+                                     raan=el.raan << units.RAD, argp=el.argp << units.RAD, nu=nu << units.RAD,
+                                     mass=mass)
+        mu = body(el.primary).gm + target.gm  # a moon's orbit about its planet: the two masses
+        r, v = elements.elements_to_state(el.a * (1 - el.e) * (1 + el.e), el.e, el.inc, el.raan, el.argp, nu, mu)
+        return cls.from_vectors(mu << units.M3_PER_S2, catalogue_orbits.reference_to_ecliptic(r, el.pole) << units.M,
+                                catalogue_orbits.reference_to_ecliptic(v, el.pole) << units.M_PER_S, mass=mass)
 
     @classmethod
     def _osculating(cls, target: Body, epoch: Any, source: str, scale: str) -> "Orbit":
@@ -269,13 +275,19 @@ class Orbit(display.Displayed):
         return twobody.covertex_speed(self.p, self.e, self.mu) << units.M_PER_S
 
     def speed_at(self, r: u.Quantity) -> u.Quantity:
-        """Vis-viva speed sqrt(mu (2/r - 1/a)) (m/s) at distance r (length) from the star."""
+        """Vis-viva speed sqrt(mu (2/r - 1/a)) (m/s) at distance r (length) from the star, where the body gets:
+        q <= r <= Q on an ellipse, r >= q on an open orbit, the apsides included to 1e-12 of their distance (an
+        apsis computed another way lands within a few ulp of q or Q)."""
         r_si = inputs.positive(r, units.M, "distance r")
-        with np.errstate(invalid="ignore"):
-            v = twobody.speed_at_radius(r_si, self.p, self.e, self.mu)
-        if not np.isfinite(v).all():
-            raise OrbitDomainError("distance r lies beyond the apoapsis of this orbit: the body never gets there")
-        return v << units.M_PER_S
+        q = twobody.periapsis_distance(self.p, self.e)
+        with np.errstate(divide="ignore"):
+            far = np.where(self.e < 1.0, self.p / (1.0 - self.e), np.inf)
+        outside = (r_si < q * (1.0 - APSIS_SLACK)) | (r_si > far * (1.0 + APSIS_SLACK))
+        if np.any(outside):
+            bad, low, high = first_where(outside, r_si, q, far)
+            raise OrbitDomainError(f"distance r = {bad!r} m is outside [{low!r}, {high!r}] m, from the periapsis "
+                                   f"to the apoapsis of this orbit: the body never gets there")
+        return twobody.speed_at_radius(r_si, self.p, self.e, self.mu) << units.M_PER_S
 
     # ---- dynamics (XXI.ii-iv) -------------------------------------------------------------------
     @cached_property
@@ -314,6 +326,38 @@ class Orbit(display.Displayed):
         """K = m v**2 / 2 = G M m (1/r - 1/(2a)) (J) at the current position."""
         m = self._require_mass("kinetic energy K")
         return 0.5 * m * self.speed.to_value(units.M_PER_S) ** 2 << units.J
+
+    def potential_energy_at(self, r: u.Quantity) -> u.Quantity:
+        """U(r) = -G M m / r (J) at distance r (length) from the star, for the orbiting body of mass m."""
+        m = self._require_mass("potential energy U(r)")
+        return twobody.potential_energy(inputs.positive(r, units.M, "distance r"), self.mu, m) << units.J
+
+    def kinetic_energy_at(self, r: u.Quantity) -> u.Quantity:
+        """K(r) = E - U(r) = m v(r)**2 / 2 (J) at distance r (length), where the body gets (see speed_at)."""
+        m = self._require_mass("kinetic energy K(r)")
+        return 0.5 * m * self.speed_at(r).to_value(units.M_PER_S) ** 2 << units.J
+
+    @cached_property
+    def laplace_runge_lenz_magnitude(self) -> u.Quantity:
+        """|A| = m**2 mu e = m k e (kg2 m3/s2), k = G M m: the length of the Laplace-Runge-Lenz vector."""
+        m = self._require_mass("the Laplace-Runge-Lenz vector")
+        return m * m * self.mu * self.e << (units.KG**2 * units.M3_PER_S2)
+
+    @cached_property
+    def laplace_runge_lenz_along_r(self) -> u.Quantity:
+        """A . r = L**2 - m k r = m**2 (h**2 - mu r) (kg2 m4/s2) at the current position: the conic's equation
+        r = (L**2 / m k) / (1 + e cos nu) in one dot product."""
+        m = self._require_mass("the Laplace-Runge-Lenz vector")
+        h2 = self.mu * self.p
+        return m * m * (h2 - self.mu * self.radius.to_value(units.M)) << (units.KG**2 * units.M**4 / units.S**2)
+
+    def area_swept(self, t1: u.Quantity, t2: u.Quantity) -> u.Quantity:
+        """A = (h / 2)(t2 - t1) (m2): the area the radius vector sweeps from time t1 to t2 (time Quantities after
+        the current position, broadcasting), Kepler's second law; negative when t2 < t1. Over one period of an
+        ellipse it is pi a b."""
+        start = units.to_si(t1, units.S, "time t1")
+        end = units.to_si(t2, units.S, "time t2")
+        return twobody.areal_velocity(self.p, self.mu) * (end - start) << units.M**2
 
     # ---- time (XXI.iii, XXI.vii) ----------------------------------------------------------------
     @cached_property
@@ -486,6 +530,8 @@ QUANTITY_NAMES = [
     "angular_momentum",
     "potential_energy",
     "kinetic_energy",
+    "laplace_runge_lenz_magnitude",
+    "laplace_runge_lenz_along_r",
     "period",
     "mean_motion",
     "covertex_times",

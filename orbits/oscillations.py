@@ -155,6 +155,16 @@ class DampedOscillator(display.Displayed):
         """x'(t) (m/s)."""
         return core.damped_motion(self.k, self.b, self.x0, self.v0, signed(t, units.S, "time t"))[1] << units.M_PER_S
 
+    def acceleration_at(self, t: u.Quantity) -> u.Quantity:
+        """x''(t) = -k x - b x' (m/s2), the equation of motion evaluated on the solution."""
+        x, v = core.damped_motion(self.k, self.b, self.x0, self.v0, signed(t, units.S, "time t"))
+        return -self.k * x - self.b * v << ACCELERATION
+
+    @cached_property
+    def initial_acceleration(self) -> u.Quantity:
+        """x''(0) = -k x0 - b v0 (m/s2)."""
+        return -self.k * self.x0 - self.b * self.v0 << ACCELERATION
+
     def specific_energy_at(self, t: u.Quantity) -> u.Quantity:
         """(K + U) / m = x'**2 / 2 + k x**2 / 2 (J/kg), the notes' damped energy per unit mass."""
         x, v = core.damped_motion(self.k, self.b, self.x0, self.v0, signed(t, units.S, "time t"))
@@ -168,7 +178,8 @@ class DampedOscillator(display.Displayed):
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those)."""
-        return attribute_table(self, ["natural_frequency", "damped_frequency", "quality_factor"], only)
+        return attribute_table(self, ["natural_frequency", "damped_frequency", "quality_factor",
+                                      "initial_acceleration"], only)
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -221,10 +232,28 @@ class DrivenOscillator(display.Displayed):
         with np.errstate(divide="ignore"):
             return self.omega0 / self.b << DIMENSIONLESS
 
+    @cached_property
+    def acceleration_amplitude(self) -> u.Quantity:
+        """w**2 A (m/s2), the steady state's largest acceleration."""
+        return self.drive**2 * self.amplitude.to_value(units.M) << ACCELERATION
+
     def position_at(self, t: u.Quantity) -> u.Quantity:
         """The steady state A cos(w t - delta) (m)."""
         time = signed(t, units.S, "time t")
         return core.driven_steady_state(self.omega0, self.b, self.force_per_mass, self.drive, time)[0] << units.M
+
+    def velocity_at(self, t: u.Quantity) -> u.Quantity:
+        """The steady state's velocity -w A sin(w t - delta) (m/s)."""
+        time = signed(t, units.S, "time t")
+        return core.driven_steady_state(self.omega0, self.b, self.force_per_mass, self.drive, time)[1] << \
+            units.M_PER_S
+
+    def acceleration_at(self, t: u.Quantity) -> u.Quantity:
+        """The steady state's acceleration -w**2 A cos(w t - delta) (m/s2), which with the velocity and position
+        satisfies x'' + b x' + omega0**2 x = (F0 / m) cos(w t)."""
+        time = signed(t, units.S, "time t")
+        x, _ = core.driven_steady_state(self.omega0, self.b, self.force_per_mass, self.drive, time)
+        return -self.drive**2 * x << ACCELERATION
 
     def __repr__(self) -> str:
         """E.g. "DrivenOscillator(w = 2 rad / s, A = 3.4 m, lag = 90 deg)"."""
@@ -234,8 +263,8 @@ class DrivenOscillator(display.Displayed):
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those)."""
-        return attribute_table(self, ["amplitude", "phase_lag", "velocity_amplitude", "resonance_frequency",
-                            "quality_factor"], only)
+        return attribute_table(self, ["amplitude", "phase_lag", "velocity_amplitude", "acceleration_amplitude",
+                                      "resonance_frequency", "quality_factor"], only)
 
 
 SUPPORTS = ("string", "rod")
@@ -330,6 +359,24 @@ class VerticalCircle(display.Displayed):
         """v = sqrt(u**2 - 2 g R (1 - cos(theta))) (m/s) at angle theta from the bottom (NaN beyond reach)."""
         return core.circle_speed(self.u, self.g, self.radius, inputs.angle(theta, "angle theta")) << units.M_PER_S
 
+    def acceleration_at(self, theta: u.Quantity) -> tuple[u.Quantity, u.Quantity]:
+        """(centripetal v**2 / R toward the centre, tangential -g sin(theta) along the motion) (m/s2) at angle theta
+        from the bottom (NaN beyond reach); |a| = hypot of the two."""
+        angle = inputs.angle(theta, "angle theta")
+        v = core.circle_speed(self.u, self.g, self.radius, angle)
+        return v * v / self.radius << ACCELERATION, -self.g * np.sin(angle) << ACCELERATION
+
+    @cached_property
+    def acceleration_at_bottom(self) -> u.Quantity:
+        """u**2 / R (m/s2), all centripetal."""
+        return self.u * self.u / self.radius << ACCELERATION
+
+    @cached_property
+    def acceleration_at_top(self) -> u.Quantity:
+        """(u**2 - 4 g R) / R (m/s2), all centripetal, for a body that gets there."""
+        self._require_top()
+        return self.acceleration_at(np.pi << units.RAD)[0]
+
     def normal_force_at(self, theta: u.Quantity) -> u.Quantity:
         """N = (m / R)(u**2 - 2 g R + 3 g R cos(theta)) (N), toward the centre (ERRATA #101)."""
         if self.mass is None:
@@ -345,4 +392,5 @@ class VerticalCircle(display.Displayed):
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
         """{snake_case name: Quantity} (or `only` those); without `only`, what this motion lacks is left out."""
         return attribute_table(self, ["turning_angle", "leaving_angle", "period", "speed_at_top",
-                                      "normal_force_at_bottom", "normal_force_at_top"], only)
+                                      "acceleration_at_bottom", "acceleration_at_top", "normal_force_at_bottom",
+                                      "normal_force_at_top"], only)

@@ -295,11 +295,12 @@ class AtmosphereTable:
     source: str
 
     def band(self, altitude: float) -> AtmosphereBand:
-        """The band holding `altitude` (m); OrbitDomainError outside the table."""
-        if not self.bands[0].base <= altitude < self.top:
+        """The band an orbit at `altitude` (m) decays through: the one with base < altitude <= its top (at a
+        band's base, the band below); OrbitDomainError outside the table."""
+        if not self.bands[0].base < altitude <= self.top:
             raise OrbitDomainError(f"altitude {altitude / 1e3:g} km is outside the table, "
-                                   f"[{self.bands[0].base / 1e3:g}, {self.top / 1e3:g}) km")
-        return [b for b in self.bands if b.base <= altitude][-1]
+                                   f"({self.bands[0].base / 1e3:g}, {self.top / 1e3:g}] km")
+        return [b for b in self.bands if b.base < altitude][-1]
 
 
 #: (base altitude km, density kg/m3, scale height km) from 100 to 1000 km
@@ -343,7 +344,7 @@ class DragDecay(display.Displayed):
         if any(given) and not all(given):
             raise TypeError("give the band's density, scale_height and base_altitude together, or none of them")
         if all(given):
-            band = AtmosphereBand(float(inputs.positive(base_altitude, units.M, "base altitude")),
+            band = AtmosphereBand(float(inputs.non_negative(base_altitude, units.M, "base altitude")),
                                   float(inputs.positive(density, units.KG / units.M**3, "density")),
                                   float(inputs.positive(scale_height, units.M, "scale height H")))
         else:
@@ -351,12 +352,17 @@ class DragDecay(display.Displayed):
                 raise OrbitDomainError(f"the standard atmosphere is the Earth's; for {named.name} give density, "
                                        f"scale_height and base_altitude")
             band = STANDARD_ATMOSPHERE.band(h)
-        if h < band.base:
-            raise OrbitDomainError(f"altitude {h / 1e3:g} km is below the atmosphere band's base "
+        if not h > band.base:
+            raise OrbitDomainError(f"altitude {h / 1e3:g} km is not above the atmosphere band's base "
                                    f"({band.base / 1e3:g} km): the exponential law holds only above it")
         radius = named.radius
         decay = cls(named.gm, radius + h, b, radius + band.base, band.density, band.scale_height, named.name)
         drag._check_thin(decay.a0, band.scale_height)
+        if not decay.end_radius < decay.a0:
+            per_revolution = decay.decay_per_revolution.to_value(units.M)
+            raise OrbitDomainError(f"at {h / 1e3:g} km the orbit sinks {per_revolution / 1e3:.4g} km a revolution, "
+                                   f"more than the scale height H = {band.scale_height / 1e3:g} km: the closed form "
+                                   f"(a slowly shrinking circle) does not hold there")
         return decay
 
     def _model(self):

@@ -180,6 +180,35 @@ class Projectile(display.Displayed):
             vx, vy = core.linear_drag_velocity(v_x, v_y, self.g, self.parameter, time)
         return vx << units.M_PER_S, vy << units.M_PER_S
 
+    def _acceleration(self, v_x, v_y):
+        """(a_x, a_y) (m/s2) of the drag law at velocity (v_x, v_y): (0, -g); -b v added (linear); -(g / v_t**2)
+        |v| v added (quadratic, the drag that balances g at v_t)."""
+        if self.drag == "none":
+            zero = np.zeros(np.broadcast_shapes(np.shape(v_x), np.shape(self.g)))
+            return zero, zero - self.g
+        if self.drag == "linear":
+            return -self.parameter * v_x, -self.g - self.parameter * v_y
+        drag = self.g / self.parameter**2 * np.hypot(v_x, v_y)
+        return -drag * v_x, -self.g - drag * v_y
+
+    def acceleration_at(self, t: u.Quantity) -> tuple[u.Quantity, u.Quantity]:
+        """(a_x, a_y) (m/s2) at time t: (0, -g) without drag, (-b v_x, -g - b v_y) with linear drag; quadratic drag
+        has no closed-form v(t) (see launch_acceleration and landing_acceleration)."""
+        v_x, v_y = (q.to_value(units.M_PER_S) for q in self.velocity_at(t))
+        a_x, a_y = self._acceleration(v_x, v_y)
+        return a_x << ACCELERATION, a_y << ACCELERATION
+
+    @cached_property
+    def launch_acceleration(self) -> u.Quantity:
+        """|a| (m/s2) at launch, under any drag law: g without drag."""
+        return np.hypot(*self._acceleration(*self._components)) << ACCELERATION
+
+    @cached_property
+    def landing_acceleration(self) -> u.Quantity:
+        """|a| (m/s2) at landing, under any drag law, from the landing speed and angle."""
+        speed, angle = self.landing_speed.to_value(units.M_PER_S), self.landing_angle.to_value(units.RAD)
+        return np.hypot(*self._acceleration(speed * np.cos(angle), speed * np.sin(angle))) << ACCELERATION
+
     def _times(self, t):
         if self.drag == "quadratic":
             raise OrbitDomainError("quadratic drag has no closed-form x(t): use path() for the trajectory")
@@ -203,12 +232,13 @@ class Projectile(display.Displayed):
 
     def __repr__(self) -> str:
         """E.g. "Projectile(v = 20 m / s, angle = 45 deg, h = 0 m, no drag, range = 40.78876 m)"."""
-        drag = {"none": "no drag", "linear": "linear drag b = " + display.values_text(self.parameter, 6) + " 1 / s",
-                "quadratic": "quadratic drag v_t = " + display.summary(self.terminal_speed, unit=units.M_PER_S)}
+        drag = {"none": lambda: "no drag",
+                "linear": lambda: "linear drag b = " + display.values_text(self.parameter, 6) + " 1 / s",
+                "quadratic": lambda: "quadratic drag v_t = " + display.summary(self.terminal_speed, unit=units.M_PER_S)}
         return display.one_line("Projectile", "v = " + display.summary(self.speed << units.M_PER_S,
                                                                           unit=units.M_PER_S),
                                 "angle = " + display.summary(self.angle << units.RAD),
-                                "h = " + display.summary(self.height << units.M, unit=u.m), drag[self.drag],
+                                "h = " + display.summary(self.height << units.M, unit=u.m), drag[self.drag](),
                                 "range = " + display.summary(self.range, unit=u.m))
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
@@ -217,7 +247,7 @@ class Projectile(display.Displayed):
 
 
 PROJECTILE_NAMES = ["time_of_flight", "range", "apex_time", "apex_height", "apex_distance", "landing_speed",
-                    "landing_angle", "terminal_speed"]
+                    "landing_angle", "terminal_speed", "launch_acceleration", "landing_acceleration"]
 
 
 @dataclass(frozen=True, eq=False, repr=False)

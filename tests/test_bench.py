@@ -281,6 +281,7 @@ def test_all_runs_every_benchmark_and_serialises():
         "kepler": {"n_easy": 200, "n_hard": 200, "n_hyp": 200, "n_ref": 5, "repeats": 1},
         "propagate": {"n": 300, "n_ref": 3, "repeats": 1},
         "lambert": {"n": 300, "n_ref": 3, "repeats": 1},
+        "periodic": {"members": 3, "repeats": 1, "numpy": False},
         "ephemeris": {"n": 300, "repeats": 1},
         "api": {"sizes": (1,), "repeats": 1},
         "cli": {"runs": 1, "commands": [(["--help"], 0.2)]},

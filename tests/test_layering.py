@@ -4,7 +4,7 @@ probe wraps to record importer -> imported), never by reading source text.
 
 Layers, bottom up; a module may import its own layer and the layers below it:
     0 core         orbits.core.*: float64 NumPy; numpy, the standard library and (in the _fast kernels) numba
-    1 base         units, constants, inputs (the input rules), nbody, io, tables, display, system
+    1 base         units, constants, catalogue_orbits, inputs (the input rules), nbody, io, tables, display, system
     2 domain       orbit, kepler, binary, flyby, escape, lagrange, rings, cosmology, scene, predict, and the
                    pictures orbits.plot.* (one module per subject over the shared orbits.plot.frame)
     3 validation   orbits.validate.*
@@ -21,8 +21,8 @@ import textwrap
 
 import pytest
 
-BASE = {"orbits.units", "orbits.constants", "orbits.inputs", "orbits.nbody", "orbits.io", "orbits.tables",
-        "orbits.display", "orbits.system"}
+BASE = {"orbits.units", "orbits.constants", "orbits.catalogue_orbits", "orbits.inputs", "orbits.nbody", "orbits.io",
+        "orbits.tables", "orbits.display", "orbits.system"}
 FACADE = "orbits"
 HEAVY = ("astropy", "rebound", "heyoka", "numba", "matplotlib", "dask", "distributed", "mpmath", "scipy")
 
@@ -80,7 +80,7 @@ CORE_MODULES = [
     "anomalies", "binary", "checks", "elements", "errors", "escape", "flyby", "friedmann", "kepler", "lagrange",
     "propagate", "quadrature", "rings", "series", "sphere", "twobody", "_dd", "_roots", "frames", "rocket",
     "manoeuvres", "assist", "collisions", "rotation", "projectile", "oscillations",
-    "lambert", "transition",
+    "lambert", "transition", "cr3bp", "dop853", "libration", "shooting", "continuation", "families",
 ]
 
 
@@ -156,6 +156,7 @@ runs = [
     ["binary", "--m1", "Earth", "--m2", "Moon", "--a", "384399 km", "--plot", os.path.join(out, "b.png")],
     ["flyby", "--primary", "Earth", "--v-inf", "1 km/s", "--b", "10000 km", "--plot", os.path.join(out, "f.png")],
     ["lagrange", "Earth", "Moon"],
+    ["periodic", "Earth", "Moon", "--family", "halo", "--point", "L2", "--az", "5000 km"],
     ["ring", "3", "--m", "1 kg", "--r", "1 m"],
     ["escape", "cosmic"],
     ["where", "Mars", "--epoch", "2026-11-25", "--plot", os.path.join(out, "w.png")],
@@ -173,6 +174,9 @@ runs = [
     ["collide", "--m1", "2 kg", "--v1", "3 m/s", "--m2", "1 kg", "--v2", "0 m/s", "--plot", os.path.join(out, "k.png")],
     ["projectile", "--speed", "20 m/s", "--angle", "45", "--drag", "quadratic", "--terminal-speed", "30 m/s"],
     ["pendulum", "--length", "1 m", "--amplitude", "170 deg", "--plot", os.path.join(out, "p.png")],
+    ["perturb", "rates", "--altitude", "400 km", "--inc", "51.64", "--revolutions", "1", "--plot",
+     os.path.join(out, "j2.png")],
+    ["perturb", "decay", "--altitude", "280 km", "--ballistic", "0.022 m2/kg", "--plot", os.path.join(out, "d.png")],
 ]
 for args in runs:
     result = CliRunner().invoke(app, args)

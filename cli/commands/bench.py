@@ -87,6 +87,22 @@ def stm(
     _emit(rows_to_json(rows), format_stm(rows), fmt, output)
 
 
+def periodic(
+    members: Annotated[int, typer.Option(help="members of the family (2 to 1000)", min=2, max=1000)] = 100,
+    repeats: RepeatsOption = 3,
+    numpy: Annotated[bool, typer.Option("--numpy/--no-numpy", help="also time the NumPy integrator (the family "
+                                        "takes about a minute with it)")] = True,
+    output: OutputOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """Periodic orbits: one corrected halo orbit and a family to the 9:2 NRHO, timed, integrations counted."""
+    from orbits.tools.bench.periodic import bench_periodic, format_periodic
+    from orbits.tools.bench.table import rows_to_json
+
+    rows = bench_periodic(members=members, repeats=repeats, numpy=numpy)
+    _emit(rows_to_json(rows), format_periodic(rows), fmt, output)
+
+
 def api(
     sizes: Annotated[str, typer.Option(help="comma-separated batch sizes (1 = scalars)")] = "1,100000,1000000",
     repeats: RepeatsOption = 5,
@@ -193,6 +209,7 @@ def all_(
             "propagate": {"n": 100_000, "n_ref": 50},
             "stm": {"n": 10_000, "n_ref": 5},
             "lambert": {"n": 100_000, "n_ref": 50},
+            "periodic": {"members": 10, "numpy": False},
             "ephemeris": {"n": 10_000},
             "api": {"sizes": (1, 100_000)},
             "cli": {"runs": 3},

@@ -32,6 +32,12 @@ SkyOption = Annotated[str | None, typer.Option(
     ".png, .svg or .pdf file; the elements are read in the sky frame (x north, y east, z away from us)")]
 RvOption = Annotated[str | None, typer.Option(
     "--rv", callback=_writable("--plot"), help="draw both stars' radial-velocity curves to this .png, .svg or .pdf")]
+#: what the output says when --inc is not given
+UNKNOWN_INCLINATION = ("inclination not given: the radial-velocity semi-amplitudes K1, K2 and the mass function "
+                       "need sin i and are left out; give --inc (90: edge-on)")
+
+#: the quantities of `orbits binary` that need the inclination to the sky
+NEEDS_INCLINATION = ("rv_semi_amplitude1", "rv_semi_amplitude2", "mass_function", "relative_inclination")
 
 
 def command(
@@ -59,9 +65,9 @@ def command(
     sky: SkyOption = None,
     rv: RvOption = None,
 ) -> None:
-    """Masses, relative orbit, each star's orbit about the centre of mass, energy and angular momentum (XXII), and
-    the radial-velocity semi-amplitudes and mass function. With --K: from a measured radial-velocity curve to the
-    mass function and the companion's (minimum) mass."""
+    """Masses, relative orbit, each star's orbit about the centre of mass, energy and angular momentum (XXII), and,
+    given --inc (the tilt to the sky), the radial-velocity semi-amplitudes and mass function. With --K: from a
+    measured radial-velocity curve to the mass function and the companion's (minimum) mass."""
     from orbits import inputs
     from orbits_cli import render
 
@@ -79,10 +85,21 @@ def command(
         raise typer.BadParameter("--gamma, the systemic velocity, shows only in the radial-velocity curves: give "
                                  "--rv FILE too (the table's quantities do not depend on it)")
     result = build(m1, m2, a, p, q, period, e, inc, raan, argp, nu, gamma)
+    if inc is None and (sky or rv):
+        raise typer.BadParameter(f"{'--sky' if sky else '--rv'} needs the inclination to the sky: give --inc "
+                                 f"(90: edge-on, 0: face-on)")
     draw(result, plot, sky, rv, distance)
     groups = [("relative_", "relative orbit (star 2 about star 1)"), ("star1_", "star 1 about the centre of mass"),
               ("star2_", "star 2 about the centre of mass")]
-    render.emit(f"Binary of {m1} and {m2}", result.quantities(inputs.names(only)), fmt.value, groups=groups)
+    title, about = f"Binary of {m1} and {m2}", None
+    asked = inputs.names(only) or []
+    if inc is None and set(asked) & set(NEEDS_INCLINATION):
+        raise typer.BadParameter(f"{', '.join(n for n in asked if n in NEEDS_INCLINATION)}: needs the inclination "
+                                 f"to the sky (sin i): give --inc (90: edge-on, 0: face-on)")
+    if inc is None and only is None:
+        about = {"inclination": UNKNOWN_INCLINATION}
+        title += f"; {UNKNOWN_INCLINATION}"
+    render.emit(title, result.quantities(inputs.names(only)), fmt.value, groups=groups, about=about)
 
 
 def draw(result: "Binary", plot: str | None, sky: str | None, rv: str | None, distance: str | None) -> None:
@@ -160,14 +177,11 @@ def build(
     if gamma is not None:
         along_sight = inputs.parse_quantity(gamma, "speed", "--gamma").to_value(u.m / u.s)
         com_v = np.array([0.0, 0.0, along_sight]) << u.m / u.s  # z: the line of sight, away from us
-    return Binary.from_elements(
-        mass_or_body(m1, "--m1"),
-        mass_or_body(m2, "--m2"),
-        e=e,
-        **params.orientation(*(x or "0" for x in (inc, raan, argp, nu))),
-        com_v=com_v,
-        **size,
-    )
+    angles = params.orientation(*(x or "0" for x in (inc, raan, argp, nu)))
+    if inc is None:
+        angles.pop("inc")  # not given: the tilt to the sky is unknown, and what needs sin i is left out
+    return Binary.from_elements(mass_or_body(m1, "--m1"), mass_or_body(m2, "--m2"), e=e, com_v=com_v, **angles,
+                                **size)
 
 
 def mass_or_body(text: str, option: str) -> "Body | Quantity":

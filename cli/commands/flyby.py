@@ -32,8 +32,7 @@ def command(
     from orbits import inputs
     from orbits_cli import render
 
-    result, title = build(primary, v_inf, b, periapsis, mass, secondary)
-    warn_of_collision(result)
+    result, title = build(primary, v_inf, b, periapsis, mass, secondary)  # a collision is said, once, by Flyby
     if plot:
         import warnings
 
@@ -44,16 +43,6 @@ def command(
             save_plot(lambda: flyby_plane(result), plot)
     groups = [("star1_", "the primary, in the centre-of-mass frame"), ("star2_", "the moving body, in that frame")]
     render.emit(title, result.quantities(inputs.names(only)), fmt.value, groups=groups)
-
-
-def warn_of_collision(result: "Flyby") -> None:
-    """One line on stderr when the closest approach is inside the catalogue bodies: the flyby is a collision."""
-    if result.shape == ():
-        from orbits.plot import collision_note
-
-        note = collision_note(result)
-        if note:
-            typer.echo(f"orbits: warning: {note}", err=True)
 
 
 def build(

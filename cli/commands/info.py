@@ -1,7 +1,6 @@
 """`orbits info`: versions, caches, the ephemeris and the catalogue of bodies; --sources adds where each
 constant comes from."""
 
-import textwrap
 from typing import Annotated
 
 import typer
@@ -40,11 +39,14 @@ def show(fmt: str, sources: bool = False) -> None:
 
 def _wrapped(label: str, text: str) -> list[str]:
     """`label: text` wrapped between words, continuation lines indented."""
-    return textwrap.wrap(f"{label}: {text}", WIDTH, subsequent_indent="    ", break_long_words=False,
-                         break_on_hyphens=False)
+    from orbits.display import wrapped
+
+    return wrapped(f"{label}: {text}", WIDTH, subsequent_indent="    ")
 
 
 def _summary(facts: dict) -> list[str]:
+    from orbits.display import wrapped
+
     versions = facts["versions"]
     others = ", ".join(f"{name} {version}" for name, version in versions.items() if name != "orbits")
     lines = [f"orbits {versions['orbits']} on Python {facts['python']} ({facts['platform']})", ""]
@@ -54,15 +56,16 @@ def _summary(facts: dict) -> list[str]:
     lines += _wrapped("compiled kernels in use", caches.pop("compiled kernels in use (ORBITS_JIT)"))
     lines.append("caches:")
     for label, path in caches.items():
-        lines += textwrap.wrap(label, WIDTH, initial_indent="  ", subsequent_indent="  ") + [f"    {path}"]
+        lines += wrapped(label, WIDTH, initial_indent="  ", subsequent_indent="  ") + [f"    {path}"]
     return lines + [""]
 
 
 def _sources(constants: dict) -> list[str]:
+    from orbits.display import wrapped
+
     lines = ["", "sources:"]
     for name, source in constants.items():
-        lines += textwrap.wrap(f"{name}: {source}", WIDTH, initial_indent="  ", subsequent_indent="      ",
-                               break_long_words=False, break_on_hyphens=False)
+        lines += wrapped(f"{name}: {source}", WIDTH, initial_indent="  ", subsequent_indent="      ")
     return lines
 
 

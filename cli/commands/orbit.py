@@ -16,6 +16,8 @@ from orbits_cli.options import (
 )
 
 if TYPE_CHECKING:
+    from astropy.units import Quantity
+
     from orbits.orbit import Orbit
 
 
@@ -42,11 +44,20 @@ def command(
     ] = None,
     v: Annotated[str | None, typer.Option("--v", help="velocity vector 'X,Y,Z UNIT'")] = None,
     mass: Annotated[str | None, typer.Option(help="orbiting body's mass, for U, K, E, L")] = None,
+    at_r: Annotated[str | None, typer.Option(
+        "--at-r", help="also the speed (and, given --mass, U and K) at this distance from the centre, e.g. '8000 km'")
+    ] = None,
+    area_between: Annotated[str | None, typer.Option(
+        "--area-between", help="also the area the radius vector sweeps between two times after now, 'T1,T2', e.g. "
+        "'0 h,2 h'")] = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
 ) -> None:
-    """Every section XXI quantity of an orbit, from elements, a state vector, or a named body."""
+    """Every section XXI quantity of an orbit, from elements, a state vector, or a named body; with --at-r the speed,
+    U and K at a distance, with --area-between the area swept between two times. A body without an ephemeris
+    (Ceres, Vesta) is carried to --epoch from its published orbit by two-body propagation, and the title says how
+    well."""
     from orbits import inputs
     from orbits_cli import render
 
@@ -58,12 +69,57 @@ def command(
                                         [mass, primary, a, p, q, e, inc, raan, argp, nu, r])
     else:
         result, title = build(body_name, primary, a, p, q, e, inc, raan, argp, nu, r, v, mass)
-    quantities = result.quantities(inputs.names(only))
+        if body_name is not None:
+            title, about = published_orbit(body_name)
+    asked = inputs.names(only)
+    extra = course_quantities(result, at_r, area_between)
+    quantities = result.quantities(None if asked is None else [n for n in asked if n not in extra])
+    quantities.update({name: q for name, q in extra.items() if asked is None or name in asked})
     if plot:
         from orbits.plot import orbit_plane
 
-        save_plot(lambda: orbit_plane(result), plot)
+        when = None if about is None or "epoch_tdb" not in about else f"{about['epoch_tdb']} TDB"
+        save_plot(lambda: orbit_plane(result, epoch=when), plot)
     render.emit(title, quantities, fmt.value, about=about)
+
+
+def published_orbit(body_name: str) -> "tuple[str, dict[str, str]]":
+    """(title, JSON 'about') of a named body's published orbit: its source, epoch, frame and accuracy."""
+    from astropy.time import Time
+
+    from orbits import body
+    from orbits.catalogue_orbits import mean_elements
+
+    el = mean_elements(body_name)
+    when = Time(el.epoch, format="jd", scale="tdb").iso[:16]
+    frame = "ecliptic J2000"
+    title = f"{body(body_name).name}'s orbit at {when} TDB, {frame}; source: {el.source}"
+    about = {"body": body(body_name).name, "epoch_tdb": when, "source": el.source, "frame": frame}
+    if el.accuracy:
+        title += f"; {el.accuracy}"
+        about["accuracy"] = el.accuracy
+    return title, about
+
+
+def course_quantities(orbit: "Orbit", at_r: str | None, area_between: str | None) -> "dict[str, Quantity]":
+    """{name: Quantity} of what --at-r and --area-between ask: speed_at_r, potential_energy_at_r and
+    kinetic_energy_at_r (with the orbit's mass), area_swept."""
+    from orbits.inputs import parse_quantity
+
+    extra = {}
+    if at_r is not None:
+        r = parse_quantity(at_r, "length", "--at-r")
+        extra["speed_at_r"] = orbit.speed_at(r)
+        if orbit.mass is not None:
+            extra["potential_energy_at_r"] = orbit.potential_energy_at(r)
+            extra["kinetic_energy_at_r"] = orbit.kinetic_energy_at(r)
+    if area_between is not None:
+        times = area_between.split(",")
+        if len(times) != 2:
+            raise typer.BadParameter(f"--area-between {area_between!r}: write T1,T2, e.g. '0 h,2 h'")
+        t1, t2 = (parse_quantity(t.strip(), "time", "--area-between") for t in times)
+        extra["area_swept"] = orbit.area_swept(t1, t2)
+    return extra
 
 
 def at_epoch(body_name: str, epoch: str, source: str, others: list) -> "tuple[Orbit, str, dict[str, str]]":
@@ -80,7 +136,7 @@ def at_epoch(body_name: str, epoch: str, source: str, others: list) -> "tuple[Or
     seen = ephemeris.state(named.name, when, named.parent, source=source)
     orbit = Orbit.from_state(seen)
     title = (f"Osculating orbit of {seen.point} about the {seen.center_point}, {ephemeris.tdb_iso(when)} TDB, "
-             f"ecliptic J2000; source: {seen.source}; {seen.accuracy}")
+             f"ecliptic J2000; {seen.provenance}")
     about = {"body": seen.point, "center": seen.center_point, "epoch_tdb": ephemeris.tdb_iso(when),
              "source": seen.source, "accuracy": seen.accuracy, "frame": "ecliptic J2000"}
     return orbit, title, about

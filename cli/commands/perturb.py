@@ -2,15 +2,14 @@
 track), drag decay, the Kozai-Lidov oscillation and general relativity's periapsis advance.
 
 A sub-application with one command per question; main.py mounts it with app.add_typer(perturb.app). Tables show
-rates in deg/day, lengths in km, times in days or years (any --unit NAME=UNIT still wins); JSON is exact SI.
-"""
+rates in deg/day, lengths in km, times in days or years (any --unit NAME=UNIT still wins); JSON is exact SI."""
 
 from typing import Annotated
 
 import typer
 
 from orbits_cli.commands.binary import MASS_HELP, mass_or_body
-from orbits_cli.options import Format, FormatOption, OnlyOption, displays, reports_errors
+from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, displays, reports_errors, save_plot
 
 app = typer.Typer(
     help="Perturbed orbits: J2 secular rates and designs, drag decay, Kozai-Lidov, the relativistic advance.",
@@ -22,6 +21,8 @@ SizeOption = Annotated[str | None, typer.Option("--a", help="semi-major axis, e.
 AltitudeOption = Annotated[str | None, typer.Option("--altitude", help="a - R_eq, e.g. '700 km'")]
 InclinationOption = Annotated[str | None, typer.Option("--inc", help="inclination ('98 deg'; bare numbers are "
                                                                      "degrees)")]
+RevolutionsOption = Annotated[int, typer.Option("--revolutions", min=1, max=2000,
+                                                help="revolutions the --plot integrates")]
 
 #: the units tables use for these quantities unless --units si or --unit NAME=UNIT says otherwise
 NATURAL = {
@@ -65,22 +66,37 @@ def rates(
     altitude: AltitudeOption = None,
     e: Annotated[float, typer.Option("--e", help="eccentricity")] = 0.0,
     inc: InclinationOption = "0",
+    argp: Annotated[str, typer.Option("--argp", help="argument of periapsis")] = "0",
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
+    plot: PlotOption = None,
+    revolutions: RevolutionsOption = 30,
 ) -> None:
     """J2's secular rates of the node, periapsis and mean anomaly (first order: good to J2 (R/p)**2 relative).
 
-    Example: orbits perturb rates Earth --altitude "400 km" --inc 51.64
+    --plot integrates the orbit under the body's J2 and J4 with rebound and heyoka for --revolutions and draws its
+    node (and, for an eccentric orbit, its argument of periapsis) over the secular lines of these rates.
     """
     from orbits import Orbit, inputs
     from orbits.perturbations import SecularOrbit, oblate_body
 
     named = oblate_body(primary)
     size = _size(named, a, altitude)
-    orbit = Orbit.from_elements(named, a=size, e=e, inc=_angle(inc, "--inc"))
+    orbit = Orbit.from_elements(named, a=size, e=e, inc=_angle(inc, "--inc"), argp=_angle(argp, "--argp"))
     secular = SecularOrbit.of(orbit, named)
     emit(f"J2 secular rates about {named.name} (first order; accuracy J2 (R/p)^2)",
          secular.quantities(inputs.names(only)), fmt)
+    if plot:
+        _plot_secular(orbit, revolutions, plot)
+
+
+def _plot_secular(orbit, revolutions, path):
+    """The orbit integrated under J2 and J4 (orbits.validate.perturbed.secular_history), drawn to `path`."""
+    from orbits.plot import secular_elements
+    from orbits.validate.perturbed import secular_history
+
+    history = secular_history(orbit, revolutions)
+    save_plot(lambda: secular_elements(history), path)
 
 
 def _size(named, a, altitude):
@@ -99,10 +115,13 @@ def sun_synchronous(
     inc: Annotated[str | None, typer.Option("--inc", help="solve for the size at this inclination instead")] = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
+    plot: PlotOption = None,
+    revolutions: RevolutionsOption = 30,
 ) -> None:
     """The sun-synchronous orbit: its inclination for a size (or its size for an inclination).
 
-    Example: orbits perturb sun-synchronous --altitude "700 km"      (98.19 deg)
+    --plot integrates the orbit under the body's J2 and J4 with rebound and heyoka for --revolutions and draws its
+    node turning with the mean Sun over the secular line.
     """
     from orbits import inputs
     from orbits.perturbations import sun_synchronous as design
@@ -111,6 +130,8 @@ def sun_synchronous(
                     inc=_angle(inc, "--inc"))
     emit(f"Sun-synchronous orbit about {result.primary.name} (node follows the mean Sun)",
          result.quantities(inputs.names(only)), fmt)
+    if plot:
+        _plot_secular(result.secular.orbit, revolutions, plot)
 
 
 def frozen(
@@ -122,10 +143,7 @@ def frozen(
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
 ) -> None:
-    """The frozen orbit (J2 with J3): the eccentricity that keeps e and omega fixed.
-
-    Example: orbits perturb frozen --altitude "700 km" --inc 98.19
-    """
+    """The frozen orbit (J2 with J3): the eccentricity that keeps e and omega fixed."""
     from orbits import inputs
     from orbits.perturbations import frozen as design
 
@@ -144,10 +162,7 @@ def repeat(
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
 ) -> None:
-    """The repeat-ground-track orbit: k revolutions in d days, J2 included.
-
-    Example: orbits perturb repeat --revolutions 127 --days 10 --inc 66.04      (TOPEX/Jason: 7714.4 km)
-    """
+    """The repeat-ground-track orbit: k revolutions in d days, J2 included."""
     from orbits import inputs
     from orbits.perturbations import repeat_ground_track
 
@@ -165,10 +180,11 @@ def decay(
     base: Annotated[str | None, typer.Option("--base-altitude", help="the band's base altitude")] = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
+    plot: PlotOption = None,
 ) -> None:
     """Drag decay of a circular orbit in an exponential atmosphere band (the Earth's standard table by default).
 
-    Example: orbits perturb decay --altitude "280 km" --ballistic "0.022 m2/kg"
+    --plot draws the closed form's altitude against time to the end of the lifetime, where it stops holding.
     """
     from orbits import inputs
     from orbits.perturbations import DragDecay
@@ -180,6 +196,10 @@ def decay(
                           base_altitude=_length(base, "--base-altitude"))
     emit(f"Drag decay about {primary} (circular orbit, exponential band; accuracy (da_rev / H)^2)",
          result.quantities(inputs.names(only)), fmt)
+    if plot:
+        from orbits.plot import drag_decay
+
+        save_plot(lambda: drag_decay(result), plot)
 
 
 def kozai(
@@ -194,10 +214,7 @@ def kozai(
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
 ) -> None:
-    """The quadrupole Kozai-Lidov oscillation of a test particle (e and i range, period, validity).
-
-    Example: orbits perturb kozai --m0 Sun --m3 Jupiter --a "1 AU" --a-out "5.2 AU" --inc 65
-    """
+    """The quadrupole Kozai-Lidov oscillation of a test particle (e and i range, period, validity)."""
     from orbits import inputs
     from orbits.perturbations import KozaiLidov
 
@@ -213,10 +230,7 @@ def relativity(
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
 ) -> None:
-    """General relativity's periapsis advance 6 pi G M / (c^2 a (1 - e^2)) of a body's mean orbit.
-
-    Example: orbits perturb relativity Mercury      (42.98 arcsec per century)
-    """
+    """General relativity's periapsis advance 6 pi G M / (c^2 a (1 - e^2)) of a body's mean orbit."""
     import astropy.units as u
 
     from orbits import Orbit, inputs

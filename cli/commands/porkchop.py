@@ -32,7 +32,9 @@ def command(
 ) -> None:
     """The transfers of least departure C3, least arrival v_inf and least total v_inf among the zero-revolution
     prograde Lambert transfers about the Sun on a grid of launch and arrival dates (patched conics, DE421 states).
-    JSON adds each minimum's dates as TDB Julian dates (*_jd_tdb); --plot draws the porkchop."""
+    JSON adds each minimum's dates as TDB Julian dates (*_jd_tdb); --plot draws the porkchop. A least value on
+    the grid's edge is flagged (in JSON under "about", e.g. min_c3_edge): the true minimum may lie outside the
+    windows."""
     from orbits import Porkchop, inputs
     from orbits_cli import render
 
@@ -41,12 +43,15 @@ def command(
     quantities = chart.quantities(inputs.names(only))
     if fmt.value != "json":
         quantities = {k: v for k, v in quantities.items() if not k.endswith("_jd_tdb")}
-    groups = [(prefix, f"least {best.kind}: {best.launch.tdb.iso[:10]} -> {best.arrival.tdb.iso[:10]}")
+    groups = [(prefix, f"least {best.kind}: {best.launch.tdb.iso[:10]} -> {best.arrival.tdb.iso[:10]}"
+                       + (" (edge)" if best.edges else ""))
               for prefix, best in chart.minima().items()]
+    about = {f"{prefix}edge": best.edge_note for prefix, best in chart.minima().items() if best.edges}
     if plot:
         from orbits.plot import porkchop
 
         save_plot(lambda: porkchop(chart), plot)
     title = (f"{chart.departure} to {chart.target}, launch -> arrival dates (TDB) on a grid of "
              f"{chart.launch_dates.size} x {chart.arrival_dates.size}; positions: {chart.source}")
-    render.emit(title, quantities, fmt.value, groups=groups)
+    title += "".join(f"; {note}" for note in about.values())
+    render.emit(title, quantities, fmt.value, groups=groups, about=about or None)

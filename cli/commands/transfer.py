@@ -17,6 +17,9 @@ app = typer.Typer(
 PrimaryOption = Annotated[str, typer.Option("--primary", help=f"the central body: {MASS_HELP}")]
 R1Option = Annotated[str, typer.Option("--r1", help="initial circular orbit radius from the centre, e.g. '6678 km'")]
 R2Option = Annotated[str, typer.Option("--r2", help="final circular orbit radius, e.g. '42164 km'")]
+OptionalR1 = Annotated[str | None, typer.Option(
+    "--r1", help="initial circular orbit radius from the centre, e.g. '6678 km'")]
+OptionalR2 = Annotated[str | None, typer.Option("--r2", help="final circular orbit radius, e.g. '42164 km'")]
 ROption = Annotated[str, typer.Option("--r", help="circular orbit radius from the centre, e.g. '7000 km'")]
 
 
@@ -34,21 +37,50 @@ def _emit(title, manoeuvre, only, fmt):
 
 
 def hohmann(
-    r1: R1Option,
-    r2: R2Option,
-    primary: PrimaryOption = "Earth",
+    r1: OptionalR1 = None,
+    r2: OptionalR2 = None,
+    departure: Annotated[str | None, typer.Option(
+        "--from", help="instead of --r1: a body whose mean orbit (about the same primary as --to's) is the start")
+    ] = None,
+    target: Annotated[str | None, typer.Option("--to", help="instead of --r2: the body whose orbit is the goal")
+                      ] = None,
+    primary: Annotated[str | None, typer.Option(
+        "--primary", help=f"the central body: {MASS_HELP} [default: Earth; with --from/--to their common primary]")
+    ] = None,
     inc: Annotated[str, typer.Option(
         "--inc", help="plane change combined with the burn at the larger radius ('28.5 deg'; bare numbers are degrees)")
     ] = "0",
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
 ) -> None:
-    """Hohmann transfer: two tangential burns and half an ellipse, optionally turning the plane."""
-    from orbits import Hohmann, inputs
+    """Hohmann transfer: two tangential burns and half an ellipse, optionally turning the plane; the synodic period
+    and the phase angle the target must lead by at departure. With --from and --to: between two bodies' mean
+    orbits about their common primary, each taken as the circle of radius its semi-major axis."""
+    from orbits import Hohmann, body, inputs
 
-    result = Hohmann.between(mass_or_body(primary, "--primary"), _length(r1, "--r1"), _length(r2, "--r2"),
-                             inclination_change=inputs.parse_angle(inc, "--inc"))
-    _emit(f"Hohmann transfer about {primary}", result, only, fmt)
+    turn = inputs.parse_angle(inc, "--inc")
+    if departure is not None or target is not None:
+        given = [name for name, value in (("--r1", r1), ("--r2", r2), ("--primary", primary)) if value is not None]
+        if given or departure is None or target is None:
+            raise typer.BadParameter("give both --from and --to (bodies), without --r1, --r2 or --primary: the "
+                                     "radii and the primary come from the bodies' mean orbits")
+        result = Hohmann.between_bodies(departure, target, inclination_change=turn)
+        from orbits.catalogue_orbits import mean_elements
+
+        about = mean_elements(departure).primary
+        _emit(f"Hohmann transfer from {body(departure).name}'s to {body(target).name}'s mean orbit about "
+              f"{'the Sun' if about == 'Sun' else about}, each taken as the circle of radius its semi-major axis",
+              result, only, fmt)
+        return
+    for option, text in (("--r1", r1), ("--r2", r2)):
+        if text is not None and inputs.find_body(text) is not None:
+            raise typer.BadParameter(f"{option} {text!r} is a body, not a radius: for the transfer between the orbits "
+                                     f"of two bodies give --from and --to, e.g. --from Earth --to Mars")
+    if r1 is None or r2 is None:
+        raise typer.BadParameter("give --r1 and --r2 (radii, e.g. '6678 km'), or --from and --to (bodies)")
+    result = Hohmann.between(mass_or_body(primary or "Earth", "--primary"), _length(r1, "--r1"), _length(r2, "--r2"),
+                             inclination_change=turn)
+    _emit(f"Hohmann transfer about {primary or 'Earth'}", result, only, fmt)
 
 
 def bi_elliptic(

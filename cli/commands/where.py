@@ -49,8 +49,7 @@ def command(
     heliocentric = eph.states([body_name, observer, *points], when, "Sun", source=ephemeris.value)  # read once
     sighting = eph.sighting(heliocentric, body_name, observer)
     seen = sighting.from_observer
-    title = (f"{seen.point} seen from {seen.center_point}, {eph.tdb_iso(when)} TDB (geometric, no light-time "
-             f"correction); source: {seen.source}; {seen.accuracy}")
+    title = f"{seen.point} seen from {seen.center_point}, {eph.tdb_iso(when)} TDB (geometric); {seen.provenance}"
     about = {"body": seen.point, "observer": seen.center_point, "epoch_tdb": eph.tdb_iso(when), "source": seen.source,
              "accuracy": seen.accuracy}
     quantities = sighting.quantities(inputs.names(only))

@@ -40,7 +40,8 @@ import numpy as np
 PARALLEL_MIN = 1 << 15
 
 #: Modules of orbits/core whose constants the kernels (orbits/core/_fast*.py) compile in.
-_KERNEL_DEPENDENCIES = ("_kepler_shared.py", "_propagate_shared.py", "_lambert_shared.py", "_roots.py", "series.py")
+_KERNEL_DEPENDENCIES = ("_kepler_shared.py", "_propagate_shared.py", "_lambert_shared.py", "_dop853_shared.py",
+                        "_roots.py", "series.py")
 
 #: Kepler and propagation batches from this size on start the compiled kernels by themselves ("auto" mode); smaller
 #: ones, such as a calculator query, take the NumPy implementation (the same algorithm and accuracy:

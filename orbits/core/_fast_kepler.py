@@ -21,7 +21,7 @@ Measured along the way: without numba-level inlining of the helpers LLVM does no
 for the quadrant of sin and cos stops the vectoriser too (hence the arithmetic selections); moving the starter
 into the second stage cost a quarter of the speed.
 
-The hyperbolic solver has two passes too (the first: four safeguarded Halley steps on the series form, with
+The hyperbolic solver has two passes too (the first: two bracketed sixth-order steps on the series form, with
 its own exp, vectorised; a port with libm calls ran five times slower). Barker's equation is a branch-free closed
 form.
 """
@@ -53,7 +53,7 @@ from orbits.core._kepler_shared import (
 )
 from orbits.core._roots import MAX_ITERATIONS
 
-assert HYPERBOLIC_FIXED_STEPS == 4, "_hyperbolic_fixed writes its four steps out"
+assert HYPERBOLIC_FIXED_STEPS == 2, "_hyperbolic_fixed writes its two steps out"
 _INVALID = 1 << 32
 
 
@@ -144,9 +144,11 @@ def _residual(kind, x, a, b, c, d):
     if kind == _HYPERBOLIC_SERIES:  # a = M, c = e, d = e - 1
         sinh, sinh_minus_x, cosh_minus_one = _hyperbolic_trig(x)
         return (d * x - a) + c * sinh_minus_x, d + c * cosh_minus_one, c * sinh
-    q = math.exp(-2.0 * x)  # log form: a = M, b = log(e / 2)
+    q = math.exp(-2.0 * x)  # log form: a = M, b = e / 2
     mh = a + x
-    f = (x + b + math.log1p(-q)) - math.log(mh)
+    ratio = mh / b
+    log_ratio = math.log(ratio) if ratio < np.inf else math.log(mh) - math.log(b)
+    f = (x + math.log1p(-q)) - log_ratio
     return f, 1.0 + 2.0 * q / (1.0 - q) - 1.0 / mh, -4.0 * q / (1.0 - q) ** 2 + (1.0 / mh) ** 2
 
 
@@ -281,7 +283,7 @@ def _hyperbolic_one(M, e):
     lower = math.asinh(M / e)
     upper_log = lower + math.log(e) - math.log(em1)
     if lower > LOG_FORM_LIMIT:
-        return _halley(_HYPERBOLIC_LOG, lower, lower, upper_log, M, math.log(0.5 * e), e, em1)
+        return _halley(_HYPERBOLIC_LOG, lower, lower, upper_log, M, 0.5 * e, e, em1)
     hi = max(min(min(_cubic_root(em1, e / 6.0, M), M / em1), upper_log), lower)
     start = lower if lower > 3.0 else hi
     return _halley(_HYPERBOLIC_SERIES, start, lower, hi, M, 0.0, e, em1)
@@ -299,37 +301,34 @@ def _hyperbolic_bounds(M, e):
 
 @jit(inline=True)
 def _hyperbolic_step(x, lo, hi, M, e, em1):
-    """One safeguarded Halley step on the series form: (x, lo, hi, converged)."""
+    """One bracketed sixth-order step on the series form (kepler._hyperbolic_fixed_pass): (x, lo, hi)."""
     f, df, d2f = _residual(_HYPERBOLIC_SERIES, x, M, 0.0, e, em1)
     lo = x if f < 0 else lo
     hi = x if f > 0 else hi
-    x, done = _halley_step(x, f, df, d2f, lo, hi)
-    return x, lo, hi, done
+    new = x + _sixth_order_step(f, df, d2f, df + 1.0, 1.0)[0]
+    return (new if (np.isfinite(new) and lo <= new <= hi) else 0.5 * (lo + hi)), lo, hi
 
 
 @jit(inline=True)
 def _hyperbolic_fixed(M, e):
     """H >= 0 for M >= 0, or NaN if not certified: pass 1, branch free so that its loop vectorises.
 
-    Four safeguarded Halley steps (the _halley_step of pass 2) from the starter of
-    kepler._solve_hyperbolic_series_form, with the pure cubic bound cbrt(6 M / e) for the cubic model
-    root (measured on the benchmark's hyperbolic set: 1 to 4 steps, mean 2.1), then the Newton polish.
-    Certified when the fourth step reported convergence and the polishing step is below 2**-40
-    relative. The logarithmic form (asinh(M / e) > 20) is left to pass 2.
+    Two bracketed sixth-order steps from the starter of kepler._solve_hyperbolic_series_form, with the pure
+    cubic bound cbrt(6 M / e) for the cubic model root, then the Newton polish (kepler._hyperbolic_fixed_pass).
+    Certified when the polishing step is below 2**-40 relative. The logarithmic form (asinh(M / e) > 20) is
+    left to pass 2.
     """
     em1 = e - 1.0
     lower, upper = _hyperbolic_bounds(M, e)
     hi = max(min(min(_cbrt_normal(6.0 * M / e), M / em1), upper), lower)
     x, lo = (lower if lower > 3.0 else hi), lower
     # Written out: LLVM vectorises only innermost loops, and a loop over the steps would be one.
-    x, lo, hi, _ = _hyperbolic_step(x, lo, hi, M, e, em1)
-    x, lo, hi, _ = _hyperbolic_step(x, lo, hi, M, e, em1)
-    x, lo, hi, _ = _hyperbolic_step(x, lo, hi, M, e, em1)
-    x, lo, hi, done = _hyperbolic_step(x, lo, hi, M, e, em1)
+    x, lo, hi = _hyperbolic_step(x, lo, hi, M, e, em1)
+    x, lo, hi = _hyperbolic_step(x, lo, hi, M, e, em1)
     f, df, _ = _residual(_HYPERBOLIC_SERIES, x, M, 0.0, e, em1)
     step = f / df
     polished = x - step if (np.isfinite(x - step) and f != 0) else x
-    certified = done and abs(step) <= 2.0**-40 * x and lower <= LOG_FORM_LIMIT
+    certified = abs(step) <= 2.0**-40 * x and lower <= LOG_FORM_LIMIT
     H = polished if certified else np.nan
     H = M / em1 if M < TINY_MEAN_ANOMALY else H
     return 0.0 if M == 0.0 else H

@@ -144,6 +144,66 @@ def _fast_two_sum(a, b):
     return s, b - (s - a)
 
 
+# double-double arithmetic on scalars (orbits.core._dd, with FMA products)
+
+
+@jit(inline=True)
+def _dd_add(a_hi, a_lo, b_hi, b_lo):
+    s, e = _two_sum(a_hi, b_hi)
+    return _fast_two_sum(s, e + a_lo + b_lo)
+
+
+@jit(inline=True)
+def _dd_mul(a_hi, a_lo, b_hi, b_lo):
+    p, e = _two_product(a_hi, b_hi)
+    return _fast_two_sum(p, e + (a_hi * b_lo + a_lo * b_hi))
+
+
+@jit(inline=True)
+def _dd_div(a_hi, a_lo, b_hi, b_lo):
+    q1 = a_hi / b_hi
+    p_hi, p_lo = _dd_mul(b_hi, b_lo, -q1, 0.0)
+    r_hi, _ = _dd_add(a_hi, a_lo, p_hi, p_lo)
+    return _two_sum(q1, r_hi / b_hi)
+
+
+@jit(inline=True)
+def _dd_sqrt(a_hi, a_lo):
+    s = math.sqrt(a_hi)
+    p, e = _two_product(s, s)
+    return _two_sum(s, ((a_hi - p) - e + a_lo) / (2.0 * s))
+
+
+@jit(inline=True)
+def _dd_over(a_hi, a_lo, b_hi, b_lo, inverse):
+    """_dd_div with the reciprocal inverse = 1 / b_hi given: quotient a_hi * inverse, corrected once from the exact
+    remainder (the same double-double quotient; a division costs the vectorised loops as much as a dozen
+    multiplications, and one reciprocal serves two quotients)."""
+    q = a_hi * inverse
+    p, e = _two_product(q, b_hi)
+    return _fast_two_sum(q, (((a_hi - p) - e + a_lo) - q * b_lo) * inverse)
+
+
+@jit(inline=True)
+def _dd_root(a_hi, a_lo):
+    """(_dd_sqrt(a_hi, a_lo), 1 / its high part), the correction multiplied by the reciprocal."""
+    s = math.sqrt(a_hi)
+    inverse = 1.0 / s
+    p, e = _two_product(s, s)
+    hi, lo = _fast_two_sum(s, ((a_hi - p) - e + a_lo) * (0.5 * inverse))
+    return hi, lo, inverse
+
+
+@jit(inline=True)
+def _dd_dot(ax, ay, az, bx, by, bz):
+    hi, lo = _two_product(ax, bx)
+    p, e = _two_product(ay, by)
+    hi, lo = _dd_add(hi, lo, p, e)
+    p, e = _two_product(az, bz)
+    return _dd_add(hi, lo, p, e)
+
+
+
 #: atan(u) = u P(u**2) for |u| <= tan(pi / 8), Taylor to u**17 (error below 2e-8)
 _ATAN_POLY = tuple((-1.0) ** k / (2 * k + 1) for k in range(8, -1, -1))
 _TAN_PI_8 = 0.41421356237309503

@@ -1,391 +1,110 @@
 """Compiled two-body propagator (numba): a port of orbits.core.propagate's algorithm.
 
 Imported only through orbits.core.propagate, when orbits.core._fast.use lets a batch run compiled. Every step
-is the NumPy version's, function for function (same names). The elliptic pass: A, 1 / a, n and n dt in
-double-double arithmetic (_elliptic_setup), Markley's and the local starter (_elliptic_starters), the better by
-Newton step length, one Halley and one Newton step on F(x) = m (_elliptic_residual), the certificate, the
-Lagrange f and g in x. The universal passes on the states it leaves: period reduction of dt and alpha = 2 / r -
-v**2 / mu in double-double arithmetic, scaling to |r0| = 1 and mu = 1, time reversal for dt < 0, the starter
-(_vallado_guess, _barker_guess, _starter), pass 1 (FIXED_STEPS bracketed Halley steps, _polish, the
-certificate), pass 2 on the uncertified states (_solve_universal: bracket grown by doubling, safeguarded
-Halley), the Stumpff formulas and the Lagrange f and g. A fix is made in propagate.py and ported here;
-tests/core/test_propagate.py and test_propagate_long_flights.py hold both paths to the same mpmath bounds.
-What is the kernel's own:
-- Both passes run branch-free on blocks of 256 states whose quantities sit in 1-D scratch rows, so LLVM
-  vectorises every loop (loops over (n, 3) arrays, or one loop storing six rows, it does not). A selection
-  whose branch loads from memory (`row[j] if c else 0.0`) is not vectorised either: a product, or values
-  loaded before the selection, are (a third of the time, measured on the radial check).
-- sin, cos, exp, atan2 (to 2e-8, a starter), the starter's logarithm (to 3e-6) and cube root (to 5e-10,
-  division free) come from orbits.core._fast_math, so the two paths agree to rounding, not bit for bit;
-  its sin and cos are NaN beyond s = 64, which the iteration treats as an overshoot.
+is the NumPy version's, function for function (same names). The states are sorted once by |r0| |v0|**2 against
+2 mu: the bound ones go through the elliptic pass, the open ones through the hyperbolic pass, each block by block
+of _BLOCK states, and what either leaves (exact parabolas, invalid input and any solve it does not certify) goes
+through the universal passes (orbits/core/_fast_universal.py).
+- The elliptic pass: A, 1 / a, n, n dt and e sin E0 in double-double arithmetic (_elliptic_setup), the local
+  starter or Markley's (_elliptic_starter), one sixth-order and one Newton step on F(x) = m with exact products
+  where it cancels (_elliptic_residual), the certificate, the Lagrange f and g in x from the last evaluation.
+- The hyperbolic pass: A, 1 / |a|, n, n dt and e sinh H0 in double-double arithmetic (_hyperbolic_setup), the
+  logarithmic and the parabolic starter (_hyperbolic_starters), the better by Newton step length,
+  HYPERBOLIC_STEPS bracketed sixth-order steps and a Newton step on F(x) = m with exact products where it cancels
+  (_hyperbolic_residual), the certificate, and the Lagrange f and g from the sinh x - x, cosh x - 1 and exp x of
+  the last evaluation, carried through the Newton step.
+A fix is made in propagate.py and ported here; tests/core/test_propagate.py and test_propagate_long_flights.py
+hold both paths to the same mpmath bounds. What is the kernel's own:
+- The passes run branch-free on blocks of states whose quantities sit in 1-D scratch rows, so LLVM vectorises
+  every loop (loops over (n, 3) arrays, or one loop storing six rows, it does not). A selection whose branch
+  loads from memory (`row[j] if c else 0.0`) is not vectorised either: a product, or values loaded before the
+  selection, are (a third of the time, measured on the radial check).
+- sin, cos, exp, atan2 (to 2e-8, a starter), the starters' logarithm (to 3e-6) and cube root (to 5e-10,
+  division free) come from orbits.core._fast_math, so the two paths agree to rounding, not bit for bit.
 - Divisions cost the vectorised loops as much as a dozen multiplications: the double-double quotients of
-  the elliptic setup share reciprocals (_dd_over), exact products are one FMA (_two_product), and the loops
+  the setups share reciprocals (_dd_over), exact products are one FMA (_two_product), and the loops
   free of error-free transformations let LLVM fuse a * b + c (jit(contract=True)).
-- The double-double setup takes about 40 % of the elliptic pass, its three trigonometric evaluations another
-  30 %; the universal passes cost several times more per state. Throughput against heyoka's lagrange_prop
-  is in the README's Benchmarks section (orbits bench propagate).
+Throughput against heyoka's lagrange_prop is in the README's Benchmarks section (orbits bench propagate).
 """
-
 
 import math
 
 import numpy as np
 
 from orbits.core._fast import jit
-from orbits.core._fast_kepler import _INVALID, _halley_step, _markley_starter, _reduce, _trig
+from orbits.core._fast_kepler import _markley_starter, _reduce, _sixth_order_step
 from orbits.core._fast_math import (
     _atan2_approx,
     _cbrt_approx,
+    _dd_add,
+    _dd_dot,
+    _dd_mul,
+    _dd_over,
+    _dd_root,
     _exp,
-    _fast_two_sum,
+    _fma,
     _horner,
     _log_approx,
-    _sin_cos,
-    _two_product,
     _two_sum,
 )
-from orbits.core._kepler_shared import MAX_MEAN_ANOMALY, SINH_MINUS_X, TWO_PI_1, TWO_PI_2, X_MINUS_SIN
+from orbits.core._fast_universal import (
+    _BLOCK,
+    _DT,
+    _MU,
+    _RX,
+    _RY,
+    _RZ,
+    _VX,
+    _VY,
+    _VZ,
+    _gather_block,
+    _universal_passes,
+)
+from orbits.core._kepler_shared import (
+    COSH_MINUS_ONE,
+    MAX_MEAN_ANOMALY,
+    ONE_MINUS_COS,
+    PI_1,
+    PI_2,
+    SINH_MINUS_X,
+    TWO_PI_1,
+    X_MINUS_SIN,
+)
 from orbits.core._propagate_shared import (
-    BRACKET_DOUBLINGS,
     BRACKET_WIDTH,
-    C2_SERIES,
-    C3_SERIES,
     ELLIPTIC_ERROR,
     ELLIPTIC_STEP,
-    FIXED_STEPS,
+    HYPERBOLIC_STEPS,
+    LOCAL_STARTER_STEP,
     SERIES_LIMIT,
     SMALLEST_MEAN_MOTION_SQUARED,
 )
-from orbits.core._roots import MAX_ITERATIONS
 
-# --- double-double arithmetic (orbits.core._dd), on scalars ---------------------------------------
+COSH_TAIL = COSH_MINUS_ONE[:-1]  # (cosh x - 1 - x**2 / 2) / x**4 as a series in x**2
+COS_TAIL = ONE_MINUS_COS[:-1]  # (1 - cos x - x**2 / 2) / x**4
 
-
-@jit(inline=True)
-def _dd_add(a_hi, a_lo, b_hi, b_lo):
-    s, e = _two_sum(a_hi, b_hi)
-    return _fast_two_sum(s, e + a_lo + b_lo)
-
-
-@jit(inline=True)
-def _dd_mul(a_hi, a_lo, b_hi, b_lo):
-    p, e = _two_product(a_hi, b_hi)
-    return _fast_two_sum(p, e + (a_hi * b_lo + a_lo * b_hi))
-
-
-@jit(inline=True)
-def _dd_div(a_hi, a_lo, b_hi, b_lo):
-    q1 = a_hi / b_hi
-    p_hi, p_lo = _dd_mul(b_hi, b_lo, -q1, 0.0)
-    r_hi, _ = _dd_add(a_hi, a_lo, p_hi, p_lo)
-    return _two_sum(q1, r_hi / b_hi)
-
-
-@jit(inline=True)
-def _dd_sqrt(a_hi, a_lo):
-    s = math.sqrt(a_hi)
-    p, e = _two_product(s, s)
-    return _two_sum(s, ((a_hi - p) - e + a_lo) / (2.0 * s))
-
-
-@jit(inline=True)
-def _dd_over(a_hi, a_lo, b_hi, b_lo, inverse):
-    """_dd_div with the reciprocal inverse = 1 / b_hi given: quotient a_hi * inverse, corrected once from the exact
-    remainder (the same double-double quotient; a division costs the vectorised loops as much as a dozen
-    multiplications, and one reciprocal serves two quotients)."""
-    q = a_hi * inverse
-    p, e = _two_product(q, b_hi)
-    return _fast_two_sum(q, (((a_hi - p) - e + a_lo) - q * b_lo) * inverse)
-
-
-@jit(inline=True)
-def _dd_root(a_hi, a_lo):
-    """(_dd_sqrt(a_hi, a_lo), 1 / its high part), the correction multiplied by the reciprocal."""
-    s = math.sqrt(a_hi)
-    inverse = 1.0 / s
-    p, e = _two_product(s, s)
-    hi, lo = _fast_two_sum(s, ((a_hi - p) - e + a_lo) * (0.5 * inverse))
-    return hi, lo, inverse
-
-
-@jit(inline=True)
-def _dd_dot(ax, ay, az, bx, by, bz):
-    hi, lo = _two_product(ax, bx)
-    p, e = _two_product(ay, by)
-    hi, lo = _dd_add(hi, lo, p, e)
-    p, e = _two_product(az, bz)
-    return _dd_add(hi, lo, p, e)
-
-
-@jit(inline=True)
-def _reduce_by_periods(rx, ry, rz, vx, vy, vz, mu, dt):
-    """(dt - k P with k = round(dt / P) on ellipses, dt on open orbits; alpha = 2 / r - v**2 / mu [1/m]; k; P),
-    from double-double arithmetic (propagate._reduce_by_periods)."""
-    r2_hi, r2_lo = _dd_dot(rx, ry, rz, rx, ry, rz)
-    r_hi, r_lo = _dd_sqrt(r2_hi, r2_lo)
-    v2_hi, v2_lo = _dd_dot(vx, vy, vz, vx, vy, vz)
-    v2_hi, v2_lo = _dd_div(v2_hi, v2_lo, mu, 0.0)
-    two_hi, two_lo = _dd_div(2.0, 0.0, r_hi, r_lo)
-    alpha_hi, alpha_lo = _dd_add(two_hi, two_lo, -v2_hi, -v2_lo)
-    alpha = alpha_hi + alpha_lo
-    bound = alpha_hi > 0.0
-    alpha_hi, alpha_lo = (alpha_hi, alpha_lo) if bound else (1.0, 0.0)  # branch free: open orbits keep dt
-    root_hi, root_lo = _dd_sqrt(alpha_hi, alpha_lo)
-    a3_hi, a3_lo = _dd_mul(alpha_hi, alpha_lo, root_hi, root_lo)
-    root_mu_hi, root_mu_lo = _dd_sqrt(mu, 0.0)
-    n_hi, n_lo = _dd_mul(root_mu_hi, root_mu_lo, a3_hi, a3_lo)
-    p_hi, p_lo = _dd_div(TWO_PI_1, TWO_PI_2, n_hi, n_lo)
-    turns = np.rint(dt / p_hi)
-    q_hi, q_lo = _two_product(turns, p_hi)
-    hi, lo = _dd_add(dt, 0.0, -q_hi, -(q_lo + turns * p_lo))
-    return (hi + lo if bound else dt), alpha, (turns if bound else 0.0), (p_hi if bound else np.nan)
-
-
-# --- Stumpff functions and the universal Kepler equation -----------------------------------------
-
-
-@jit(inline=True)
-def _stumpff(z):
-    """propagate.stumpff, branch free: series for |z| <= 1, else sin and cos (z > 1) or exp (z < -1) of
-    s = sqrt(|z|) from orbits.core._fast_math, in the same formulas; overflows to inf beyond z = -5e5.
-    Returns (c0, c1, c2, c3, exp sqrt(max(-z, 1)), its inverse): the hyperbolic terms reuse the exponential."""
-    c2_series, c3_series = _horner(C2_SERIES, z), _horner(C3_SERIES, z)
-    s = math.sqrt(max(z, 1.0))
-    sin, cos = _sin_cos(s)
-    one_minus_cos = sin * sin / (1.0 + cos) if cos > 0.0 else 1.0 - cos
-    s_minus_sin = s * s * s * _horner(X_MINUS_SIN, z) if s < SERIES_LIMIT else s - sin
-    t = math.sqrt(max(-z, 1.0))
-    exp = _exp(t)
-    inverse = 1.0 / exp
-    sinh, cosh = 0.5 * (exp - inverse), 0.5 * (exp + inverse)
-    cosh_minus_one = sinh * ((1.0 - inverse) / (1.0 + inverse))
-    sinh_minus_t = t * t * t * _horner(SINH_MINUS_X, -z) if t < SERIES_LIMIT else sinh - t
-    if abs(z) <= 1.0:
-        return 1.0 - z * c2_series, 1.0 - z * c3_series, c2_series, c3_series, exp, inverse
-    if z > 0.0:
-        return cos, sin / s, one_minus_cos / z, s_minus_sin / (s * z), exp, inverse
-    return cosh, sinh / t, cosh_minus_one / -z, sinh_minus_t / (t * -z), exp, inverse
-
-
-@jit(inline=True)
-def _g_functions(chi, alpha, grow, decay):
-    """(G0, G1, G2, G3, e sinh H, e cosh H) at chi: propagate._g_functions and propagate._hyperbolic_terms."""
-    c0, c1, c2, c3, exp, inverse = _stumpff(alpha * chi * chi)
-    e_sinh, e_cosh = 0.5 * (grow * exp - decay * inverse), 0.5 * (grow * exp + decay * inverse)
-    return c0, chi * c1, chi * chi * c2, chi * chi * chi * c3, e_sinh, e_cosh
-
-
-@jit(inline=True)
-def _hyperbolic_coefficients(r0, sigma0, alpha, p):
-    """propagate._hyperbolic_coefficients: (e exp H0, e exp -H0) of a hyperbola, 0 on other orbits."""
-    beta = -alpha if alpha < 0.0 else 0.0
-    e_cosh, e_sinh = 1.0 + r0 * beta, sigma0 * math.sqrt(beta)
-    larger = e_cosh + abs(e_sinh)
-    smaller = (1.0 + beta * p) / larger
-    grow, decay = (smaller, larger) if sigma0 < 0.0 else (larger, smaller)
-    return (grow, decay) if alpha < 0.0 else (0.0, 0.0)
-
-
-@jit(inline=True)
-def _inverse_powers(alpha):
-    """propagate._inverse_powers: (1 / beta, 1 / sqrt(beta), 1 / beta**1.5), beta = -alpha."""
-    inverse = 1.0 / -alpha
-    inverse_root = math.sqrt(max(-alpha, 0.0)) * inverse
-    return inverse, inverse_root, inverse * inverse_root
-
-
-@jit(inline=True)
-def _anomaly_form(chi, r0, sigma0, alpha, g1, g2, g3, e_sinh, inverse, inverse_15):
-    """propagate._anomaly_form: whether F is better summed in the hyperbolic anomaly than in the G form."""
-    g_terms = abs(r0 * g1) + abs(sigma0 * g2) + abs(g3)
-    h_terms = abs(e_sinh) * inverse_15 + (abs(sigma0) + chi) * inverse
-    return alpha * chi * chi < -1.0 and h_terms < g_terms
-
-
-@jit(inline=True)
-def _universal_residual(chi, tau, r0, sigma0, alpha, grow, decay):
-    """propagate._residual: (F - tau, F', F'') with F = r0 G1 + sigma0 G2 + G3, in the hyperbolic anomaly where
-    _anomaly_form says so; a non-finite F counts as +inf."""
-    g0, g1, g2, g3, e_sinh, e_cosh = _g_functions(chi, alpha, grow, decay)
-    f = (r0 * g1 + sigma0 * g2 + g3) - tau
-    df = r0 * g0 + sigma0 * g1 + g2
-    d2f = sigma0 * g0 + (1.0 - alpha * r0) * g1
-    inverse, inverse_root, inverse_15 = _inverse_powers(alpha)
-    f_h = (e_sinh * inverse_15 - (sigma0 + chi) * inverse) - tau
-    df_h, d2f_h = (e_cosh - 1.0) * inverse, e_sinh * inverse_root
-    far = _anomaly_form(chi, r0, sigma0, alpha, g1, g2, g3, e_sinh, inverse, inverse_15)
-    f, df, d2f = (f_h, df_h, d2f_h) if far else (f, df, d2f)
-    return (f if np.isfinite(f) else np.inf), df, d2f
-
-
-@jit(inline=True)
-def _vallado_guess(tau, r0, sigma0, alpha):
-    """propagate._vallado_guess, branch free: tau alpha on ellipses, Vallado's logarithmic guess on hyperbolas
-    (with a 3e-6 logarithm, plenty for a first guess)."""
-    sqrt_minus_a = math.sqrt(max(-1.0 / alpha, 0.0))
-    ratio = -2.0 * alpha * tau / (sigma0 + sqrt_minus_a * (1.0 - alpha * r0))
-    usable = alpha < 0.0 and 2.2250738585072014e-308 <= ratio < np.inf
-    guess = sqrt_minus_a * _log_approx(ratio if usable else 1.0)
-    linear = tau * alpha if alpha > 0.0 else tau / r0
-    return max(guess if (usable and guess > 0.0) else linear, 0.0)
-
-
-@jit(inline=True)
-def _barker_guess(tau, sigma0, p):
-    """propagate._barker_guess (cube root to 1e-11): chi on the parabola with the same p = h**2 and r0.v0;
-    0 where that is negative or overflows."""
-    root_p = math.sqrt(p)
-    d0 = sigma0 / root_p
-    w = d0 + d0 * d0 * d0 / 3.0 + 2.0 * tau / (p * root_p)
-    c = _cbrt_approx(1.5 * abs(w) + math.sqrt(2.25 * w * w + 1.0))
-    guess = root_p * (math.copysign(c - 1.0 / c, w) - d0)
-    return guess if 0.0 < guess < np.inf else 0.0
-
-
-@jit(inline=True)
-def _starter(tau, r0, sigma0, alpha, p, grow, decay):
-    """propagate._starter: the better of Vallado's guess and the parabolic guess, by Newton step length.
-
-    Measured on the benchmark's mixed states (1e5; safeguarded Halley iterations to convergence):
-    ellipses 3.2 / 3.1 / 2.95 mean steps (Vallado / parabolic / better of the two), hyperbolas 5.9 /
-    3.0 / 2.45 with 62 % / 8 % / 0 % needing more than 5, near-parabolic orbits 5.4 / 2.5 / 2.5.
-    """
-    vallado, barker = _vallado_guess(tau, r0, sigma0, alpha), _barker_guess(tau, sigma0, p)
-    f_v, df_v, _ = _universal_residual(vallado, tau, r0, sigma0, alpha, grow, decay)
-    f_b, df_b, _ = _universal_residual(barker, tau, r0, sigma0, alpha, grow, decay)
-    step_v, step_b = abs(f_v / df_v), abs(f_b / df_b)
-    barker_better = np.isfinite(step_b) and not (step_v <= step_b)
-    return barker if barker_better else vallado
-
-
-@jit
-def _residual_call(chi, tau, r0, sigma0, alpha, grow, decay):
-    """_universal_residual as a function call: pass 2 calls it instead of inlining three more copies
-    (measured: compiling the propagation kernel took 35 s with them inlined, see the module docstring)."""
-    return _universal_residual(chi, tau, r0, sigma0, alpha, grow, decay)
-
-
-@jit
-def _solve_universal(tau, r0, sigma0, alpha, p, grow, decay):
-    """Pass 2, propagate._solve_safeguarded: chi >= 0 with F(chi) = tau; NaN if the iteration cap is hit."""
-    hi = max(tau / r0, 1e-300)
-    for _ in range(BRACKET_DOUBLINGS):
-        if _residual_call(hi, tau, r0, sigma0, alpha, grow, decay)[0] >= 0.0:
-            break
-        hi *= 2.0
-    lo = 0.0
-    x = min(max(_starter(tau, r0, sigma0, alpha, p, grow, decay), lo), hi)
-    for _ in range(MAX_ITERATIONS):
-        f, df, d2f = _residual_call(x, tau, r0, sigma0, alpha, grow, decay)
-        if f < 0:
-            lo = x
-        if f > 0:
-            hi = x
-        x, done = _halley_step(x, f, df, d2f, lo, hi)
-        if done:
-            f, df, _ = _residual_call(x, tau, r0, sigma0, alpha, grow, decay)
-            polished = x - f / df
-            return polished if (np.isfinite(polished) and f != 0) else x
-    return np.nan
-
-
-@jit(inline=True)
-def _polish(x, tau, r0, sigma0, alpha, grow, decay):
-    """propagate._polish: (x after one Newton step, the step)."""
-    f, df, _ = _universal_residual(x, tau, r0, sigma0, alpha, grow, decay)
-    step = f / df
-    polished = x - step
-    return (polished if (np.isfinite(polished) and f != 0) else x), step
-
-
-@jit(inline=True)
-def _fixed_step(x, lo, hi, tau, r0, sigma0, alpha, grow, decay):
-    """propagate._fixed_step, branch free: one Halley step (x, lo, hi, |step|), bisecting or doubling when the
-    step leaves the bracket [lo, hi] (hi may still be +inf)."""
-    f, df, d2f = _universal_residual(x, tau, r0, sigma0, alpha, grow, decay)
-    lo = x if f < 0.0 else lo
-    hi = x if f > 0.0 else hi
-    new = x - f / (df - 0.5 * f * d2f / df)
-    inside = np.isfinite(new) and lo <= new <= hi
-    fallback = 0.5 * (lo + hi) if hi < np.inf else 2.0 * max(lo, x, 1e-300)
-    new = new if inside else fallback
-    return new, lo, hi, abs(new - x)
-
-
-# --- one state --------------------------------------------------------------------------------------
-
-
-@jit(inline=True)
-def _scaled(rx, ry, rz, vx, vy, vz, mu, dt):
-    """The scaled problem (|r0| = 1, mu = 1, dt reduced and made positive by time reversal):
-    (length, speed, back, x, y, z, u, v, w, tau, r0, sigma0, alpha, reduced dt, periods taken off, period)."""
-    dt, alpha_si, turns, period = _reduce_by_periods(rx, ry, rz, vx, vy, vz, mu, dt)
-    length = math.sqrt(rx * rx + ry * ry + rz * rz)
-    speed = math.sqrt(mu / length)
-    x, y, z = rx / length, ry / length, rz / length
-    u, v, w = vx / speed, vy / speed, vz / speed
-    tau = dt * speed / length
-    r0 = math.sqrt(x * x + y * y + z * z)
-    alpha = alpha_si * length  # not 2 / r0 - |w|**2, whose cancellation near e = 1 costs digits
-    back = -1.0 if tau < 0.0 else 1.0
-    u, v, w, tau = back * u, back * v, back * w, abs(tau)
-    return length, speed, back, x, y, z, u, v, w, tau, r0, x * u + y * v + z * w, alpha, dt, turns, period
-
-
-@jit(inline=True)
-def _semilatus(scaled):
-    """p = |x x w|**2 of the scaled state (|r0| = 1, mu = 1)."""
-    x, y, z, u, v, w = scaled[3], scaled[4], scaled[5], scaled[6], scaled[7], scaled[8]
-    hx, hy, hz = y * w - z * v, z * u - x * w, x * v - y * u
-    return hx * hx + hy * hy + hz * hz
-
-
-@jit(inline=True)
-def _coefficients(scaled):
-    """(grow, decay) = (e exp H0, e exp -H0) of the scaled problem (0, 0 unless it is a hyperbola)."""
-    return _hyperbolic_coefficients(scaled[10], scaled[11], scaled[12], _semilatus(scaled))
-
-
-@jit(inline=True)
-def _valid(rx, ry, rz, vx, vy, vz, mu, dt):
-    """Finite state, mu and dt, mu > 0 and r x v != 0 (the NumPy version raises otherwise)."""
-    hx, hy, hz = ry * vz - rz * vy, rz * vx - rx * vz, rx * vy - ry * vx
-    finite = np.isfinite(rx) and np.isfinite(ry) and np.isfinite(rz) and np.isfinite(vx) and np.isfinite(vy)
-    finite = finite and np.isfinite(vz) and np.isfinite(mu) and np.isfinite(dt)
-    return finite and mu > 0.0 and hx * hx + hy * hy + hz * hz > 0.0
-
-
-@jit(inline=True)
-def _state_at(chi, scaled):
-    """(r, v) as six floats from the Lagrange f and g at chi, as propagate._lagrange; NaN where chi is NaN."""
-    length, speed, back, x, y, z, u, v, w, tau, r0, sigma0, alpha, dt, _, _ = scaled
-    grow, decay = _coefficients(scaled)
-    g0, g1, g2, g3, e_sinh, e_cosh = _g_functions(chi, alpha, grow, decay)
-    inverse, _, inverse_15 = _inverse_powers(alpha)
-    possible = alpha * chi * chi < -1.0
-    r_terms, r_terms_h = abs(r0 * g0) + abs(sigma0 * g1) + abs(g2), (abs(e_cosh) + 1.0) * inverse
-    g_terms, g_terms_h = abs(r0 * g1) + abs(sigma0 * g2), abs(e_sinh) * inverse_15 + (abs(sigma0) + abs(g1)) * inverse
-    r_new = (e_cosh - 1.0) * inverse if (possible and r_terms_h < r_terms) else r0 * g0 + sigma0 * g1 + g2
-    g_far = e_sinh * inverse_15 - (sigma0 + g1) * inverse
-    f, g = 1.0 - g2 / r0, (g_far if (possible and g_terms_h < g_terms) else r0 * g1 + sigma0 * g2)
-    f_dot, g_dot = -g1 / (r_new * r0), 1.0 - g2 / r_new
-    vel_scale = back * speed
-    return (
-        (f * x + g * u) * length,
-        (f * y + g * v) * length,
-        (f * z + g * w) * length,
-        (f_dot * x + g_dot * u) * vel_scale,
-        (f_dot * y + g_dot * v) * vel_scale,
-        (f_dot * z + g_dot * w) * vel_scale,
-    )
+# Rows of the per-block scratch array after the input rows (orbits/core/_fast_universal.py), the elliptic pass's:
+_A, _EC, _ES, _M, _N, _BACK, _LO, _HI, _X, _OK, _SIN, _OMC, _R_OVER_A = range(8, 21)
+_E_OUT = 21  # rows 21..26: r and v of the result
+_BARKER = 27  # the hyperbolic pass's parabolic starter
+_M_LO, _XMS = 28, 29
 
 
 # --- the elliptic pass (propagate._elliptic_pass) ---------------------------------------------------
 
 
 @jit(inline=True)
+def _exact_product(a, b):
+    """(a * b rounded, its rounding error), as _fast_math._two_product, with the product itself formed by an FMA
+    with zero: the loops compiled with contraction cannot then fuse it into the sums of the error-free
+    transformations that follow (which would count its error twice)."""
+    p = _fma(a, b, 0.0)
+    return p, _fma(a, b, -p)
+
+
+@jit(inline=True)
 def _elliptic_setup(rx, ry, rz, vx, vy, vz, mu, dt):
-    """propagate._elliptic_setup for one state: (A, ec, es, m, n, back, eligible), in double-double
+    """propagate._elliptic_setup for one state: (A, ec, es, m, m_lo, n, back, eligible), in double-double
     arithmetic as there (quotients by reciprocals: _dd_over)."""
     inverse_mu = 1.0 / mu
     r2_hi, r2_lo = _dd_dot(rx, ry, rz, rx, ry, rz)
@@ -402,74 +121,79 @@ def _elliptic_setup(rx, ry, rz, vx, vy, vz, mu, dt):
     m_hi, m_lo = _dd_mul(n_hi, n_lo, dt, 0.0)
     eligible = alpha_hi > 0.0 and n2_hi >= SMALLEST_MEAN_MOTION_SQUARED and abs(m_hi) <= MAX_MEAN_ANOMALY
     hi, lo = _reduce(m_hi if eligible else 0.0, m_lo if eligible else 0.0)
-    m = hi + lo
-    back = -1.0 if m < 0.0 else 1.0
-    es = back * (rx * vx + ry * vy + rz * vz) * math.sqrt(alpha_hi * inverse_mu)
-    return a_hi + a_lo, (1.0 - a_hi) - a_lo, es, abs(m), n_hi + n_lo, back, eligible
+    back = -1.0 if hi < 0.0 else 1.0
+    rv_hi, rv_lo = _dd_dot(rx, ry, rz, vx, vy, vz)
+    q_hi, q_lo = _dd_over(alpha_hi, alpha_lo, mu, 0.0, inverse_mu)
+    q_hi, q_lo, _ = _dd_root(q_hi, q_lo)
+    es_hi, es_lo = _dd_mul(rv_hi, rv_lo, q_hi, q_lo)
+    return a_hi + a_lo, (1.0 - a_hi) - a_lo, back * (es_hi + es_lo), back * hi, back * lo, n_hi + n_lo, back, eligible
 
 
 @jit(inline=True)
-def _elliptic_residual(x, A, ec, es, m):
-    """propagate._elliptic_residual: (F - m, F', F'', sin x, 1 - cos x), x in [0, pi + 2] (_trig reflects
-    about pi beyond 2)."""
-    sin, x_minus_sin, one_minus_cos = _trig(x)
-    f = ((A * x - m) + ec * x_minus_sin) + es * one_minus_cos
-    df = (A + ec * one_minus_cos) + es * sin
+def _trig_terms(x):
+    """propagate._trig_terms, branch free: (sin x, x - sin x, 1 - cos x as hi + lo), x in [0, pi + 2]."""
+    reflect = x >= SERIES_LIMIT
+    z = (PI_1 - x) + PI_2 if reflect else x
+    square, square_lo = _exact_product(z, z)
+    z_minus_sin = square * z * _horner(X_MINUS_SIN, square)
+    hi, lo = _two_sum(0.5 * square, 0.5 * square_lo + square * square * _horner(COS_TAIL, square))
+    sin = z - z_minus_sin
+    return sin, (x - sin if reflect else z_minus_sin), (2.0 - hi if reflect else hi), (0.0 if reflect else lo)
+
+
+@jit(inline=True)
+def _elliptic_radius(A, ec, es, x, sin, x_minus_sin, one_minus_cos):
+    """propagate._elliptic_radius: r / a = F'(x)."""
+    p, e = _exact_product(es, x)
+    near = (A + p) + ((e - es * x_minus_sin) + ec * one_minus_cos)
+    return near if x < SERIES_LIMIT else (A + ec * one_minus_cos) + es * sin
+
+
+@jit(inline=True)
+def _elliptic_residual(x, A, ec, es, m, m_lo):
+    """propagate._elliptic_residual: (F - m, F', F'', sin x, x - sin x, 1 - cos x)."""
+    sin, x_minus_sin, one_minus_cos, one_minus_cos_lo = _trig_terms(x)
+    p1, e1 = _exact_product(A, x)
+    p2, e2 = _exact_product(es, one_minus_cos)
+    s, t = _two_sum(p1, p2)
+    s, u = _two_sum(s, -m)
+    f = s + ((t + u) + (((e1 + e2) + es * one_minus_cos_lo) - m_lo) + ec * x_minus_sin)
+    df = _elliptic_radius(A, ec, es, x, sin, x_minus_sin, one_minus_cos)
     d2f = ec * sin + es * (1.0 - one_minus_cos)
-    return f, df, d2f, sin, one_minus_cos
+    return f, df, d2f, sin, x_minus_sin, one_minus_cos
 
 
 @jit(inline=True)
-def _elliptic_starters(A, ec, es, m):
-    """propagate._elliptic_starters: (Markley's starter, the local starter, lo, hi); atan2 to 2e-8."""
+def _elliptic_starter(A, ec, es, m):
+    """propagate._elliptic_starter: (the local starter or Markley's, lo, hi); atan2 to 2e-8."""
     e = math.sqrt(ec * ec + es * es)
     E0 = _atan2_approx(es, ec)
     M1 = (E0 - es) + m
     turns = np.rint(M1 * (1.0 / TWO_PI_1))
     M1 = M1 - turns * TWO_PI_1
     markley = math.copysign(_markley_starter(abs(M1), min(e, 1.0)), M1) + turns * TWO_PI_1 - E0
-    discriminant = A * A + 2.0 * es * m
-    local = 2.0 * m / (A + math.sqrt(max(discriminant, 0.0)))
+    local = 2.0 * m / (A + math.sqrt(max(A * A + 2.0 * es * m, 0.0)))
+    square = local * local
+    left_out = abs(square * local * (ec / 6.0 - es * local / 24.0))
+    local_good = left_out < LOCAL_STARTER_STEP * abs(A + es * local + 0.5 * ec * square)
     lo, hi = max(m - BRACKET_WIDTH * e, 0.0), m + BRACKET_WIDTH * e
-    return min(max(markley, lo), hi), min(max(local, lo), hi), lo, hi
+    return min(max(local if local_good else markley, lo), hi), lo, hi
 
 
-# Rows of the per-block scratch array. LLVM vectorises loops over 1-D rows, not over (n, 3) arrays.
-_RX, _RY, _RZ, _VX, _VY, _VZ, _MU, _DT = range(8)
-# the elliptic pass
-_A, _EC, _ES, _M, _N, _BACK, _LO, _HI, _X, _OK, _SIN, _OMC, _R_OVER_A = range(8, 21)
-_E_OUT = 21  # rows 21..26: r and v of the result
-_LOCAL = 27
-# the universal pass 1
-_TAU, _R0, _SIGMA0, _ALPHA, _GROW, _DECAY, _CHI, _LO_U, _HI_U, _LAST = range(8, 18)
-_OUT = 18  # rows 18..23: r and v of the result
-_ROWS = 28
-_BLOCK = 256  # states per block: the scratch rows stay in the L1 cache between the steps
-
-
-@jit
-def _load_block(first, n, r0, v0, mu, dt, scratch):
-    """Copy states first .. first + n - 1 into the input rows (a scalar loop: it does not vectorise)."""
-    for j in range(n):
-        i = first + j
-        for k in range(3):
-            scratch[_RX + k, j] = r0[i, k]
-            scratch[_VX + k, j] = v0[i, k]
-        scratch[_MU, j], scratch[_DT, j] = mu[i], dt[i]
 
 
 @jit
 def _setup_elliptic_block(n, scratch):
     """The elliptic problem of the block's states (vectorised; double-double, so without contraction).
     Non-finite input and mu <= 0 are not eligible (they leave alpha <= 0, n**2 or n dt NaN or out of range), nor
-    are open orbits; radial states are set aside in _elliptic_positions. The universal passes then count the
+    are open orbits; radial states are set aside by _exclude_radial. The universal passes then count the
     invalid ones."""
     rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
     mu, dt = scratch[_MU], scratch[_DT]
     a, ec, es, m, mean_motion, back = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M], scratch[_N], scratch[_BACK]
-    ok = scratch[_OK]
+    m_lo, ok = scratch[_M_LO], scratch[_OK]
     for j in range(n):
-        a[j], ec[j], es[j], m[j], mean_motion[j], back[j], eligible = _elliptic_setup(
+        a[j], ec[j], es[j], m[j], m_lo[j], mean_motion[j], back[j], eligible = _elliptic_setup(
             rx[j], ry[j], rz[j], vx[j], vy[j], vz[j], mu[j], dt[j])
         ok[j] = eligible
 
@@ -487,42 +211,41 @@ def _exclude_radial(n, scratch):
 
 @jit(contract=True)
 def _start_elliptic_block(n, scratch):
-    """Both starters and the bracket (vectorised)."""
+    """The starter and the bracket (vectorised)."""
     a, ec, es, m = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M]
-    lo, hi, x, local = scratch[_LO], scratch[_HI], scratch[_X], scratch[_LOCAL]
+    lo, hi, x = scratch[_LO], scratch[_HI], scratch[_X]
     for j in range(n):
-        x[j], local[j], lo[j], hi[j] = _elliptic_starters(a[j], ec[j], es[j], m[j])
+        x[j], lo[j], hi[j] = _elliptic_starter(a[j], ec[j], es[j], m[j])
 
 
 @jit(contract=True)
-def _halley_elliptic_block(n, scratch):
-    """The better starter by Newton step length and one Halley step from it, kept in [lo, hi] (vectorised)."""
-    a, ec, es, m = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M]
-    lo, hi, x, local = scratch[_LO], scratch[_HI], scratch[_X], scratch[_LOCAL]
+def _sixth_order_elliptic_block(n, scratch):
+    """One sixth-order step from the starter, kept in [lo, hi] (vectorised)."""
+    a, ec, es, m, m_lo = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M], scratch[_M_LO]
+    lo, hi, x = scratch[_LO], scratch[_HI], scratch[_X]
     for j in range(n):
-        markley_j, local_j = x[j], local[j]  # loaded before the selection: a conditional load stops the vectoriser
-        f_m, df_m, d2f_m, _, _ = _elliptic_residual(markley_j, a[j], ec[j], es[j], m[j])
-        f_l, df_l, d2f_l, _, _ = _elliptic_residual(local_j, a[j], ec[j], es[j], m[j])
-        local_better = abs(f_l * df_m) < abs(f_m * df_l)  # |Newton step| from local < from Markley's
-        start = local_j if local_better else markley_j
-        f, df, d2f = (f_l, df_l, d2f_l) if local_better else (f_m, df_m, d2f_m)
-        x[j] = min(max(start - 2.0 * f * df / (2.0 * df * df - f * d2f), lo[j]), hi[j])
+        f, df, d2f, _, _, _ = _elliptic_residual(x[j], a[j], ec[j], es[j], m[j], m_lo[j])
+        step, _ = _sixth_order_step(f, df, d2f, 1.0 - df, -1.0)
+        x[j] = min(max(x[j] + step, lo[j]), hi[j])
 
 
 @jit(contract=True)
 def _newton_elliptic_block(n, scratch):
-    """One Newton step, the certificate, sin x and 1 - cos x at the root and r / a (vectorised)."""
-    a, ec, es, m, x, ok = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M], scratch[_X], scratch[_OK]
-    sin_row, omc_row, r_over_a = scratch[_SIN], scratch[_OMC], scratch[_R_OVER_A]
+    """One Newton step, the certificate, and the trigonometric terms and r / a at the root (vectorised)."""
+    a, ec, es, m, m_lo = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M], scratch[_M_LO]
+    x, ok, r_over_a = scratch[_X], scratch[_OK], scratch[_R_OVER_A]
+    sin_row, x_minus_sin_row, omc_row = scratch[_SIN], scratch[_XMS], scratch[_OMC]
     for j in range(n):
-        f, df, d2f, sin, one_minus_cos = _elliptic_residual(x[j], a[j], ec[j], es[j], m[j])
+        x_j = x[j]
+        f, df, d2f, sin, x_minus_sin, one_minus_cos = _elliptic_residual(x_j, a[j], ec[j], es[j], m[j], m_lo[j])
         step = f / df
-        root = x[j] - step
-        certified = abs(step) <= ELLIPTIC_STEP * root and abs(d2f) * step * step <= ELLIPTIC_ERROR * abs(df) * root
+        x_j = x_j - step
+        certified = abs(step) <= ELLIPTIC_STEP * x_j and abs(d2f) * step * step <= ELLIPTIC_ERROR * abs(df) * x_j
         ok[j] = ok[j] > 0.0 and certified
-        sin, one_minus_cos = sin - step * (1.0 - one_minus_cos), one_minus_cos - step * sin
-        sin_row[j], omc_row[j] = sin, one_minus_cos
-        r_over_a[j] = (a[j] + ec[j] * one_minus_cos) + es[j] * sin
+        sin, x_minus_sin, one_minus_cos = (sin - step * (1.0 - one_minus_cos), x_minus_sin - step * one_minus_cos,
+                                           one_minus_cos - step * sin)
+        x[j], sin_row[j], x_minus_sin_row[j], omc_row[j] = x_j, sin, x_minus_sin, one_minus_cos
+        r_over_a[j] = _elliptic_radius(a[j], ec[j], es[j], x_j, sin, x_minus_sin, one_minus_cos)
 
 
 @jit(contract=True)
@@ -530,11 +253,16 @@ def _elliptic_positions(n, scratch):
     """r = f r0 + g v0 into the output rows (propagate._elliptic_lagrange; vectorised)."""
     rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
     a, es, mean_motion, back = scratch[_A], scratch[_ES], scratch[_N], scratch[_BACK]
-    sin, one_minus_cos = scratch[_SIN], scratch[_OMC]
+    x, sin, x_minus_sin, one_minus_cos = scratch[_X], scratch[_SIN], scratch[_XMS], scratch[_OMC]
     out_x, out_y, out_z = scratch[_E_OUT], scratch[_E_OUT + 1], scratch[_E_OUT + 2]
     for j in range(n):
-        f = 1.0 - one_minus_cos[j] / a[j]
-        g = back[j] * (a[j] * sin[j] + es[j] * one_minus_cos[j]) / mean_motion[j]
+        x_j, a_j, es_j, omc_j = x[j], a[j], es[j], one_minus_cos[j]
+        p1, e1 = _exact_product(a_j, x_j)
+        p2, e2 = _exact_product(es_j, omc_j)
+        near = (p1 + p2) + ((e1 + e2) - a_j * x_minus_sin[j])
+        far = a_j * sin[j] + es_j * omc_j
+        g = back[j] * (near if x_j < SERIES_LIMIT else far) / mean_motion[j]
+        f = 1.0 - omc_j / a_j
         out_x[j], out_y[j], out_z[j] = f * rx[j] + g * vx[j], f * ry[j] + g * vy[j], f * rz[j] + g * vz[j]
 
 
@@ -552,172 +280,319 @@ def _elliptic_velocities(n, scratch):
         out_z[j] = f_dot * rz[j] + g_dot * vz[j]
 
 
+# --- the hyperbolic pass (propagate._hyperbolic_pass) -----------------------------------------------
+
+
+@jit(inline=True)
+def _hyperbolic_setup(rx, ry, rz, vx, vy, vz, mu, dt):
+    """propagate._hyperbolic_setup for one state: (A, ec, es, m, m_lo, n, back, eligible), in double-double
+    arithmetic as there (quotients by reciprocals: _dd_over)."""
+    inverse_mu = 1.0 / mu
+    r2_hi, r2_lo = _dd_dot(rx, ry, rz, rx, ry, rz)
+    r_hi, r_lo, inverse_r = _dd_root(r2_hi, r2_lo)
+    v2_hi, v2_lo = _dd_dot(vx, vy, vz, vx, vy, vz)
+    w_hi, w_lo = _dd_mul(r_hi, r_lo, v2_hi, v2_lo)
+    w_hi, w_lo = _dd_over(w_hi, w_lo, mu, 0.0, inverse_mu)
+    a_hi, a_lo = _dd_add(w_hi, w_lo, -2.0, 0.0)
+    beta_hi, beta_lo = _dd_over(a_hi, a_lo, r_hi, r_lo, inverse_r)
+    square_hi, square_lo = _dd_mul(beta_hi, beta_lo, beta_hi, beta_lo)
+    cube_hi, cube_lo = _dd_mul(square_hi, square_lo, beta_hi, beta_lo)
+    n2_hi, n2_lo = _dd_mul(cube_hi, cube_lo, mu, 0.0)
+    n_hi, n_lo, _ = _dd_root(n2_hi, n2_lo)
+    m_hi, m_lo = _dd_mul(n_hi, n_lo, dt, 0.0)
+    eligible = beta_hi > 0.0 and n2_hi >= SMALLEST_MEAN_MOTION_SQUARED and abs(m_hi) < np.inf
+    back = -1.0 if m_hi < 0.0 else 1.0
+    rv_hi, rv_lo = _dd_dot(rx, ry, rz, vx, vy, vz)
+    q_hi, q_lo = _dd_over(beta_hi, beta_lo, mu, 0.0, inverse_mu)
+    q_hi, q_lo, _ = _dd_root(q_hi, q_lo)
+    es_hi, es_lo = _dd_mul(rv_hi, rv_lo, q_hi, q_lo)
+    ec = (1.0 + a_hi) + a_lo
+    return a_hi + a_lo, ec, back * (es_hi + es_lo), back * m_hi, back * m_lo, n_hi + n_lo, back, eligible
+
+
+@jit(inline=True)
+def _hyperbolic_exponentials(rx, ry, rz, vx, vy, vz, mu, A, ec, es):
+    """propagate._hyperbolic_exponentials: (grow, decay, P)."""
+    hx, hy, hz = ry * vz - rz * vy, rz * vx - rx * vz, rx * vy - ry * vx
+    P = A / math.sqrt(rx * rx + ry * ry + rz * rz) * (hx * hx + hy * hy + hz * hz) / mu
+    larger = ec + abs(es)
+    smaller = (1.0 + P) / larger
+    inward = es < 0.0
+    grow = smaller if inward else larger
+    decay = larger if inward else smaller
+    return grow, decay, P
+
+
+@jit(inline=True)
+def _hyperbolic_functions(x):
+    """propagate.hyperbolic_functions, branch free: (sinh x - x, cosh x - 1 as hi + lo, exp x, exp -x)."""
+    square, square_lo = _exact_product(x, x)
+    series_shm = square * x * _horner(SINH_MINUS_X, square)
+    series_chm, series_lo = _two_sum(0.5 * square, 0.5 * square_lo + square * square * _horner(COSH_TAIL, square))
+    small = x < SERIES_LIMIT
+    exp = 1.0 + ((x + series_shm) + series_chm) if small else _exp(x)
+    inverse = 1.0 / exp
+    shm = series_shm if small else 0.5 * (exp - inverse) - x
+    chm = series_chm if small else 0.5 * (exp + inverse) - 1.0
+    return shm, chm, (series_lo if small else 0.0), exp, inverse
+
+
+@jit(inline=True)
+def _open_radius(A, ec, es, grow, decay, x, shm, chm, exp, inverse):
+    """propagate._open_radius: r / |a| = F'(x), in the form whose terms are the smaller."""
+    p, e = _exact_product(es, x)
+    near = (A + p) + ((e + es * shm) + ec * chm)
+    far_terms = 0.5 * (grow * exp + decay * inverse)
+    far = x > 1.0 and far_terms + 1.0 < A + abs(ec * chm) + abs(es) * (x + shm)
+    return far_terms - 1.0 if far else near
+
+
+@jit(inline=True)
+def _hyperbolic_residual(x, A, ec, es, grow, decay, m, m_lo):
+    """propagate._hyperbolic_residual: (F - m, F', F'', sinh x - x, cosh x - 1, exp x, exp -x)."""
+    shm, chm, chm_lo, exp, inverse = _hyperbolic_functions(x)
+    p1, e1 = _exact_product(A, x)
+    p2, e2 = _exact_product(es, chm)
+    s, t = _two_sum(p1, p2)
+    s, u = _two_sum(s, -m)
+    near = s + ((t + u) + (((e1 + e2) + es * chm_lo) - m_lo) + ec * shm)
+    near_terms = abs(p1) + abs(p2) + abs(ec * shm)
+    far_sum = 0.5 * (grow * (exp - 1.0) + decay * (1.0 - inverse))
+    far = x > 1.0 and far_sum + x < near_terms
+    f = ((far_sum - x) - m) - m_lo if far else near
+    df = _open_radius(A, ec, es, grow, decay, x, shm, chm, exp, inverse)
+    d2f = 0.5 * (grow * exp - decay * inverse)
+    return (f if np.isfinite(f) else np.inf), df, d2f, shm, chm, exp, inverse
+
+
+@jit(inline=True)
+def _hyperbolic_starters(A, es, grow, P, m):
+    """propagate._hyperbolic_starters: (the logarithmic starter, the parabolic starter, hi); logarithm to 3e-6,
+    cube root to 5e-10."""
+    hi = m * (1.0 + math.sqrt(1.0 + P)) / P
+    ratio = 2.0 * m / grow
+    log_guess = _log_approx(ratio) if 2.2250738585072014e-308 <= ratio < np.inf else -1.0
+    local = 2.0 * m / (A + math.sqrt(max(A * A + 2.0 * es * m, 0.0)))
+    first = log_guess if log_guess > 0.0 else local
+    root_p = math.sqrt(P)
+    d0 = es / root_p
+    w = d0 + d0 * d0 * d0 / 3.0 + 2.0 * m / (P * root_p)
+    c = _cbrt_approx(1.5 * abs(w) + math.sqrt(2.25 * w * w + 1.0))
+    barker = root_p * (math.copysign(c - 1.0 / c, w) - d0)
+    barker = barker if np.isfinite(barker) else first
+    return min(max(first, 0.0), hi), min(max(barker, 0.0), hi), hi
+
+
+@jit(inline=True)
+def _bracketed_step(x, lo, hi, f, df, d2f):
+    """One sixth-order step kept in [lo, hi] (bisection when it leaves), lo and hi first moved to x by the sign of
+    f: (x, lo, hi), as in propagate._solve_hyperbolic."""
+    lo = x if f < 0.0 else lo
+    hi = x if f > 0.0 else hi
+    new = x + _sixth_order_step(f, df, d2f, df + 1.0, 1.0)[0]
+    return (new if (np.isfinite(new) and lo <= new <= hi) else 0.5 * (lo + hi)), lo, hi
+
+
+# Rows of the hyperbolic pass; it shares _A .. _OK, _M_LO, _R_OVER_A, _BARKER and the output rows with the elliptic pass
+_GROW_H, _DECAY_H, _P_H, _SHM, _CHM, _EXP, _INV = range(30, 37)
+_ROWS = 37
+
+
 @jit
-def _store_elliptic_block(first, n, scratch, r, v, pending, count):
-    """Copy the output rows into r, v; the states not certified go on the list `pending` for the universal
-    passes (from position count on). Returns the new count."""
+def _setup_hyperbolic_block(n, scratch):
+    """The hyperbolic problem of the block's states (vectorised; double-double, so without contraction); bound
+    orbits, exact parabolas and invalid input are not eligible. Two loops: one loop storing all eleven rows needs
+    more run-time alias checks than LLVM's vectoriser makes, and ran at scalar speed (72 ns a state)."""
+    rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
+    mu, dt = scratch[_MU], scratch[_DT]
+    a, ec, es, m, mean_motion, back = scratch[_A], scratch[_EC], scratch[_ES], scratch[_M], scratch[_N], scratch[_BACK]
+    m_lo, ok = scratch[_M_LO], scratch[_OK]
     for j in range(n):
-        i = first + j
-        for k in range(3):
-            r[i, k] = scratch[_E_OUT + k, j]
-            v[i, k] = scratch[_E_OUT + 3 + k, j]
-        if scratch[_OK, j] == 0.0:
-            pending[count] = i
+        a[j], ec[j], es[j], m[j], m_lo[j], mean_motion[j], back[j], eligible = _hyperbolic_setup(
+            rx[j], ry[j], rz[j], vx[j], vy[j], vz[j], mu[j], dt[j])
+        ok[j] = eligible
+    grow, decay, p = scratch[_GROW_H], scratch[_DECAY_H], scratch[_P_H]
+    for j in range(n):
+        grow[j], decay[j], p[j] = _hyperbolic_exponentials(rx[j], ry[j], rz[j], vx[j], vy[j], vz[j], mu[j], a[j], ec[j],
+                                                           es[j])
+
+
+@jit(contract=True)
+def _start_hyperbolic_block(n, scratch):
+    """Both starters and hi (vectorised)."""
+    a, es, grow, p, m = scratch[_A], scratch[_ES], scratch[_GROW_H], scratch[_P_H], scratch[_M]
+    x, barker, hi = scratch[_X], scratch[_BARKER], scratch[_HI]
+    for j in range(n):
+        x[j], barker[j], hi[j] = _hyperbolic_starters(a[j], es[j], grow[j], p[j], m[j])
+
+
+@jit(contract=True)
+def _first_step_hyperbolic_block(n, scratch):
+    """The better starter by Newton step length and the first sixth-order step from it (vectorised)."""
+    a, ec, es, grow, decay = scratch[_A], scratch[_EC], scratch[_ES], scratch[_GROW_H], scratch[_DECAY_H]
+    m, m_lo, x, barker, lo, hi = scratch[_M], scratch[_M_LO], scratch[_X], scratch[_BARKER], scratch[_LO], scratch[_HI]
+    for j in range(n):
+        first_j, barker_j = x[j], barker[j]  # loaded before the selection: a conditional load stops the vectoriser
+        f_1, df_1, d2f_1, _, _, _, _ = _hyperbolic_residual(first_j, a[j], ec[j], es[j], grow[j], decay[j], m[j],
+                                                            m_lo[j])
+        f_b, df_b, d2f_b, _, _, _, _ = _hyperbolic_residual(barker_j, a[j], ec[j], es[j], grow[j], decay[j], m[j],
+                                                            m_lo[j])
+        step_b = abs(f_b / df_b)
+        barker_better = np.isfinite(step_b) and not (abs(f_1 / df_1) <= step_b)
+        start = barker_j if barker_better else first_j
+        f, df, d2f = (f_b, df_b, d2f_b) if barker_better else (f_1, df_1, d2f_1)
+        x[j], lo[j], hi[j] = _bracketed_step(start, 0.0, hi[j], f, df, d2f)
+
+
+@jit(contract=True)
+def _step_hyperbolic_block(n, scratch):
+    """One more sixth-order step (vectorised)."""
+    a, ec, es, grow, decay = scratch[_A], scratch[_EC], scratch[_ES], scratch[_GROW_H], scratch[_DECAY_H]
+    m, m_lo, x, lo, hi = scratch[_M], scratch[_M_LO], scratch[_X], scratch[_LO], scratch[_HI]
+    for j in range(n):
+        f, df, d2f, _, _, _, _ = _hyperbolic_residual(x[j], a[j], ec[j], es[j], grow[j], decay[j], m[j], m_lo[j])
+        x[j], lo[j], hi[j] = _bracketed_step(x[j], lo[j], hi[j], f, df, d2f)
+
+
+@jit(contract=True)
+def _newton_hyperbolic_block(n, scratch):
+    """The Newton step, the certificate, and the terms and r / |a| at the root (vectorised)."""
+    a, ec, es, grow, decay = scratch[_A], scratch[_EC], scratch[_ES], scratch[_GROW_H], scratch[_DECAY_H]
+    m, m_lo, x, ok = scratch[_M], scratch[_M_LO], scratch[_X], scratch[_OK]
+    shm_row, chm_row, exp_row, inverse_row, r_over_a = (scratch[_SHM], scratch[_CHM], scratch[_EXP], scratch[_INV],
+                                                        scratch[_R_OVER_A])
+    for j in range(n):
+        x_j = x[j]
+        f, df, d2f, shm, chm, exp, inverse = _hyperbolic_residual(x_j, a[j], ec[j], es[j], grow[j], decay[j], m[j],
+                                                                  m_lo[j])
+        step = f / df
+        certified = abs(step) <= ELLIPTIC_STEP * x_j and abs(d2f) * step * step <= ELLIPTIC_ERROR * df * x_j
+        ok[j] = ok[j] > 0.0 and certified
+        shm, chm = shm - step * chm, chm - step * (x_j + shm)
+        x_j = x_j - step
+        exp, inverse = exp * (1.0 - step), inverse * (1.0 + step)
+        x[j], shm_row[j], chm_row[j], exp_row[j], inverse_row[j] = x_j, shm, chm, exp, inverse
+        r_over_a[j] = _open_radius(a[j], ec[j], es[j], grow[j], decay[j], x_j, shm, chm, exp, inverse)
+
+
+@jit(contract=True)
+def _hyperbolic_positions(n, scratch):
+    """r = f r0 + g v0 into the output rows (propagate._hyperbolic_lagrange; vectorised)."""
+    rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
+    a, es, grow, decay, mean_motion, back = (scratch[_A], scratch[_ES], scratch[_GROW_H], scratch[_DECAY_H],
+                                             scratch[_N], scratch[_BACK])
+    x, shm, chm, exp, inverse = scratch[_X], scratch[_SHM], scratch[_CHM], scratch[_EXP], scratch[_INV]
+    out_x, out_y, out_z = scratch[_E_OUT], scratch[_E_OUT + 1], scratch[_E_OUT + 2]
+    for j in range(n):
+        x_j, chm_j = x[j], chm[j]
+        p1, e1 = _exact_product(a[j], x_j)
+        p2, e2 = _exact_product(es[j], chm_j)
+        near = (p1 + p2) + ((e1 + e2) + a[j] * shm[j])
+        far_sum = 0.5 * (grow[j] * (exp[j] - 1.0) + decay[j] * (1.0 - inverse[j]))
+        sinh = x_j + shm[j]
+        far = x_j > 1.0 and far_sum + sinh < abs(p1) + abs(p2)
+        g = back[j] * (far_sum - sinh if far else near) / mean_motion[j]
+        f = 1.0 - chm_j / a[j]
+        out_x[j], out_y[j], out_z[j] = f * rx[j] + g * vx[j], f * ry[j] + g * vy[j], f * rz[j] + g * vz[j]
+
+
+@jit(contract=True)
+def _hyperbolic_velocities(n, scratch):
+    """v = f' r0 + g' v0 into the output rows (vectorised)."""
+    rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
+    a, mean_motion, back = scratch[_A], scratch[_N], scratch[_BACK]
+    x, shm, chm, r_over_a = scratch[_X], scratch[_SHM], scratch[_CHM], scratch[_R_OVER_A]
+    out_x, out_y, out_z = scratch[_E_OUT + 3], scratch[_E_OUT + 4], scratch[_E_OUT + 5]
+    for j in range(n):
+        f_dot = -back[j] * mean_motion[j] * (x[j] + shm[j]) / (a[j] * r_over_a[j])
+        g_dot = 1.0 - chm[j] / r_over_a[j]
+        out_x[j], out_y[j] = f_dot * rx[j] + g_dot * vx[j], f_dot * ry[j] + g_dot * vy[j]
+        out_z[j] = f_dot * rz[j] + g_dot * vz[j]
+
+
+# --- the passes and the driver ----------------------------------------------------------------------------
+
+
+@jit
+def _store_block(index, first, n, scratch, r, v, pending, count):
+    """Copy the output rows into r[index[first:first + n]], v[...]; the states not certified go on the list
+    `pending` for the universal passes (from position count on), in a loop of their own. Returns the new count."""
+    x, y, z = scratch[_E_OUT], scratch[_E_OUT + 1], scratch[_E_OUT + 2]
+    u, w, q = scratch[_E_OUT + 3], scratch[_E_OUT + 4], scratch[_E_OUT + 5]
+    rows, ok = index[first:first + n], scratch[_OK]
+    for j in range(n):
+        i = rows[j]
+        r[i, 0], r[i, 1], r[i, 2], v[i, 0], v[i, 1], v[i, 2] = x[j], y[j], z[j], u[j], w[j], q[j]
+    for j in range(n):
+        if ok[j] == 0.0:
+            pending[count] = rows[j]
             count += 1
     return count
 
 
-# --- the universal passes, on the states the elliptic pass leaves ---------------------------------
-
-
 @jit
-def _gather_block(index, first, n, r0, v0, mu, dt, scratch):
-    """Copy states index[first .. first + n - 1] into the input rows."""
-    for j in range(n):
-        i = index[first + j]
-        for k in range(3):
-            scratch[_RX + k, j] = r0[i, k]
-            scratch[_VX + k, j] = v0[i, k]
-        scratch[_MU, j], scratch[_DT, j] = mu[i], dt[i]
-
-
-@jit
-def _setup_block(n, scratch):
-    """Scaled problem and starter of the block's states (vectorised); returns how many are invalid."""
-    rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
-    mu, dt = scratch[_MU], scratch[_DT]
-    tau, r0, sigma0, alpha = scratch[_TAU], scratch[_R0], scratch[_SIGMA0], scratch[_ALPHA]
-    grow, decay, chi, lo, hi = scratch[_GROW], scratch[_DECAY], scratch[_CHI], scratch[_LO_U], scratch[_HI_U]
-    invalid = 0
-    for j in range(n):
-        invalid += not _valid(rx[j], ry[j], rz[j], vx[j], vy[j], vz[j], mu[j], dt[j])
-        scaled = _scaled(rx[j], ry[j], rz[j], vx[j], vy[j], vz[j], mu[j], dt[j])
-        tau[j], r0[j], sigma0[j], alpha[j] = scaled[9], scaled[10], scaled[11], scaled[12]
-        p = _semilatus(scaled)
-        grow[j], decay[j] = _hyperbolic_coefficients(r0[j], sigma0[j], alpha[j], p)
-        chi[j] = _starter(tau[j], r0[j], sigma0[j], alpha[j], p, grow[j], decay[j])
-        lo[j], hi[j] = 0.0, np.inf
-    return invalid
-
-
-@jit
-def _step_block(n, scratch):
-    """One branch-free Halley step for each state of the block (vectorised)."""
-    tau, r0, sigma0, alpha = scratch[_TAU], scratch[_R0], scratch[_SIGMA0], scratch[_ALPHA]
-    grow, decay = scratch[_GROW], scratch[_DECAY]
-    chi, lo, hi, last = scratch[_CHI], scratch[_LO_U], scratch[_HI_U], scratch[_LAST]
-    for j in range(n):
-        chi[j], lo[j], hi[j], last[j] = _fixed_step(chi[j], lo[j], hi[j], tau[j], r0[j], sigma0[j], alpha[j],
-                                                    grow[j], decay[j])
-
-
-@jit
-def _certify_block(n, scratch):
-    """Polish chi and certify it (vectorised), as propagate._solve_certified: NaN unless the last Halley step
-    was below 2**-26 relative and the polishing step below 2**-40."""
-    tau, r0, sigma0, alpha = scratch[_TAU], scratch[_R0], scratch[_SIGMA0], scratch[_ALPHA]
-    grow, decay, chi, last = scratch[_GROW], scratch[_DECAY], scratch[_CHI], scratch[_LAST]
-    for j in range(n):
-        x, step = _polish(chi[j], tau[j], r0[j], sigma0[j], alpha[j], grow[j], decay[j])
-        certified = last[j] <= 2.0**-26 * chi[j] and abs(step) <= 2.0**-40 * chi[j]
-        chi[j] = x if certified else np.nan
-
-
-@jit
-def _evaluate_positions(n, scratch):
-    """r at chi into the output rows (vectorised; r and v in one loop need more runtime alias checks than
-    LLVM's vectoriser makes); r0 itself where the reduced dt is 0."""
-    rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
-    mu, dt, chi = scratch[_MU], scratch[_DT], scratch[_CHI]
-    out_x, out_y, out_z = scratch[_OUT], scratch[_OUT + 1], scratch[_OUT + 2]
-    for j in range(n):
-        scaled = _scaled(rx[j], ry[j], rz[j], vx[j], vy[j], vz[j], mu[j], dt[j])
-        x, y, z, _, _, _ = _state_at(chi[j], scaled)
-        still = scaled[13] == 0.0
-        out_x[j], out_y[j], out_z[j] = (rx[j], ry[j], rz[j]) if still else (x, y, z)
-
-
-@jit
-def _evaluate_velocities(n, scratch):
-    """v at chi into the output rows, as _evaluate_positions."""
-    rx, ry, rz, vx, vy, vz = scratch[_RX], scratch[_RY], scratch[_RZ], scratch[_VX], scratch[_VY], scratch[_VZ]
-    mu, dt, chi = scratch[_MU], scratch[_DT], scratch[_CHI]
-    out_x, out_y, out_z = scratch[_OUT + 3], scratch[_OUT + 4], scratch[_OUT + 5]
-    for j in range(n):
-        scaled = _scaled(rx[j], ry[j], rz[j], vx[j], vy[j], vz[j], mu[j], dt[j])
-        _, _, _, x, y, z = _state_at(chi[j], scaled)
-        still = scaled[13] == 0.0
-        out_x[j], out_y[j], out_z[j] = (vx[j], vy[j], vz[j]) if still else (x, y, z)
-
-
-@jit
-def _scatter_block(index, first, n, scratch, r, v):
-    """Copy the output rows into r[index[first:first + n]], v[...]."""
-    for j in range(n):
-        i = index[first + j]
-        for k in range(3):
-            r[i, k] = scratch[_OUT + k, j]
-            v[i, k] = scratch[_OUT + 3 + k, j]
-
-
-@jit
-def _universal_passes(index, r0, v0, mu, dt, r, v, scratch):
-    """The universal passes on the states index[...]: pass 1 (FIXED_STEPS branch-free Halley steps, vectorised,
-    block by block), then pass 2 on those it leaves uncertified (NaN); returns invalid * 2**32 + unconverged."""
-    invalid = 0
+def _elliptic_pass(index, r0, v0, mu, dt, r, v, scratch, pending, count):
+    """The elliptic pass on the states index[...], block by block (vectorised): r, v of the certified ones; the
+    others added to pending from position count on. Returns the new count."""
     for first in range(0, index.size, _BLOCK):
         n = min(_BLOCK, index.size - first)
         _gather_block(index, first, n, r0, v0, mu, dt, scratch)
-        invalid += _setup_block(n, scratch)
-        for _ in range(FIXED_STEPS):
-            _step_block(n, scratch)
-        _certify_block(n, scratch)
-        _evaluate_positions(n, scratch)
-        _evaluate_velocities(n, scratch)
-        _scatter_block(index, first, n, scratch, r, v)
-    if invalid:
-        return invalid * _INVALID
-    unconverged = 0
-    for i in index:
-        if np.isnan(r[i, 0]):
-            scaled = _scaled(r0[i, 0], r0[i, 1], r0[i, 2], v0[i, 0], v0[i, 1], v0[i, 2], mu[i], dt[i])
-            grow, decay = _coefficients(scaled)
-            chi = _solve_universal(scaled[9], scaled[10], scaled[11], scaled[12], _semilatus(scaled), grow, decay)
-            state = _state_at(chi, scaled)
-            for k in range(3):
-                r[i, k] = r0[i, k] if scaled[13] == 0.0 else state[k]
-                v[i, k] = v0[i, k] if scaled[13] == 0.0 else state[3 + k]
-            unconverged += np.isnan(chi)
-    return unconverged
+        _setup_elliptic_block(n, scratch)
+        _exclude_radial(n, scratch)
+        _start_elliptic_block(n, scratch)
+        _sixth_order_elliptic_block(n, scratch)
+        _newton_elliptic_block(n, scratch)
+        _elliptic_positions(n, scratch)
+        _elliptic_velocities(n, scratch)
+        count = _store_block(index, first, n, scratch, r, v, pending, count)
+    return count
+
+
+@jit
+def _hyperbolic_pass(index, r0, v0, mu, dt, r, v, scratch, pending, count):
+    """The hyperbolic pass on the states index[...], as _elliptic_pass."""
+    for first in range(0, index.size, _BLOCK):
+        n = min(_BLOCK, index.size - first)
+        _gather_block(index, first, n, r0, v0, mu, dt, scratch)
+        _setup_hyperbolic_block(n, scratch)
+        _exclude_radial(n, scratch)
+        _start_hyperbolic_block(n, scratch)
+        _first_step_hyperbolic_block(n, scratch)
+        for _ in range(HYPERBOLIC_STEPS - 1):
+            _step_hyperbolic_block(n, scratch)
+        _newton_hyperbolic_block(n, scratch)
+        _hyperbolic_positions(n, scratch)
+        _hyperbolic_velocities(n, scratch)
+        count = _store_block(index, first, n, scratch, r, v, pending, count)
+    return count
+
+
+@jit
+def _sort_by_conic(start, stop, r0, v0, mu, bound, open_):
+    """Indices start .. stop - 1 into bound[:k] and open_[:l] by |r0| |v0|**2 against 2 mu (propagate._open;
+    non-finite input counts as bound: the elliptic pass refuses it). Returns (bound count, open count)."""
+    n_bound, n_open = 0, 0
+    for i in range(start, stop):  # branch free: on mixed states a branch is mispredicted half the time
+        radius = math.sqrt(r0[i, 0] * r0[i, 0] + r0[i, 1] * r0[i, 1] + r0[i, 2] * r0[i, 2])
+        is_open = radius * (v0[i, 0] * v0[i, 0] + v0[i, 1] * v0[i, 1] + v0[i, 2] * v0[i, 2]) > 2.0 * mu[i]
+        open_[n_open], bound[n_bound] = i, i
+        n_open += is_open
+        n_bound += not is_open
+    return n_bound, n_open
 
 
 @jit
 def propagate(start, stop, r0, v0, mu, dt, r, v):
     """r[i], v[i] at t0 + dt[i] from r0[i], v0[i] about mu[i]; returns invalid * 2**32 + unconverged.
 
-    The elliptic pass on every state, block by block (vectorised); the universal passes on the states it does
-    not certify (open orbits, invalid input and any solve it cannot vouch for).
+    The elliptic pass on the bound states, the hyperbolic pass on the open ones, block by block (vectorised); the
+    universal passes on the states they do not certify (exact parabolas, invalid input and any solve they cannot
+    vouch for).
     """
     scratch = np.empty((_ROWS, _BLOCK))
+    bound, open_ = np.empty(stop - start, np.int64), np.empty(stop - start, np.int64)
     pending = np.empty(stop - start, np.int64)
-    count = _elliptic_pass(start, stop, r0, v0, mu, dt, r, v, scratch, pending)
+    n_bound, n_open = _sort_by_conic(start, stop, r0, v0, mu, bound, open_)
+    count = _elliptic_pass(bound[:n_bound], r0, v0, mu, dt, r, v, scratch, pending, 0)
+    count = _hyperbolic_pass(open_[:n_open], r0, v0, mu, dt, r, v, scratch, pending, count)
     return _universal_passes(pending[:count], r0, v0, mu, dt, r, v, scratch)
-
-
-@jit
-def _elliptic_pass(start, stop, r0, v0, mu, dt, r, v, scratch, pending):
-    """The elliptic pass on states start .. stop - 1, block by block (vectorised): r, v of the certified ones;
-    the others listed in pending[:count]. Returns count."""
-    count = 0
-    for first in range(start, stop, _BLOCK):
-        n = min(_BLOCK, stop - first)
-        _load_block(first, n, r0, v0, mu, dt, scratch)
-        _setup_elliptic_block(n, scratch)
-        _exclude_radial(n, scratch)
-        _start_elliptic_block(n, scratch)
-        _halley_elliptic_block(n, scratch)
-        _newton_elliptic_block(n, scratch)
-        _elliptic_positions(n, scratch)
-        _elliptic_velocities(n, scratch)
-        count = _store_elliptic_block(first, n, scratch, r, v, pending, count)
-    return count

@@ -2,7 +2,7 @@
 
 Imported only through orbits.core.transition when orbits.core._fast.use lets a batch run compiled. The scaled
 problem, the starter, the FIXED_STEPS bracketed Halley steps and the certificate (vectorised, block by block)
-and the safeguarded iteration are the propagator's kernels (orbits/core/_fast_propagate.py); then the same total
+and the safeguarded iteration are the propagator's kernels (orbits/core/_fast_universal.py); then the same total
 derivatives of f, g, f', g' in
 (R, sigma, alpha), the same assembly in the basis (r0, v0), and the same SI scales, time reversal and secular
 term as the NumPy version, state by state.
@@ -14,7 +14,7 @@ import numpy as np
 
 from orbits.core._fast import jit
 from orbits.core._fast_math import _horner
-from orbits.core._fast_propagate import (
+from orbits.core._fast_universal import (
     _BLOCK,
     _CHI,
     _INVALID,

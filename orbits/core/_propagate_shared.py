@@ -13,6 +13,14 @@ SERIES_LIMIT = 2.0
 #: mixed states.
 FIXED_STEPS = 5
 
+#: Sixth-order steps of the hyperbolic pass (the first from the starter's own evaluation), then a Newton step and the
+#: certificate.
+HYPERBOLIC_STEPS = 2
+
+#: The elliptic pass starts from the local starter where its estimated Newton step is below this, else from
+#: Markley's.
+LOCAL_STARTER_STEP = 1e-5
+
 #: Doublings of hi = tau / r0 that pass 2 may take to bracket the root (F grows at least linearly in chi).
 BRACKET_DOUBLINGS = 2100
 

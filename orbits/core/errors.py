@@ -54,5 +54,5 @@ class OrbitsWarning(UserWarning):
 
 
 class InsideBodyWarning(OrbitsWarning):
-    """A closest approach lies inside the primary (or inside both bodies' radii): a collision the two-body answer
-    passes through."""
+    """A closest approach lies inside a catalogue body (or inside both bodies' radii, for two bodies meeting): the
+    orbit passes through the body, or the two collide. The two-body answer is still computed."""

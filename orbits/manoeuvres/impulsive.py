@@ -27,11 +27,12 @@ import astropy.units as u
 import numpy as np
 
 from orbits import display, inputs, units
-from orbits.constants import Body
+from orbits.catalogue_orbits import mean_elements
+from orbits.constants import Body, body
 from orbits.core import manoeuvres as core
 from orbits.core.checks import check_finite, first_where
 from orbits.core.errors import OrbitDomainError
-from orbits.core.twobody import circular_speed
+from orbits.core.twobody import circular_angular_velocity, circular_speed
 from orbits.escape import CosmicVelocities
 from orbits.orbit import PRIMARY, Orbit
 from orbits.tables import quantity_table
@@ -94,7 +95,7 @@ class Hohmann(_Table):
 
     NAMES = ["initial_speed", "final_speed", "transfer_semi_major_axis", "transfer_eccentricity",
              "transfer_periapsis_speed", "transfer_apoapsis_speed", "first_burn", "second_burn", "delta_v",
-             "transfer_time"]
+             "transfer_time", "synodic_period", "phase_angle"]
 
     @classmethod
     def between(cls, primary: Body | str | u.Quantity, r1: u.Quantity, r2: u.Quantity, *,
@@ -105,6 +106,37 @@ class Hohmann(_Table):
         return cls(*_fields(mu, inputs.orbit_radius(primary, r1, "initial orbit radius r1"),
                             inputs.orbit_radius(primary, r2, "final orbit radius r2"),
                             _turn_angle(inclination_change, "inclination change")))
+
+    @classmethod
+    def between_bodies(cls, departure: str, target: str, *,
+                       inclination_change: u.Quantity = 0 * u.deg) -> "Hohmann":
+        """Between the mean orbits of two catalogue bodies (names) about their common primary, each taken as the
+        circle of radius its semi-major axis: the textbook approximation, off by the orbits' eccentricities (Mars's
+        distance from the Sun varies by 9 % either side of a) and their mutual inclination (turned only if
+        `inclination_change` says so). mu is the primary's GM (the craft's own mass is negligible)."""
+        first, second = (mean_elements(name) for name in (departure, target))
+        if first.primary != second.primary:
+            raise OrbitDomainError(f"{body(departure).name} orbits {first.primary} and {body(target).name} orbits "
+                                   f"{second.primary}: a Hohmann transfer joins two orbits about one primary")
+        return cls.between(first.primary, first.a << units.M, second.a << units.M,
+                           inclination_change=inclination_change)
+
+    @cached_property
+    def synodic_period(self) -> u.Quantity:
+        """2 pi / |n1 - n2| (s): how often the two circular orbits' bodies line up again, so how often the
+        transfer's departure window recurs (n = sqrt(mu / r**3)); undefined for r1 = r2."""
+        n1, n2 = circular_angular_velocity(self.r1, self.mu), circular_angular_velocity(self.r2, self.mu)
+        if np.any(n1 == n2):
+            raise OrbitDomainError("the synodic period needs two different radii r1 != r2: equal orbits never lap")
+        return 2.0 * np.pi / np.abs(n1 - n2) << units.S
+
+    @cached_property
+    def phase_angle(self) -> u.Quantity:
+        """pi - n2 t (rad), wrapped to (-pi, pi]: how far a body on the final circle must lead the departure point
+        at the first burn for the transfer to meet it (negative: it trails); n2 = sqrt(mu / r2**3), t the
+        transfer time. About 44.3 deg from the Earth's to Mars's orbit."""
+        lead = np.pi - circular_angular_velocity(self.r2, self.mu) * core.hohmann_time(self.r1, self.r2, self.mu)
+        return np.pi - np.mod(np.pi - lead, 2.0 * np.pi) << units.RAD
 
     @cached_property
     def initial_speed(self) -> u.Quantity:
@@ -197,7 +229,10 @@ def _radii(*radii):
 
 @dataclass(frozen=True, eq=False, repr=False)
 class BiElliptic(_Table):
-    """Three-burn transfer r1 -> rb -> r2 between circular orbits about mu, rb above both (float64 SI fields)."""
+    """Three-burn transfer r1 -> rb -> r2 between circular orbits about mu, rb at or above both (float64 SI fields).
+
+    rb = max(r1, r2) is the degenerate transfer: one burn is zero and the other two are Hohmann's, with half a
+    circle's coast at the larger radius added to the time."""
 
     mu: np.ndarray
     r1: np.ndarray
@@ -209,17 +244,18 @@ class BiElliptic(_Table):
     @classmethod
     def between(cls, primary: Body | str | u.Quantity, r1: u.Quantity, r2: u.Quantity,
                 rb: u.Quantity) -> "BiElliptic":
-        """From the circle r1 out to the apoapsis rb and down to the circle r2 (lengths from the centre)."""
+        """From the circle r1 out to the apoapsis rb >= max(r1, r2) and down to the circle r2 (lengths from the
+        centre)."""
         mu = inputs.gravitational_parameter(primary, PRIMARY)
         r1 = inputs.orbit_radius(primary, r1, "initial orbit radius r1")
         r2 = inputs.orbit_radius(primary, r2, "final orbit radius r2")
         rb = inputs.positive(rb, units.M, "intermediate radius rb")
-        low = rb <= np.maximum(r1, r2)
+        low = rb < np.maximum(r1, r2)
         if np.any(low):
             bad, one, two = first_where(low, rb, r1, r2)
             raise OrbitDomainError(
-                f"intermediate radius rb = {bad!r} m is outside the allowed range (max(r1, r2), inf) m with "
-                f"r1 = {one!r} m and r2 = {two!r} m: the bi-elliptic apoapsis must lie above both orbits")
+                f"intermediate radius rb = {bad!r} m is outside the allowed range [max(r1, r2), inf) m with "
+                f"r1 = {one!r} m and r2 = {two!r} m: the bi-elliptic apoapsis must not lie below either orbit")
         return cls(*_fields(mu, r1, r2, rb))
 
     def _burns(self):

@@ -12,21 +12,37 @@ Izzo's algorithm with the cancellation-free forms of orbits.core.lambert (which 
 revolutions, branch, prograde and the plane normal). Every argument broadcasts: arrays of positions, times of
 flight and revolution counts give arrays of transfers. The arrival point of the returned v1, propagated at 60
 digits, is within 1e-13 |r2| on the hard cases of tests/core/test_lambert.py.
+
+Between two bodies on two dates, the positions come from the ephemeris (orbits.ephemeris, heliocentric ICRF) and
+the transfer adds the patched-conic C3 and v_inf at both ends, exactly as orbits.Porkchop computes a cell:
+
+    >>> trip = lambert("Earth", "Mars", depart="2026-11-26", arrive="2027-08-15")
+    >>> round(float(trip.c3.to_value(u.km**2 / u.s**2)), 2), round(float(trip.arrival_v_inf.to_value(u.km / u.s)), 3)
+    (15.33, 2.939)
 """
 
 from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
+from typing import TYPE_CHECKING, Any
 
 import astropy.units as u
 import numpy as np
 
-from orbits import display, inputs, units
+from orbits import display, ephemeris, inputs, units
 from orbits.constants import Body
-from orbits.core import elements
+from orbits.core import elements, frames
 from orbits.core import lambert as lambert_core
 from orbits.core.errors import OrbitDomainError
 from orbits.tables import quantity_table
+
+if TYPE_CHECKING:
+    from orbits.orbit import Orbit
+
+#: the Sun's GM (m3/s2) of transfers between bodies: JPL DE430's, the mass that goes with the ephemeris
+SUN_GM = ephemeris.DE430_GM["Sun"]
+#: the north pole of the ecliptic of J2000 in the ICRF: a prograde transfer's angular momentum points to its side
+ECLIPTIC_POLE = frames.ecliptic_to_equatorial(np.array([0.0, 0.0, 1.0]))
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -35,6 +51,7 @@ class LambertTransfer(display.Displayed):
 
     r1, r2 (m), tof (s), mu (m3/s2): the problem; revolutions and branch: which solution; v1, v2 (m/s),
     angle (rad, in (0, 2 pi), not counting complete revolutions), x (Izzo's variable) and a (m): the solution.
+    departure, arrival: the bodies' ephemeris states (heliocentric ICRF) for a transfer between bodies, else None.
     """
 
     r1: np.ndarray
@@ -48,6 +65,8 @@ class LambertTransfer(display.Displayed):
     angle: np.ndarray
     x: np.ndarray
     a: np.ndarray
+    departure: "ephemeris.BodyState | None" = None
+    arrival: "ephemeris.BodyState | None" = None
 
     @property
     def shape(self) -> tuple[int, ...]:
@@ -100,6 +119,67 @@ class LambertTransfer(display.Displayed):
         """tof (s)."""
         return self.tof << units.S
 
+    # ---- between bodies: patched conics -------------------------------------------------------------------
+    def _bodies(self, quantity):
+        if self.departure is None:
+            raise OrbitDomainError(f"{quantity} needs the bodies at both ends: lambert('Earth', 'Mars', depart=..., "
+                                   f"arrive=...)")
+        return self.departure, self.arrival
+
+    @cached_property
+    def departure_v_inf(self) -> u.Quantity:
+        """|v1 - v_departure body| (m/s): the hyperbolic excess speed at launch."""
+        start, _ = self._bodies("the departure v_inf")
+        return np.linalg.norm(self.v1_si - start.v_si, axis=-1) << units.M_PER_S
+
+    @cached_property
+    def c3(self) -> u.Quantity:
+        """C3 = |v1 - v_departure body|**2 (m2/s2): the launch energy."""
+        return self.departure_v_inf**2
+
+    @cached_property
+    def arrival_v_inf(self) -> u.Quantity:
+        """|v2 - v_arrival body| (m/s): the hyperbolic excess speed on arrival."""
+        _, end = self._bodies("the arrival v_inf")
+        return np.linalg.norm(self.v2_si - end.v_si, axis=-1) << units.M_PER_S
+
+    # ---- the transfer's elements ------------------------------------------------------------------------------
+    @cached_property
+    def orbit(self) -> "Orbit":
+        """The transfer conic as an Orbit at departure: in the ecliptic of J2000 between bodies (their ICRF states
+        turned), else in the frame of r1 and r2."""
+        from orbits.orbit import Orbit
+
+        r, v = self.r1, self.v1_si
+        if self.departure is not None:
+            r, v = frames.equatorial_to_ecliptic(r), frames.equatorial_to_ecliptic(v)
+        return Orbit.from_vectors(self.mu << units.M3_PER_S2, r << units.M, v << units.M_PER_S)
+
+    @cached_property
+    def inclination(self) -> u.Quantity:
+        """i (rad) of the transfer plane (to the ecliptic of J2000 between bodies)."""
+        return self.orbit.inclination
+
+    @cached_property
+    def ascending_node(self) -> u.Quantity:
+        """Omega (rad) of the transfer conic."""
+        return self.orbit.ascending_node
+
+    @cached_property
+    def argument_of_periapsis(self) -> u.Quantity:
+        """omega (rad) of the transfer conic."""
+        return self.orbit.argument_of_periapsis
+
+    @cached_property
+    def periapsis_distance(self) -> u.Quantity:
+        """q (m) of the transfer conic."""
+        return self.orbit.periapsis_distance
+
+    @cached_property
+    def departure_true_anomaly(self) -> u.Quantity:
+        """nu (rad) at departure."""
+        return self.orbit.true_anomaly
+
     def __repr__(self) -> str:
         """E.g. "LambertTransfer(|v1| = 30.81575 km / s, |v2| = 18.92596 km / s, theta = 90 deg, a = 1.075769 AU,
         e = 0.481889, tof = 200 d, about Sun)" (on one line)."""
@@ -112,6 +192,10 @@ class LambertTransfer(display.Displayed):
                  f"about {display.body_name(self.mu)}"]
         if np.any(self.revolutions > 0):
             parts.insert(-1, f"N = {display.values_text(self.revolutions)} ({self.branch})")
+        if self.departure is not None:
+            start, end = (f"{s.body} {ephemeris.tdb_iso(s.epoch)[:10]}" for s in (self.departure, self.arrival))
+            parts[-1] = f"{start} -> {end}, about the Sun"
+            parts.insert(0, "C3 = " + display.summary(self.c3, digits=4))
         return display.one_line("LambertTransfer", *parts)
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
@@ -119,57 +203,110 @@ class LambertTransfer(display.Displayed):
         return quantity_table(lambda name: getattr(self, name), NAMES, only)
 
 
-NAMES = ["v1", "v2", "departure_speed", "arrival_speed", "transfer_angle", "total_angle", "semi_major_axis",
-         "eccentricity", "time_of_flight"]
+NAMES = ["c3", "departure_v_inf", "arrival_v_inf", "v1", "v2", "departure_speed", "arrival_speed", "transfer_angle",
+         "total_angle", "semi_major_axis", "eccentricity", "inclination", "ascending_node", "argument_of_periapsis",
+         "periapsis_distance", "departure_true_anomaly", "time_of_flight"]
 
 
 def lambert(
-    r1: u.Quantity,
-    r2: u.Quantity,
-    tof: u.Quantity,
+    r1: u.Quantity | str,
+    r2: u.Quantity | str,
+    tof: u.Quantity | None = None,
     primary: Body | str | u.Quantity = "Sun",
     revolutions: int | np.ndarray = 0,
     branch: str | None = None,
     prograde: bool | None = None,
     normal: np.ndarray | u.Quantity | None = None,
+    *,
+    depart: Any = None,
+    arrive: Any = None,
+    source: str = "auto",
 ) -> LambertTransfer:
     """Solve Lambert's problem: the conic about `primary` from r1 (length, (..., 3)) to r2 in the time tof (time).
 
     Parameters
     ----------
-    r1, r2 : Quantity ['length'], (..., 3), positions relative to the primary's centre.
+    r1, r2 : Quantity ['length'], (..., 3), positions relative to the primary's centre; or two ephemeris bodies
+        by name ("Earth", "Mars", see orbits.ephemeris.points()), with `depart` and `arrive` instead of `tof`.
     tof : Quantity ['time'] > 0, time of flight.
-    primary : a catalogue body (or its name), a mass or a GM (Quantity); default the Sun.
+    primary : a catalogue body (or its name), a mass or a GM (Quantity); default the Sun. Between bodies it is
+        the Sun with DE430's GM (SUN_GM), the mass that goes with the ephemeris.
     revolutions : int >= 0 (or an array), complete revolutions before arrival.
     branch : "left" or "right": which of the two solutions when revolutions > 0 (Izzo's branches; "right", the
         default, is lamberthub's and hapsira's low_path=True). Given with no revolution at all, an error: a
         zero-revolution transfer has one solution.
-    prograde : motion counterclockwise about +z (True, the default) or clockwise (False). Given with `normal`, an
-        error: the normal sets the sense of motion.
+    prograde : motion counterclockwise about +z (True, the default) or clockwise (False); between bodies, about
+        the ecliptic pole of J2000. Given with `normal`, an error: the normal sets the sense of motion.
     normal : 3-vector (any unit, or plain numbers), optional: the direction the orbit's angular momentum points
         to (its side of the r1, r2 plane). Required when r1 and r2 are opposite (transfer angle exactly pi).
+    depart, arrive : dates (astropy Time or ISO strings, UTC unless they name a scale) of a transfer between
+        bodies; the time of flight is their difference.
+    source : the ephemeris between bodies: "auto", "de421" or "builtin".
 
     Returns
     -------
-    LambertTransfer
+    LambertTransfer; between bodies it also has c3, departure_v_inf and arrival_v_inf, the patched-conic excess
+    energy and speeds, and its elements are in the ecliptic of J2000.
 
     Raises OrbitDomainError for an infeasible revolution count (naming the minimum time) or bad input, and
     DegenerateOrbitError for collinear r1 and r2 without a usable normal. Accuracy: see orbits.core.lambert.
     """
+    branch, prograde = _sense(revolutions, branch, prograde, normal)
+    if isinstance(r1, str) or isinstance(r2, str):
+        return _between_bodies(r1, r2, tof, primary, revolutions, branch, prograde, normal, depart, arrive, source)
+    if depart is not None or arrive is not None:
+        raise OrbitDomainError("depart and arrive are dates of a transfer between bodies: give r1 and r2 as body "
+                               "names ('Earth', 'Mars'), or positions with tof")
+    if tof is None:
+        raise OrbitDomainError("give the time of flight tof (or bodies with depart and arrive dates)")
     start = inputs.vector(r1, units.M, "position r1")
     end = inputs.vector(r2, units.M, "position r2")
-    seconds = inputs.positive(tof, units.S, "time of flight")
     mu = inputs.gravitational_parameter(primary, "primary mass M")
     direction = None if normal is None else np.asarray(getattr(normal, "value", normal), dtype=float)
-    branch, prograde = _sense(revolutions, branch, prograde, normal)
+    return _solve(start, end, inputs.positive(tof, units.S, "time of flight"), mu, revolutions, branch, prograde,
+                  direction)
+
+
+def _solve(start, end, seconds, mu, revolutions, branch, prograde, direction, departure=None, arrival=None):
     solution = lambert_core.solve(start, end, seconds, mu, revolutions, branch, prograde, direction)
     shape = solution.x.shape
     vector_shape = (*shape, 3)
     return LambertTransfer(
         np.broadcast_to(start, vector_shape), np.broadcast_to(end, vector_shape), np.broadcast_to(seconds, shape),
         np.broadcast_to(mu, shape), np.broadcast_to(np.asarray(revolutions), shape), branch,
-        solution.v1, solution.v2, solution.angle, solution.x, solution.semi_major_axis,
+        solution.v1, solution.v2, solution.angle, solution.x, solution.semi_major_axis, departure, arrival,
     )
+
+
+def _between_bodies(departure, target, tof, primary, revolutions, branch, prograde, normal, depart, arrive, source):
+    """The transfer from body `departure` on the date `depart` to body `target` on `arrive`, about the Sun."""
+    if not (isinstance(departure, str) and isinstance(target, str)):
+        raise OrbitDomainError("give both ends as body names ('Earth', 'Mars') or both as positions")
+    if tof is not None:
+        raise OrbitDomainError("between bodies the time of flight is arrive - depart: give the dates, not tof")
+    if depart is None or arrive is None:
+        raise OrbitDomainError(f"a transfer from {departure} to {target} needs the dates depart=... and arrive=...")
+    if not (isinstance(primary, str) and primary.strip().lower() == "sun"):
+        raise OrbitDomainError("a transfer between bodies is about the Sun (their states are heliocentric)")
+    names = [ephemeris.point_name(b) for b in (departure, target)]
+    for name in names:
+        if name in ("Sun", "solar system barycentre"):
+            raise OrbitDomainError(f"lambert: {name} cannot be an end of a transfer about the Sun; give planets, "
+                                   f"Pluto, the Moon, Ceres or Vesta")
+    if names[0] == names[1]:
+        raise OrbitDomainError(f"lambert: both ends are {names[0]}")
+    start = ephemeris.state(names[0], depart, "Sun", source=source)
+    end = ephemeris.state(names[1], arrive, "Sun", source=source)
+    if not (start.epoch.isscalar and end.epoch.isscalar):
+        raise OrbitDomainError("lambert between bodies takes one departure and one arrival date")
+    seconds = ((end.epoch.jd1 - start.epoch.jd1) + (end.epoch.jd2 - start.epoch.jd2)) * 86_400.0
+    if not seconds > 0:
+        raise OrbitDomainError(f"arrive ({ephemeris.tdb_iso(end.epoch)} TDB) must be after depart "
+                               f"({ephemeris.tdb_iso(start.epoch)} TDB)")
+    direction = (ECLIPTIC_POLE if prograde else -ECLIPTIC_POLE) if normal is None else np.asarray(
+        getattr(normal, "value", normal), dtype=float)
+    return _solve(start.r_si, end.r_si, np.asarray(seconds, dtype=float), np.asarray(SUN_GM), revolutions, branch,
+                  prograde, direction, start, end)
 
 
 def _sense(revolutions, branch, prograde, normal) -> tuple[str, bool]:

@@ -45,15 +45,10 @@ from astropy.time import Time, TimeDelta
 from astropy.utils.masked import Masked
 
 from orbits import display, ephemeris, inputs, units
-from orbits.core import frames
 from orbits.core.errors import OrbitDomainError
-from orbits.manoeuvres.lambert import lambert
+from orbits.manoeuvres.lambert import ECLIPTIC_POLE, SUN_GM, lambert
 from orbits.tables import quantity_table
 
-#: the Sun's GM (m3/s2) used for the transfers: JPL DE430's, the mass that goes with the ephemeris
-SUN_GM = ephemeris.DE430_GM["Sun"]
-#: the north pole of the ecliptic of J2000 in the ICRF: a prograde transfer's angular momentum points to its side
-ECLIPTIC_POLE = frames.ecliptic_to_equatorial(np.array([0.0, 0.0, 1.0]))
 #: the largest grid computed (cells): 4 million cells take about 0.5 GB of float64 arrays
 MAX_CELLS = 4_000_000
 KM2_PER_S2 = u.km**2 / u.s**2
@@ -100,10 +95,21 @@ def _date_text(when: Time) -> str:
     return f"{when.tdb.iso[:10]}"
 
 
+def _edges(row: int, col: int, shape: tuple[int, int]) -> tuple[str, ...]:
+    """The sides of an (arrival, launch) grid the cell (row, col) lies on, along axes of more than one date."""
+    sides = []
+    for index, size, axis in ((col, shape[1], "launch"), (row, shape[0], "arrival")):
+        if size > 1 and index in (0, size - 1):
+            sides.append(f"{'first' if index == 0 else 'last'} {axis} date")
+    return tuple(sides)
+
+
 @dataclass(frozen=True, eq=False, repr=False)
 class PorkchopMinimum(display.Displayed):
     """The grid cell where one figure of merit (`kind`: C3, arrival v_inf or total v_inf) is least: its dates and
-    the transfer's C3 (m2/s2), departure and arrival v_inf (m/s) and time of flight (s), SI floats."""
+    the transfer's C3 (m2/s2), departure and arrival v_inf (m/s) and time of flight (s), SI floats. `edges` names
+    the sides of the grid the cell lies on ("first launch date", ...; only along an axis of more than one date):
+    a least value there may be no minimum at all, the merit still falling outside the windows."""
 
     kind: str
     launch: Time
@@ -112,6 +118,15 @@ class PorkchopMinimum(display.Displayed):
     departure_v_inf_si: float
     arrival_v_inf_si: float
     tof_si: float
+    edges: tuple[str, ...] = ()
+
+    @property
+    def edge_note(self) -> str | None:
+        """A sentence when the cell lies on the grid's edge, else None."""
+        if not self.edges:
+            return None
+        return (f"least {self.kind} on the grid's edge ({' and '.join(self.edges)}): the minimum may lie outside "
+                f"the windows")
 
     @property
     def c3(self) -> u.Quantity:
@@ -161,7 +176,8 @@ class PorkchopMinimum(display.Displayed):
             "PorkchopMinimum", self.kind, f"launch {_date_text(self.launch)}", f"arrival {_date_text(self.arrival)}",
             "C3 = " + display.summary(self.c3, digits=4), "v_inf arrival = " + display.summary(self.arrival_v_inf,
                                                                                             digits=4),
-            "tof = " + display.summary(self.time_of_flight, digits=4))
+            "tof = " + display.summary(self.time_of_flight, digits=4),
+            f"on the grid's edge ({', '.join(self.edges)})" if self.edges else "")
 
 
 #: what PorkchopMinimum.quantities() lists
@@ -313,7 +329,8 @@ class Porkchop(display.Displayed):
         row, col = np.unravel_index(flat, self.shape)
         return PorkchopMinimum(kind, self.launch_dates[col], self.arrival_dates[row],
                                float(self._departure_v_inf[row, col] ** 2), float(self._departure_v_inf[row, col]),
-                               float(self._arrival_v_inf[row, col]), float(self._tof[row, col]))
+                               float(self._arrival_v_inf[row, col]), float(self._tof[row, col]),
+                               _edges(row, col, self.shape))
 
     @cached_property
     def minimum_c3(self) -> PorkchopMinimum:

@@ -27,7 +27,7 @@ PROJECTIONS = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2), "3d": (0, 1, 2)}
 CIRCULAR = 1e-3
 _LONG = 100.0  # an ellipse with Q > _LONG q is drawn, like an open orbit, only within the picture's window
 _AXES = "xyz"
-_MARKERS = {"periapsis": "o", "apoapsis": "s", "body now": "."}
+_MARKERS = {"periapsis": "o", "apoapsis": "s", "position": "."}
 #: the fields of an orbit that the pictures read (those of orbits.Orbit)
 ELEMENTS = ("mu", "p", "e", "inc", "raan", "argp", "nu")
 
@@ -62,7 +62,7 @@ class Conic:
 
     @property
     def state(self) -> tuple[np.ndarray, np.ndarray]:
-        """(r (m), v (m/s)), each of shape (3,), of the body now."""
+        """(r (m), v (m/s)), each of shape (3,), of the body at true anomaly nu."""
         return elements.elements_to_state(self.p, self.e, self.inc, self.raan, self.argp, self.nu, self.mu)
 
     def position_after(self, seconds: float) -> np.ndarray:
@@ -99,10 +99,11 @@ def conic_points(p: float, e: float, r_max: float, samples: int = 721) -> tuple[
 
 
 def eccentricity_text(e: float) -> str:
-    """e with the digits that matter: "1 + 6.4e-07" or "1 - 1e-06" near a parabola, else 4 digits."""
+    """e with the digits that matter, typeset: "1 + 6.4$\\times10^{-7}$" or "1 - $10^{-6}$" near a parabola, else
+    4 digits."""
     if e != 1 and abs(e - 1) < 1e-3:
-        return f"1 {'+' if e > 1 else '-'} {abs(e - 1):.2g}"
-    return f"{e:.4g}"
+        return f"1 {'+' if e > 1 else '-'} {display.number_math(abs(e - 1), 2)}"
+    return display.number(e, 4)
 
 
 # ---- the primary at the focus --------------------------------------------------------------------------------
@@ -152,7 +153,7 @@ def draw_primary(ax: Any, primary: Body | None, axes_index: tuple[int, ...], sca
                                      label=f"{name} (to scale)" if not tiny else None))
     if tiny:
         ax.plot(0, 0, marker="*", ms=12, color=color, mec="0.3", ls="none", zorder=4,
-                label=f"{name} (star not to scale; radius {display.quantity_text(primary.radius << u.m, digits=3)})"
+                label=f"{name} (not to scale: radius {display.quantity_math(primary.radius << u.m, digits=3)})"
                 if radius > 0 else name)
 
 
@@ -166,14 +167,16 @@ def orbit_plane(
     unit: u.UnitBase | None = None,
     label: str | None = None,
     primary: Any = None,
+    epoch: Any = None,
 ) -> tuple[Any, Any]:
     """Draw a single orbit (an orbits.Orbit of shape ()) face on, in its own plane (perifocal frame: periapsis along
     +x, primary at the origin).
 
     The picture of `orbits` (the primary to scale and named, apsides where e > 1e-3, open and very long orbits
-    within a window, a warning for a closest approach inside the primary, the legend outside) for the same conic
-    turned into the xy plane, with the centre and empty focus of an ellipse drawn whole and the body's positions
-    at `times` (a time Quantity array) later, when given.
+    within a window, a warning for a closest approach inside the primary, the legend outside, the title naming
+    the orbit and the time of its position: `epoch` if given, else t0) for the same conic turned into the xy
+    plane, with the centre and empty focus of an ellipse drawn whole and the body's positions at `times` (a time
+    Quantity array) later, when given.
     """
     shape = batch_shape(orbit)
     if shape != ():
@@ -186,7 +189,7 @@ def orbit_plane(
     size = _extent([("", flat)], furthest)
     unit, _ = frame.length_unit(size, unit)
     drawn = draw_orbits(flat, ax=ax, labels=None if label is None else [label], unit=unit, primary=primary,
-                        window=size << u.m if later else None)
+                        window=size << u.m if later else None, epoch=epoch, what=f"{_orbit_text(conic)} (face on)")
     ax, scale = drawn.axes, drawn.scale
     p, e = conic.p, conic.e
     whole = e < 1 and p / (1 - e) <= _LONG * p / (1 + e)
@@ -196,10 +199,13 @@ def orbit_plane(
         ax.plot(-2 * c * scale, 0, marker="x", color="gray", ls="none", label="empty focus")
     if later:
         points = np.array(later) * scale
-        ax.plot(points[:, 0], points[:, 1], marker=".", color="k", ls="none", alpha=0.6, label="body at given times")
-    ax.set_xlabel(f"x toward periapsis [{display.unit_text(unit)}]")
-    ax.set_ylabel(f"y, along the motion at periapsis [{display.unit_text(unit)}]")
+        after = display.summary(np.asarray(seconds, dtype=float) << u.s, digits=4)
+        ax.plot(points[:, 0], points[:, 1], marker="d", ms=5, color="k", ls="none", alpha=0.7, gid="later",
+                label=f"body {after} later")
+    ax.set_xlabel(f"x toward periapsis [{display.unit_math(unit)}]")
+    ax.set_ylabel(f"y, along the motion at periapsis [{display.unit_math(unit)}]")
     frame.legend_beside(ax)
+    drawn.retitle()
     return drawn.figure, ax
 
 
@@ -210,7 +216,8 @@ def orbit_plane(
 class Drawing:
     """What draw_orbits chose and drew, for a picture that adds to it: the figure and axes, the length unit of the
     axes and the factor taking metres to it, the curve of each orbit or trajectory in the order given (an array of
-    orbits gives one per orbit), and the notes on closest approaches inside the primary (also in the title)."""
+    orbits gives one per orbit), the notes on closest approaches inside the primary, and the title (its lines,
+    the notes last; a picture that widens the legend sets it again: frame.title wraps to the room left)."""
 
     figure: Any
     axes: Any
@@ -218,6 +225,11 @@ class Drawing:
     scale: float
     curves: tuple[Any, ...]
     notes: tuple[str, ...]
+    title: str
+
+    def retitle(self) -> None:
+        """Set the title again, wrapped to the room the axes have now (red when there are notes)."""
+        frame.title(self.axes, self.title, color="C3" if self.notes else "k")
 
 
 def orbits(
@@ -228,6 +240,7 @@ def orbits(
     labels: Sequence[str] | None = None,
     unit: u.UnitBase | None = None,
     window: u.Quantity | None = None,
+    epoch: Any = None,
 ) -> tuple[Any, Any]:
     """Draw any number of Orbits (arrays of orbits included) and trajectories ((n, 3) length Quantities, e.g.
     from an integrator) about one primary, in its inertial frame, each in its own colour.
@@ -236,11 +249,13 @@ def orbits(
     a star marks it where the disc would be too small to see). projection: "xy", "xz", "yz" or "3d" (then `ax`,
     if given, must be a 3D Axes). Ellipses are drawn whole, open orbits (and ellipses with Q > 100 q) only out to
     the picture's half-size `window` (default: the largest closed orbit or trajectory, or 10 q). Periapsis
-    (and apoapsis) are marked where e > 1e-3; each body's current position is a dot. A closest approach inside
-    the primary gives an InsideBodyWarning and a note in the title. The legend sits outside the axes.
+    (and apoapsis) are marked where e > 1e-3; each body's position at the orbit's true anomaly is a dot, "at t0"
+    or, given the `epoch` of the elements (an astropy Time or ISO string), at that date. The title names the
+    orbits and that time; a closest approach inside the primary gives an InsideBodyWarning and a note in red
+    under it. The legend sits outside the axes.
     """
     drawn = draw_orbits(*items, ax=ax, projection=projection, primary=primary, labels=labels, unit=unit,
-                        window=window)
+                        window=window, epoch=epoch)
     return drawn.figure, drawn.axes
 
 
@@ -252,8 +267,11 @@ def draw_orbits(
     labels: Sequence[str] | None = None,
     unit: u.UnitBase | None = None,
     window: u.Quantity | None = None,
+    epoch: Any = None,
+    what: str | None = None,
 ) -> Drawing:
-    """The picture of `orbits` (same arguments), returned with what it chose: a Drawing."""
+    """The picture of `orbits` (same arguments), returned with what it chose: a Drawing. `what` replaces the
+    title's account of what is drawn (the time of the positions follows it)."""
     if projection not in PROJECTIONS:
         raise ValueError(f"projection {projection!r} is not one of {', '.join(PROJECTIONS)}")
     entries = _items(items, labels)
@@ -265,6 +283,7 @@ def draw_orbits(
     focus = primary_body(primary, gm)
     size = _extent(entries, 0.0 if window is None else units.to_si(window, units.M, "window"))
     unit, scale = frame.length_unit(size, unit)
+    when = "t0" if epoch is None else frame.date_text(epoch)
     marked, notes, curves = set(), [], []
     for (label, item), color in zip(entries, frame.colors(len(entries))):
         if isinstance(item, Conic):
@@ -277,16 +296,51 @@ def draw_orbits(
         if isinstance(item, Conic):
             _mark_orbit(ax, item, color, axes_index, scale, marked, whole)
         if focus is not None and closest < focus.radius:
-            notes.append(f"{label}: closest approach {display.quantity_text(closest << u.m, digits=4)} is inside "
-                         f"{focus.name} (radius {display.quantity_text(focus.radius << u.m, digits=4)})")
+            notes.append(_inside_note(label, closest, focus))
     draw_primary(ax, focus, axes_index, scale, size)
-    _marker_legend(ax, marked, len(axes_index))
+    _marker_legend(ax, marked, len(axes_index), when)
     _finish_frame(ax, projection, unit)
     for note in notes:
-        warnings.warn(note, InsideBodyWarning, stacklevel=3)
-    if notes:
-        ax.set_title("\n".join(notes), color="C3", fontsize="small")
-    return Drawing(fig, ax, unit, scale, tuple(curves), tuple(notes))
+        warnings.warn(note(display.quantity_text), InsideBodyWarning, stacklevel=3)
+    about = [what or _what(entries, focus, labels)]
+    if "position" in marked:
+        about.append(f"{'the body' if len(entries) == 1 else 'each body'} at {when}")
+    shown = [note(display.quantity_math) for note in notes]
+    drawing = Drawing(fig, ax, unit, scale, tuple(curves), tuple(shown), "\n".join([*about, *shown]))
+    drawing.retitle()
+    return drawing
+
+
+def _inside_note(label: str, closest: float, focus: Body):
+    """The note on a closest approach (m) inside the primary, written with a quantity formatter of orbits.display
+    (quantity_text for the warning, quantity_math for the title)."""
+    return lambda written: (f"{label}: closest approach {written(closest << u.m, digits=4)} is inside {focus.name} "
+                            f"(radius {written(focus.radius << u.m, digits=4)})")
+
+
+def _orbit_text(conic: Conic) -> str:
+    """"Orbit about Earth: a = 26600 km, e = 0.74, i = 63.4 deg": one conic as a title names it (its primary as
+    the picture draws it: the catalogue body within 2 % of its GM, so a planet's heliocentric orbit, whose mu
+    holds the planet's mass too, is about the Sun)."""
+    known = catalogue_body(conic.mu)
+    name = frame.in_a_sentence(known.name) if known is not None else display.body_name(conic.mu)
+    tilt = f", i = {display.quantity_math(conic.inc << u.rad, digits=4)}" if conic.inc else ""
+    return f"{'Orbit' if conic.e < 1 else 'Trajectory'} about {name}: {_size_text(conic)}{tilt}"
+
+
+def _what(entries: list, focus: Body | None, labels: Sequence[str] | None) -> str:
+    """What the title says is drawn: one orbit in full, else the few labelled ones by name, else how many orbits
+    and trajectories, about what."""
+    about = f" about {focus.name}" if focus is not None else ""
+    if len(entries) == 1 and isinstance(entries[0][1], Conic) and labels is None:
+        return _orbit_text(entries[0][1])
+    if labels is not None and len(entries) == len(labels) <= 4:
+        return ", ".join(labels[:-1]) + (" and " if len(labels) > 1 else "") + labels[-1] + about
+    conics = sum(isinstance(item, Conic) for _, item in entries)
+    parts = [f"{conics} orbit{'s' if conics > 1 else ''}" if conics else "",
+             f"{len(entries) - conics} trajectories" if len(entries) - conics > 1 else
+             ("1 trajectory" if len(entries) > conics else "")]
+    return " and ".join(part for part in parts if part) + about
 
 
 def _items(items, labels):
@@ -311,7 +365,7 @@ def _size_text(conic):
     """"a = 7000 km, e = 0.1" (q for an open orbit): what tells one orbit of an array from the others."""
     e = conic.e
     size = twobody.semi_major_axis(conic.p, e) if e < 1 else twobody.periapsis_distance(conic.p, e)
-    return f"{'a' if e < 1 else 'q'} = {display.quantity_text(size << u.m, digits=4)}, e = {eccentricity_text(e)}"
+    return f"{'a' if e < 1 else 'q'} = {display.quantity_math(size << u.m, digits=4)}, e = {eccentricity_text(e)}"
 
 
 def _extent(entries, times_window):
@@ -355,8 +409,8 @@ def _apsides(conic):
 
 
 def _mark_orbit(ax, conic, color, axes_index, scale, marked, whole):
-    """Apsides (where e > 1e-3; the apoapsis only on a whole ellipse) and the body's current position, in the
-    orbit's colour."""
+    """Apsides (where e > 1e-3; the apoapsis only on a whole ellipse) and the body's position at its true anomaly,
+    in the orbit's colour."""
     if conic.e > CIRCULAR:
         for name, point in _apsides(conic).items():
             if name == "apoapsis" and not whole:
@@ -365,28 +419,32 @@ def _mark_orbit(ax, conic, color, axes_index, scale, marked, whole):
             ax.plot(*([point[i] * scale] for i in axes_index), marker=_MARKERS[name], ms=6, mfc="none", color=color,
                     ls="none", gid=name)
     now, _ = conic.state
-    marked.add("body now")
-    ax.plot(*([now[i] * scale] for i in axes_index), marker=_MARKERS["body now"], ms=9, color=color, ls="none",
-            gid="body now")
+    marked.add("position")
+    ax.plot(*([now[i] * scale] for i in axes_index), marker=_MARKERS["position"], ms=9, color=color, ls="none",
+            gid="position")
 
 
-def _marker_legend(ax, marked, dimensions):
-    """One gray legend entry per kind of marker drawn (the markers themselves take their orbit's colour)."""
-    for name in ("periapsis", "apoapsis", "body now"):
+def _marker_legend(ax, marked, dimensions, when):
+    """One gray legend entry per kind of marker drawn (the markers themselves take their orbit's colour); the
+    positions are those at `when` ("t0" or a date)."""
+    for name in ("periapsis", "apoapsis", "position"):
         if name in marked:
             ax.plot(*([] for _ in range(dimensions)), marker=_MARKERS[name], ms=6, color="0.3", ls="none",
-                    mfc="none" if name != "body now" else "0.3", label=name)
+                    mfc="none" if name != "position" else "0.3",
+                    label=name if name != "position" else f"body at {when}")
 
 
 def _finish_frame(ax, projection, unit):
-    """Axis labels with the unit, equal scales, grid, and the legend outside the axes on the right."""
+    """Axis labels with the unit (clear of the tick labels in 3-D), equal scales, grid, and the legend outside
+    the axes on the right."""
     names = [_AXES[i] for i in PROJECTIONS[projection]]
-    text = display.unit_text(unit)
-    ax.set_xlabel(f"{names[0]} [{text}]")
-    ax.set_ylabel(f"{names[1]} [{text}]")
+    text = display.unit_math(unit)
+    pad = {"labelpad": 18} if projection == "3d" else {}
+    ax.set_xlabel(f"{names[0]} [{text}]", **pad)
+    ax.set_ylabel(f"{names[1]} [{text}]", **pad)
     if projection == "3d":
-        ax.set_zlabel(f"{names[2]} [{text}]")
-        ax.set_box_aspect((1, 1, 1))
+        ax.set_zlabel(f"{names[2]} [{text}]", **pad)
+        ax.set_box_aspect((1, 1, 1), zoom=0.9)  # the labels inside the figure
         _equal_3d(ax)
     else:
         ax.set_aspect("equal", adjustable="datalim")

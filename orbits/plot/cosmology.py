@@ -37,12 +37,14 @@ def scale_factor_curves(
         ax.plot(times.to_value(unit), model.scale_factor(times).to_value(u.one), color=color, ls=style, lw=1.6,
                 label=label)
         turnaround = model.turnaround_time.to_value(unit)
+        when = {name: display.quantity_math(time, digits=4, unit=unit)
+                for name, time in (("turnaround", model.turnaround_time), ("crunch", model.big_crunch_time))}
         if turnaround <= end:
             ax.plot(turnaround, model.model.max_scale_factor, marker="o", color=color, ls="none", clip_on=False,
-                    label=f"{label}: turnaround, t = {turnaround:.4g} {display.unit_text(unit)}")
+                    label=f"{label}: turnaround, t = {when['turnaround']}")
         if crunch <= end:
             ax.plot(crunch, 1e-2 if log else 0.0, marker="X", ms=9, color=color, ls="none", clip_on=False,
-                    label=f"{label}: big crunch, t = {crunch:.4g} {display.unit_text(unit)}")
+                    label=f"{label}: big crunch, t = {when['crunch']}")
     ax.axhline(1.0, color="gray", lw=0.8, ls=":", label="today, a = 1")
     ax.set_xlim(0, end)
     if log:
@@ -50,11 +52,19 @@ def scale_factor_curves(
         ax.set_ylim(bottom=1e-2)
     else:
         ax.set_ylim(bottom=0)
-    ax.set_xlabel(f"time since the big bang [{display.unit_text(unit)}]")
+    ax.set_xlabel(f"time since the big bang [{display.unit_math(unit)}]")
     ax.set_ylabel("scale factor a [dimensionless]")
     ax.grid(alpha=0.3, which="major")
     frame.legend_outside(ax)
+    frame.title(ax, f"Scale factor a(t) of {_names(models)}, from the big bang to "
+                    f"{display.quantity_math(t_max, digits=4, unit=unit)}")
     return fig, ax
+
+
+def _names(models: dict[str, Any]) -> str:
+    """The models' labels as a title lists them."""
+    names = list(models)
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
 
 
 def _redshift_grid(z_max, samples):
@@ -74,12 +84,14 @@ def hubble_diagram(
     order = [label for label in models if label != emphasis] + ([emphasis] if emphasis in models else [])
     for k, label in enumerate(order):
         style = dict(color="k", lw=2.6, zorder=3) if label == emphasis else dict(color=f"C{k}", lw=1.4)
-        ax.plot(z, models[label].distance_modulus(z).to_value(u.one), label=label, **style)
+        ax.plot(z, models[label].distance_modulus(z).to_value(u.mag), label=label, **style)
     ax.set_xscale("log")
     ax.set_xlabel("redshift z")
     ax.set_ylabel("distance modulus m - M [mag]")
     ax.grid(alpha=0.3, which="both")
-    frame.legend_outside(ax)
+    frame.legend_outside(ax, columns=1)
+    frame.title(ax, f"Hubble diagram of {_names(models)}, z = {display.number(z[0], 3)} to z = "
+                    f"{display.number(z_max, 4)}")
     return fig, ax
 
 
@@ -90,17 +102,18 @@ def distance_curves(cosmology: Any, z_max: float = 10.0, ax: Any = None, samples
     fig, ax = frame.axes(ax)
     z = _redshift_grid(z_max, samples)
     curves = {
-        "luminosity distance D_L": cosmology.luminosity_distance(z),
-        "transverse comoving distance D_M": cosmology.transverse_comoving_distance(z),
-        "angular-diameter distance D_A": cosmology.angular_diameter_distance(z),
+        "luminosity distance $D_L$": cosmology.luminosity_distance(z),
+        "transverse comoving distance $D_M$": cosmology.transverse_comoving_distance(z),
+        "angular-diameter distance $D_A$": cosmology.angular_diameter_distance(z),
     }
     unit = u.Mpc
     for k, (label, distance) in enumerate(curves.items()):
         ax.loglog(z, distance.to_value(unit), color=f"C{k}", label=label)
     ax.set_xlabel("redshift z")
-    ax.set_ylabel(f"distance [{display.unit_text(unit)}]")
+    ax.set_ylabel(f"distance [{display.unit_math(unit)}]")
     ax.grid(alpha=0.3, which="both")
-    frame.legend_outside(ax)
+    frame.legend_outside(ax, columns=1)
+    frame.title(ax, f"Distances to z = {display.number(z_max, 4)}: $D_L$ = (1 + z)$^2$ $D_A$")
     return fig, ax
 
 
@@ -120,13 +133,15 @@ def cosmology_overview(cosmology: Any, label: str, z_max: float = 10.0) -> tuple
     distance_curves(cosmology, z_max, ax=axes[1])
     references = {
         "Planck 2018 (flat, no radiation)": Cosmology.planck18(),
-        "Einstein-de Sitter, same H0": Cosmology.einstein_de_sitter(cosmology.hubble_constant),
+        "Einstein-de Sitter, same $H_0$": Cosmology.einstein_de_sitter(cosmology.hubble_constant),
     }
     same = [name for name, other in references.items() if _same_universe(other, cosmology)]
     models = {"this universe" + (f" = {same[0]}" if same else ""): cosmology,
               **{name: other for name, other in references.items() if name not in same}}
     hubble_diagram(models, z_max, ax=axes[2], emphasis=next(iter(models)))
-    fig.suptitle(label)
+    for ax, name in zip(axes, ("Scale factor", "Distances", "Hubble diagram"), strict=True):
+        frame.title(ax, name)
+    frame.title(fig, label, size="large")
     return fig, axes
 
 
@@ -146,7 +161,7 @@ def _scale_factor_from_today(cosmology: Any, z_max: float, ax: Any) -> None:
     ax.axhline(1.0, color="gray", lw=0.8, ls=":", label="today, a = 1")
     ax.axvline(0.0, color="gray", lw=0.8, ls=":")
     ax.set_yscale("log")
-    ax.set_xlabel(f"time from today [{display.unit_text(unit)}]")
+    ax.set_xlabel(f"time from today [{display.unit_math(unit)}]")
     ax.set_ylabel("scale factor a [dimensionless]")
     ax.grid(alpha=0.3, which="both")
     frame.legend_outside(ax)

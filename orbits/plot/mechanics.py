@@ -10,6 +10,7 @@ from typing import Any
 import astropy.units as u
 import numpy as np
 
+from orbits import display
 from orbits.core.oscillations import pendulum_period, pendulum_period_series
 from orbits.plot import frame
 
@@ -19,12 +20,13 @@ def _axes(ax):
     return frame.axes(ax, figsize=(6.4, 4.8))
 
 
-def _finish(ax, x_label, y_label):
-    """Axis labels with units, a light grid and the legend below the axes, off the data."""
+def _finish(ax, x_label, y_label, title):
+    """Axis labels with units, a light grid, the legend below the axes, off the data, and the title."""
     ax.set_xlabel(x_label)
     ax.set_ylabel(y_label)
     ax.grid(alpha=0.3)
     frame.legend_outside(ax)
+    frame.title(ax, title)
 
 
 def collision_velocities(collision: Any, ax: Any = None) -> tuple[Any, Any]:
@@ -69,25 +71,48 @@ def collision_velocities(collision: Any, ax: Any = None) -> tuple[Any, Any]:
         ax.set_xlim(middle[0] - half, middle[0] + half)
         ax.set_ylim(middle[1] - half, middle[1] + half)
         ax.set_aspect("equal", adjustable="box")  # square limits: nothing for matplotlib to override
-    ax.set_title(f"restitution e = {float(np.ravel(collision.e)[0]):.3g}", fontsize="medium")
-    _finish(ax, "v_x [m / s]" if not head_on else "velocity along the line [m / s]", "v_y [m / s]" if not head_on
-            else "")
+    masses = " and ".join(display.quantity_math(np.ravel(m)[0] << u.kg, digits=4) for m in (collision.m1, collision.m2))
+    restitution = display.number(float(np.ravel(collision.e)[0]), 3)
+    _finish(ax, "$v_x$ [m/s]" if not head_on else "velocity along the line [m/s]", "$v_y$ [m/s]" if not head_on
+            else "", f"{'Head-on' if head_on else 'Oblique'} collision of {masses}, restitution e = {restitution}: "
+                     f"the velocities before and after")
     return fig, ax
 
 
 def projectile_paths(projectiles: dict[str, Any], ax: Any = None, samples: int = 200) -> tuple[Any, Any]:
-    """y against x for {label: Projectile} (XX), each with its apex (triangle) and landing point (dot), in m."""
+    """y against x for {label: Projectile} (XX), each from its launch to its landing point (dot), with its apex
+    (triangle), in m; the title gives the launch (speed, angle, height) the projectiles share, or says it
+    differs."""
     fig, ax = _axes(ax)
     for k, (label, shot) in enumerate(projectiles.items()):
         x, y = shot.path(samples)
         ax.plot(x.to_value(u.m), y.to_value(u.m), color=f"C{k}", label=label)
         ax.plot(shot.apex_distance.to_value(u.m), shot.apex_height.to_value(u.m), marker="^", color=f"C{k}",
-                ls="none")
-        ax.plot(shot.range.to_value(u.m), 0.0, marker="o", color=f"C{k}", ls="none")
+                ls="none", gid="apex")
+        ax.plot(shot.range.to_value(u.m), 0.0, marker="o", color=f"C{k}", ls="none", gid="landing")
+    for marker, name in (("^", "apex"), ("o", "landing")):  # one gray entry each, the markers in their colours
+        ax.plot([], [], marker=marker, color="0.3", ls="none", label=name)
     ax.axhline(0.0, color="gray", lw=0.8)
     ax.set_aspect("equal", adjustable="datalim")
-    _finish(ax, "x [m]", "y [m]")
+    launches = {_launch_text(shot) for shot in projectiles.values()}
+    launch = launches.pop() if len(launches) == 1 else "different launches"
+    _finish(ax, "x [m]", "y [m]", f"{'Projectile' if len(projectiles) == 1 else 'Projectiles'} launched at {launch}: "
+                                  f"{_names(projectiles)}, from launch to landing")
     return fig, ax
+
+
+def _launch_text(shot: Any) -> str:
+    """"30 m/s, 60 deg above the horizontal" (and the height, when not from the ground)."""
+    height = float(np.ravel(shot.height)[0])
+    return (f"{display.quantity_math(np.ravel(shot.speed)[0] << u.m / u.s, digits=4, unit=u.m / u.s)}, "
+            f"{display.quantity_math(np.ravel(shot.angle)[0] << u.rad, digits=4)} above the horizontal"
+            + (f" from {display.quantity_math(height << u.m, digits=4, unit=u.m)}" if height else ""))
+
+
+def _names(items: dict[str, Any]) -> str:
+    """The labels of {label: object} as a title lists them."""
+    names = list(items)
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
 
 
 def pendulum_periods(pendulum: Any = None, ax: Any = None, samples: int = 400) -> tuple[Any, Any]:
@@ -96,27 +121,41 @@ def pendulum_periods(pendulum: Any = None, ax: Any = None, samples: int = 400) -
     fig, ax = _axes(ax)
     amplitude = np.linspace(0.0, np.radians(179.0), samples)
     ax.plot(np.degrees(amplitude), pendulum_period(1.0, amplitude) / (2 * np.pi), color="C0",
-            label="exact: 4 K(sin^2(theta0 / 2)) / (2 pi)")
+            label=r"exact: $2K(m)/\pi$, $m = \sin^2(\theta_0/2)$")
     ax.plot(np.degrees(amplitude), pendulum_period_series(amplitude, 2), color="C1", ls="--",
-            label="1 + theta0^2 / 16")
+            label=r"series: $1 + \theta_0^2/16$")
+    title = "Period of a pendulum against its amplitude, in units of its small-angle period"
     if pendulum is not None:
         ax.plot(pendulum.amplitude_angle.to_value(u.deg), pendulum.period_ratio.value, marker="o", color="k",
                 ls="none", label="this pendulum")
-    _finish(ax, "amplitude theta0 [deg]", "period / small-angle period [dimensionless]")
+        title += (f"\nthis pendulum: $\\theta_0$ = {display.quantity_math(pendulum.amplitude_angle, digits=4)}, "
+                  f"T = {display.quantity_math(pendulum.period, digits=4)} "
+                  f"($T_0$ = {display.quantity_math(pendulum.small_angle_period, digits=4)})")
+    _finish(ax, r"amplitude $\theta_0$ [deg]", "period / small-angle period [dimensionless]", title)
     return fig, ax
 
 
 def damped_motion(oscillators: dict[str, Any], duration: u.Quantity, ax: Any = None,
                   samples: int = 400) -> tuple[Any, Any]:
-    """x(t) for {label: DampedOscillator} over `duration` (XXV.v)."""
+    """x(t) for {label: DampedOscillator} over `duration` (XXV.v), sampled `samples` times or, for fast
+    oscillations, PER_PERIOD times per damped period (at most MAX_SAMPLES in all), so every swing shows."""
     fig, ax = _axes(ax)
-    times = np.linspace(0.0, duration.to_value(u.s), samples) << u.s
+    seconds = duration.to_value(u.s)
+    fastest = max(float(np.max(oscillator.damped_frequency.to_value(u.rad / u.s))) for oscillator in
+                  oscillators.values())
+    count = int(min(MAX_SAMPLES, max(samples, np.ceil(PER_PERIOD * seconds * fastest / (2 * np.pi)) + 1)))
+    times = np.linspace(0.0, seconds, count) << u.s
     for k, (label, oscillator) in enumerate(oscillators.items()):
         ax.plot(times.value, oscillator.position_at(times).to_value(u.m), color=f"C{k}",
                 label=f"{label} ({oscillator.regime})")
     ax.axhline(0.0, color="gray", lw=0.8)
-    _finish(ax, "t [s]", "x [m]")
+    _finish(ax, "t [s]", "x [m]", f"Damped {'oscillator' if len(oscillators) == 1 else 'oscillators'} "
+                                  f"{_names(oscillators)}: x(t) over {display.quantity_math(duration, digits=4)}")
     return fig, ax
+
+
+#: samples per damped period drawn, and the most drawn in all
+PER_PERIOD, MAX_SAMPLES = 40, 100_000
 
 
 def vertical_circle_forces(circles: dict[str, Any], ax: Any = None,
@@ -144,11 +183,14 @@ def vertical_circle_forces(circles: dict[str, Any], ax: Any = None,
             ends = circle.normal_force_at(np.array([-end, end]) << u.rad).to_value(u.N) / (circle.mass * circle.g)
             mark = "leaves the circle (N = 0)" if regime == "leaves the circle" else "turns back (v = 0)"
             ax.plot(np.degrees([-end, end]), ends, ls="none", marker="v" if regime == "leaves the circle" else "o",
-                    color=color, label=f"{label}: {mark} at {np.degrees(end):.1f} deg")
+                    color=color, label=f"{label}: {mark} at {display.number(np.degrees(end), 4)} deg")
     ax.axhline(0.0, color="gray", lw=0.8)
     ax.set_xlim(-180.0, 180.0)
     ax.set_xticks(np.arange(-180, 181, 60))
-    _finish(ax, "angle from the lowest point [deg]", "normal force N / (m g) [dimensionless]")
+    radii = {display.quantity_math(np.ravel(circle.radius)[0] << u.m, digits=4) for circle in circles.values()}
+    _finish(ax, "angle from the lowest point [deg]", "normal force N / (m g) [dimensionless]",
+            f"Normal force round a vertical circle{' of radius ' + radii.pop() if len(radii) == 1 else 's'}"
+            + (f": {_names(circles)}" if len(circles) == 1 else ""))
     return fig, ax
 
 
@@ -161,6 +203,9 @@ def rolling_race(rollings: dict[str, Any], length: u.Quantity, ax: Any = None,
         a = rolling.acceleration.to_value(u.m / u.s**2)
         end = np.sqrt(2 * distance / a)
         t = np.linspace(0.0, end, samples)
-        ax.plot(t, 0.5 * a * t * t, color=f"C{k}", label=f"{label} (k = {float(rolling.factor):.3g})")
-    _finish(ax, "t [s]", "distance down the incline [m]")
+        ax.plot(t, 0.5 * a * t * t, color=f"C{k}", label=f"{label} (k = {display.number(float(rolling.factor), 3)})")
+    inclines = {display.quantity_math(np.ravel(rolling.incline)[0] << u.rad, digits=4) for rolling in rollings.values()}
+    _finish(ax, "t [s]", "distance down the incline [m]",
+            f"Rolling down {'a ' + inclines.pop() + ' incline' if len(inclines) == 1 else 'inclines'}: "
+            f"{_names(rollings)} over the first {display.quantity_math(length, digits=4)}")
     return fig, ax

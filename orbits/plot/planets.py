@@ -38,12 +38,15 @@ def solar_system(
     states: dict | None = None,
 ) -> tuple[Any, Any]:
     """Draw the planets (and Pluto for "outer" and "all") on their osculating heliocentric orbits at `epoch`, in
-    the ecliptic frame of J2000, each body's position a dot with its name beside it and the Sun at the centre.
+    the ecliptic frame of J2000, each body's position at the epoch a dot with its name beside it where the name
+    fits, and the Sun at the centre.
 
     Parameters
     ----------
     epoch : astropy Time or ISO string (read as UTC unless it names its scale; see orbits.ephemeris.epoch)
-    which : "inner" (Mercury-Mars), "outer" (Jupiter-Pluto) or "all"
+    which : "inner" (Mercury-Mars), "outer" (Jupiter-Pluto) or "all"; "all" in the plane and on a figure of its
+        own draws a second panel beside the first, the inner planets enlarged (they crowd round the Sun at the
+        scale of Pluto's orbit)
     projection : "xy" (the ecliptic seen from its north pole), "xz", "yz" or "3d"
     highlight : a body drawn with a thick orbit and a bold label (the Moon and the Earth-Moon barycentre are
         drawn as the Earth)
@@ -55,7 +58,8 @@ def solar_system(
 
     The orbits are those of `Orbit.from_body(name, epoch)` (orbits.ephemeris.osculating) drawn by `orbits` (the
     first time each orbit passes through the body's position); the title gives the date in TDB and the ephemeris
-    that answered. DE421 gives Jupiter-Pluto as system barycentres, and their legend entries say so. Tested in
+    that answered. DE421 gives Jupiter-Pluto as system barycentres, and the title says so. Returns the figure
+    and the axes of the whole picture (the enlarged inner planets are the figure's second axes). Tested in
     tests/api/test_plot_and_display.py (the dots equal astropy's reading of DE421, rotated to the ecliptic, to
     1e-9 AU).
     """
@@ -64,6 +68,8 @@ def solar_system(
     names, missing = _drawn(which, resolved)
     target = None if highlight is None else _DRAWN_AS.get(ephemeris.point_name(highlight),
                                                           ephemeris.point_name(highlight))
+    if target is not None and target not in (*names, "Sun"):
+        raise ValueError(f"{highlight} is not drawn in the {which} solar system ({', '.join(names)})")
     seer = None if target is None or observer is None else ephemeris.point_name(observer)
     sighted = seer is not None and seer != target
     elsewhere = [seer] if sighted and seer not in (*names, "Sun") else []  # an observer not drawn
@@ -76,30 +82,72 @@ def solar_system(
             raise ValueError(f"states lacks {', '.join(absent)}: give every body of solar_system_points")
     conics = [Conic.from_state(problem.r, problem.v, problem.mu)
               for problem in (ephemeris.osculating(seen[name]) for name in names)]
-    drawn = draw_orbits(*conics, ax=ax, projection=projection, primary="Sun", labels=[seen[n].point for n in names])
+    enlarged = which == "all" and ax is None and projection != "3d"
+    if enlarged:
+        import matplotlib.pyplot as plt
+
+        fig, (ax, inner) = plt.subplots(1, 2, figsize=(13.0, 6.6), layout="constrained")
+    shown = None if highlight is None else ephemeris.point_name(highlight)
+    sight = (seer, target, elsewhere, seen) if sighted else None
+    drawn = _draw_part(ax, names, conics, projection, when, target, shown, sight,
+                       named=[n for n in names if not enlarged or n not in SOLAR_SYSTEM["inner"]])
+    ax = drawn.axes
+    inner_names = list(SOLAR_SYSTEM["inner"])
+    if enlarged:
+        _draw_part(inner, inner_names, conics[:len(inner_names)], projection, when, target, shown, sight,
+                   named=inner_names)
+        for panel in (ax, inner):  # one legend, beside the second panel, for both
+            panel.get_legend().remove()
+        inner.legend(*ax.get_legend_handles_labels(), loc="upper left", bbox_to_anchor=(1.02, 1.0),
+                     fontsize="small", frameon=False)
+        frame.title(ax, "out to Pluto" if "Pluto" in names else "out to Neptune")
+        frame.title(inner, "the inner planets")
+    lines = [f"The {'' if which == 'all' else which + ' '}solar system on {frame.date_text(when)} "
+             f"(ecliptic of J2000)", f"positions: {seen[names[0]].source}"]
+    systems = [name for name in names if seen[name].point != name]
+    if systems:
+        lines.append(f"{_names(systems)}: {'the' if len(systems) > 1 else 'its'} system "
+                     f"barycentre{'s' if len(systems) > 1 else ''} (planet and moons)")
+    if missing:
+        lines.append(f"left out: {', '.join(missing)}")
+    lines += list(drawn.notes)  # a closest approach inside the Sun, if any, stays in the title
+    if enlarged:
+        frame.title(fig, "\n".join(lines))
+    else:
+        frame.title(ax, "\n".join(lines))
+    return drawn.figure, ax
+
+
+def _draw_part(ax, names, conics, projection, when, target, shown, sight, named):
+    """The orbits of `names` on `ax` (a new figure if None), the target's orbit thick, the line of sight, and the
+    names of `named` beside their dots where they fit (the target's first, in bold). Returns the Drawing."""
+    drawn = draw_orbits(*conics, ax=ax, projection=projection, primary="Sun", labels=names, epoch=when)
     ax, scale = drawn.axes, drawn.scale
     axes_index = PROJECTIONS[projection]
-    if target is not None and target not in (*names, "Sun"):
-        raise ValueError(f"{highlight} is not drawn in the {which} solar system ({', '.join(names)})")
     positions = {name: conic.state[0] * scale for name, conic in zip(names, conics)}
-    shown = None if highlight is None else ephemeris.point_name(highlight)
-    for name in _uncrowded(positions, axes_index, target):
-        text = f"{shown} (at {name})" if name == target and shown != target else name  # "Moon (at Earth)"
-        _label_point(ax, positions[name], axes_index, text, bold=name == target)
     if target in names:
         drawn.curves[names.index(target)].set_linewidth(3.0)
-    if sighted:
-        positions["Sun"] = np.zeros(3)
+    if sight is not None:
+        seer, _, elsewhere, seen = sight
+        ends = dict(positions, Sun=np.zeros(3))
         for name in elsewhere:
-            positions[name] = frames.equatorial_to_ecliptic(seen[name].r_si) * scale
-        _line_of_sight(ax, seer, target, positions, axes_index)
-    title = f"The {'' if which == 'all' else which + ' '}solar system on {when.tdb.iso[:16]} TDB (ecliptic J2000)"
-    title += f"\npositions: {seen[names[0]].source}"
-    if missing:
-        title += f"\nleft out: {', '.join(missing)}"
-    notes = "\n".join(drawn.notes)  # a closest approach inside the Sun, if any, stays in the title
-    ax.set_title(title + (f"\n{notes}" if notes else ""), fontsize="medium")
-    return drawn.figure, ax
+            ends[name] = frames.equatorial_to_ecliptic(seen[name].r_si) * scale
+        if target in ends and seer in ends:
+            _line_of_sight(ax, seer, target, ends, axes_index)
+    order = sorted((name for name in named if name in positions), key=lambda name: name != target)
+    labels = [(f"{shown} (at {name})" if name == target and shown != target else name,  # "Moon (at Earth)"
+               [positions[name][i] for i in axes_index], dict(fontsize="small", gid="name",
+                                                              fontweight="bold" if name == target else "normal"))
+              for name in order]
+    frame.labels_apart(ax, labels)
+    return drawn
+
+
+def _names(names: list[str]) -> str:
+    """"Jupiter", "Jupiter and Saturn", "Jupiter to Pluto" (a run of the drawn order)."""
+    if len(names) > 2:
+        return f"{names[0]} to {names[-1]}"
+    return " and ".join(names)
 
 
 def _drawn(which: str, resolved: str) -> tuple[list[str], list[str]]:
@@ -123,30 +171,6 @@ def solar_system_points(which: str = "inner", *, highlight: str | None = None, o
     if seer is not None and seer != target and seer not in (*names, "Sun"):
         names.append(seer)
     return names
-
-
-def _uncrowded(positions, axes_index, first, spacing=0.04):
-    """The bodies whose names fit: the highlighted one first, then each whose dot is more than `spacing` of the
-    picture's half-size from the Sun and from every dot named already (the inner planets of the whole solar
-    system crowd round the Sun; the legend names them)."""
-    seen = {name: np.array([point[i] for i in axes_index]) for name, point in positions.items()}
-    size = max(np.linalg.norm(point) for point in seen.values())
-    named, taken = [], [np.zeros(len(axes_index))]
-    for name in sorted(seen, key=lambda n: n != first):
-        if name == first or all(np.linalg.norm(seen[name] - other) > spacing * size for other in taken):
-            named.append(name)
-            taken.append(seen[name])
-    return named
-
-
-def _label_point(ax, point, axes_index, text, bold):
-    """The body's name beside its dot."""
-    weight = "bold" if bold else "normal"
-    if len(axes_index) == 3:
-        ax.text(*(point[i] for i in axes_index), f"  {text}", fontsize="small", fontweight=weight, gid="name")
-        return
-    ax.annotate(text, tuple(point[i] for i in axes_index), textcoords="offset points", xytext=(5, 5),
-                fontsize="small", fontweight=weight, gid="name")
 
 
 def _line_of_sight(ax, seer, target, positions, axes_index):

@@ -71,11 +71,10 @@ def lagrange_plane(
     ax.plot([-mu], [0], marker="o", ms=11, color=primary_color(primary), mec="0.3", ls="none", zorder=3,
             label=f"{display.body_name(system.gm_primary)} (M)")
     ax.plot([1 - mu], [0], marker="o", ms=6, color=primary_color(secondary), mec="0.3", ls="none", zorder=3,
-            label=f"{display.body_name(system.gm_secondary)} (m), mu = {mu:.4g}")
+            label=f"{display.body_name(system.gm_secondary)} (m), $\\mu$ = {display.number_math(mu, 4)}")
     xy = system.positions.to_value(u.m)[:, :2] / r
-    for k, (px, py) in enumerate(xy):
-        ax.plot(px, py, marker="x", color="C3", ls="none", zorder=3, label="Lagrange points" if k == 0 else None)
-        ax.annotate(f"L{k + 1}", (px, py), textcoords="offset points", xytext=(4, 4), fontsize="small")
+    ax.plot(xy[:, 0], xy[:, 1], marker="x", color="C3", ls="none", zorder=3, label="Lagrange points",
+            gid="Lagrange points")
     for k, (label, track) in enumerate(trajectories.items()):
         color = f"C{(k + 4) % 10}"
         shown = units.to_si(track, units.M, f"trajectory {label!r}") / r
@@ -89,11 +88,29 @@ def lagrange_plane(
     ax.set_aspect("equal")
     ax.set_xlim(center[0] - extent, center[0] + extent)
     ax.set_ylim(center[1] - extent, center[1] + extent)
-    ax.set_xlabel(f"x (rotating frame) [separation r = {display.quantity_text(system.separation, digits=6)}]")
+    ax.set_xlabel(f"x (rotating frame) [separation r = {display.quantity_math(system.separation, digits=6)}]")
     ax.set_ylabel("y (rotating frame) [separation r]")
     ax.grid(alpha=0.3)
     frame.legend_beside(ax)
+    frame.labels_apart(ax, [(f"L{k + 1}", point, dict(fontsize="small", gid="L", sides=POINT_SIDES[k]))
+                            for k, point in enumerate(xy)])
+    frame.title(ax, f"{_pair(system)}, in the frame turning with them: the Lagrange points and the zero-velocity "
+                    f"curves through them")
     return fig, ax
+
+
+#: the sides of its point each Lagrange point's label is tried on, in order: L1 towards M and L2 away from it
+#: (they flank m, close to it when m is small), L3 out on M's side, L4 above, L5 below
+POINT_SIDES = (("upper left", "lower left", "left", "above", "below"),
+               ("upper right", "lower right", "right", "above", "below"),
+               ("upper left", "lower left", "left", "upper right", "above", "below"),
+               ("above", "upper right", "upper left", "right", "left"),
+               ("below", "lower right", "lower left", "right", "left"))
+
+
+def _pair(system: Any) -> str:
+    """"Sun and Earth": the two primaries of a RestrictedThreeBody by name (or GM)."""
+    return f"{display.body_name(system.gm_primary)} and {display.body_name(system.gm_secondary)}"
 
 
 def lagrange_departure(system: Any, point: str, offset: u.Quantity, times: u.Quantity,
@@ -117,8 +134,6 @@ def lagrange_departure(system: Any, point: str, offset: u.Quantity, times: u.Qua
                                           gridspec_kw={"width_ratios": (1.25, 1)})
     lagrange_plane(system, ax=plane, extent=half, center=(float(middle[0]), float(middle[1])),
                    trajectories={f"departure from {point}": track})
-    plane.set_title(f"leaving {point}, started {display.quantity_text(offset, digits=3)} off along the growing mode",
-                    fontsize="medium")
     seconds = units.to_si(times, units.S, "times")
     unit = display.natural_unit(times[-1])
     elapsed = (seconds << u.s).to_value(unit)
@@ -127,13 +142,17 @@ def lagrange_departure(system: Any, point: str, offset: u.Quantity, times: u.Qua
     gone = np.hypot(*(shown - where).T) * r
     distance.semilogy(elapsed, gone / r, color="C4", lw=1.3, label="integrated", gid="trajectory")
     predicted = start * np.exp(rate * seconds) / r
-    e_folding = display.quantity_text(1 / rate * u.s, digits=3)
+    e_folding = display.quantity_math(1 / rate * u.s, digits=3)
     distance.semilogy(elapsed, np.where(predicted <= 1.0, predicted, np.nan), color="C3", ls="--",
-                      label=f"offset x exp(t / {e_folding}) (linear prediction)", gid="prediction")
-    distance.set_xlabel(f"time [{display.unit_text(unit)}]")
+                      label=f"offset $\\times$ exp(t / {e_folding}) (linear prediction)", gid="prediction")
+    distance.set_xlabel(f"time [{display.unit_math(unit)}]")
     distance.set_ylabel(f"distance from {point} [separation r]")
     distance.grid(alpha=0.3, which="major")
     frame.legend_outside(distance)
+    frame.title(plane, f"the rotating frame about {point}")
+    frame.title(distance, f"distance from {point}: integrated and linear")
+    frame.title(fig, f"{_pair(system)}: a particle leaving {point}, started "
+                     f"{display.quantity_math(offset, digits=3)} off along the growing mode", size="large")
     return fig, np.array([plane, distance])
 
 
@@ -153,16 +172,21 @@ def coorbital_plane(system: Any, trajectories: dict[str, u.Quantity], ax: Any = 
         jumps = np.flatnonzero(np.abs(np.diff(longitude)) > 180) + 1  # no line across the +-180 deg seam
         longitude, offset = np.insert(longitude, jumps, np.nan), np.insert(offset, jumps, np.nan)
         ax.plot(longitude, offset, color=f"C{(k + 4) % 10}", lw=1.0, label=label, gid="trajectory")
-    for name, where in (("L3", -180.0), ("L5", -60.0), ("secondary", 0.0), ("L4", 60.0), ("L3", 180.0)):
-        ax.axvline(where, color="0.6" if name != "secondary" else "C7", lw=0.8, ls=":" if name != "secondary" else "-")
+    secondary = display.body_name(system.gm_secondary)
+    for name, where in (("L3", -180.0), ("L5", -60.0), (secondary, 0.0), ("L4", 60.0), ("L3", 180.0)):
+        ax.axvline(where, color="0.6" if name != secondary else "C7", lw=0.8, ls=":" if name != secondary else "-")
         ax.annotate(name, (where, 1.0), xycoords=("data", "axes fraction"), textcoords="offset points",
-                    xytext=(2, -10), fontsize="small")
+                    xytext=(2 if where < 180 else -2, -4), ha="left" if where < 180 else "right", va="top",
+                    fontsize="small")
     ax.set_xlim(-180, 180)
     ax.set_xticks(np.arange(-180, 181, 60))
-    ax.set_xlabel("longitude from the secondary, seen from the primary [deg]")
-    ax.set_ylabel("distance from the primary - r [separation r]")
+    primary = frame.in_a_sentence(display.body_name(system.gm_primary))
+    ax.set_xlabel(f"longitude from {frame.in_a_sentence(secondary)}, seen from {primary} [deg]")
+    ax.set_ylabel(f"distance from {primary} - r [separation r]")
     ax.grid(alpha=0.3)
     frame.legend_outside(ax)
+    frame.title(ax, f"Co-orbital motion in the frame of {_pair(system)}: a tadpole keeps to one side of "
+                    f"{frame.in_a_sentence(secondary)}, a horseshoe turns back before it")
     return fig, ax
 
 
@@ -193,19 +217,21 @@ def ring_breakup(
         seed * np.exp(growth_rate * np.asarray(times)),
         color="C3",
         ls="--",
-        label=f"round-off x exp(t / {e_folding:.3g} periods)" if growth_rate > 0 else "round-off, linearly stable",
+        label=f"round-off $\\times$ exp(t / {display.number_math(e_folding, 3)} periods)" if growth_rate > 0
+        else "round-off, linearly stable",
     )
     if np.isfinite(breakup_time):
         ax.axvline(breakup_time / (2 * np.pi), color="gray", ls=":",
-                   label=f"predicted break-up, {breakup_time / (2 * np.pi):.3g} periods")
+                   label=f"predicted break-up, {display.number_math(breakup_time / (2 * np.pi), 3)} periods")
     ax.axhline(BREAKUP_DEVIATION, color="C3", lw=0.8, ls="-.", gid="break-up level",
-               label=f"break-up level {BREAKUP_DEVIATION:g} of the radius")
+               label=f"break-up level {display.number_math(BREAKUP_DEVIATION, 3)} of the radius")
     ax.set_ylim(1e-17, 10)
-    one = f", 1 period = {display.quantity_text(period, digits=4)}" if period is not None else ""
-    ax.set_xlabel(f"time [ring periods 2 pi / omega{one}]")
+    one = f", 1 period = {display.quantity_math(period, digits=4)}" if period is not None else ""
+    ax.set_xlabel(f"time [ring periods $2\\pi/\\omega${one}]")
     ax.set_ylabel("largest chord error [ring radius]")
     ax.grid(alpha=0.3, which="major")
     frame.legend_outside(ax)
+    frame.title(ax, "A ring breaking up: its shape's deviation from the regular polygon against time")
     return fig, ax
 
 
@@ -243,7 +269,8 @@ def ring_snapshots(times: np.ndarray, positions: np.ndarray, growth_rate: float,
             ax.plot(positions[k, 0, 0], positions[k, 0, 1], marker="*", ms=10, color="gold", mec="0.3", ls="none")
         top.plot(times[k] / (2 * np.pi), max(deviations[k], 1e-17), marker="v", color="k", ls="none",
                  gid="snapshot")
-        ax.set_title(f"t = {times[k] / (2 * np.pi):.3g} periods\ndeviation {deviations[k]:.1e}", fontsize="small")
+        ax.set_title(f"t = {display.number(times[k] / (2 * np.pi), 3)} periods\n"
+                     f"deviation {display.number_math(deviations[k], 2)}", fontsize="small")
         ax.set_aspect("equal")
         reach = max(1.6, 1.1 * float(np.max(np.hypot(x, y))))
         ax.set_xlim(-reach, reach)
@@ -253,4 +280,6 @@ def ring_snapshots(times: np.ndarray, positions: np.ndarray, growth_rate: float,
             ax.set_ylabel("y [ring radius]", fontsize="x-small")
         ax.tick_params(labelsize="x-small")
         panels.append(ax)
+    top.set_title("")
+    frame.title(fig, f"A ring of {n} bodies breaking up, seen in the frame turning with it", size="large")
     return fig, np.array([top, *panels])

@@ -14,10 +14,16 @@ import numpy as np
 from orbits import display
 from orbits.plot import frame
 
+#: what the position errors are relative to (orbits.predict.length_scale), as the pictures say it
+LENGTH_SCALE = ("L: the largest distance of an orbiting body from its primary over the run (of two bodies, where "
+                "none orbits)")
+#: |dr| / L typeset
+ERROR = r"$|\Delta r|/L$"
+
 
 def validation_residuals(report: Any, figure: Any = None) -> tuple[Any, np.ndarray]:
     """Position error |dr| / L against time (a ValidationReport), one colour per scene and one line style per
-    backend, errors on a log scale and each panel's legend below it.
+    backend, errors on a log scale and each panel's legend below it; the title says what L is (LENGTH_SCALE).
 
     Scenes that run for at least one period of their first orbit (SceneReport.period) share the left panel, on
     log-log axes with time in that period (a 100-period scene ends at 100); the others (a flyby, an encounter,
@@ -48,14 +54,15 @@ def validation_residuals(report: Any, figure: Any = None) -> tuple[Any, np.ndarr
         if kind == "closed":
             ax.set_xscale("log")
             ax.set_xlabel("time [periods of the scene's first orbit]")
-            ax.set_title("runs of whole orbits", fontsize="medium")
         else:
             ax.set_xlim(0.0, 1.0)
             ax.set_xlabel("time [fraction of the run]")
-            ax.set_title("single passages and open orbits", fontsize="medium")
         ax.grid(alpha=0.3, which="major")
         frame.legend_outside(ax)
-    panels[0].set_ylabel("position error |dr| / L [dimensionless]")
+    panels[0].set_ylabel(f"position error {ERROR} [dimensionless]")
+    for ax, kind in zip(panels, groups, strict=True):
+        frame.title(ax, "runs of whole orbits" if kind == "closed" else "single passages and open orbits")
+    frame.title(figure, f"Position errors {ERROR} of the integrations against the closed forms\n{LENGTH_SCALE}")
     return figure, panels
 
 
@@ -64,10 +71,13 @@ def validation_tracks(report: Any, figure: Any = None, columns: int = 4) -> tupl
     positions, each body relative to the first (the primary) and seen face on (the plane of largest spread of
     the predicted tracks), the closed form as a grey curve (over one period, SceneReport.outline) with open circles
     at the output times and each backend's positions as small markers in them (at most TRACK_MARKERS outputs per
-    body, evenly spaced); the title gives each backend's worst |dr| / L; the legend sits in the first empty cell,
-    or below the panels. Axes in the scene's natural length unit (code units for a model scene). Returns (figure,
-    array of the panels).
+    body, evenly spaced; where they fall on a few points only, as a run sampled every half period does, the panel
+    says so); the title gives each backend's worst |dr| / L; the legend sits in the first empty cell, or below the
+    panels. Axes in the scene's natural length unit (code units for a model scene), four ticks at most so that
+    their labels stay apart. Returns (figure, array of the panels).
     """
+    from matplotlib.ticker import MaxNLocator
+
     shown = [scene for scene in report.scenes if scene.expected is not None and scene.positions]
     rows = max(1, math.ceil(len(shown) / columns))
     figure = frame.figure(figure, (3.0 * min(columns, max(1, len(shown))) + 1.0, 3.2 * rows + 0.6))
@@ -96,13 +106,13 @@ def validation_tracks(report: Any, figure: Any = None, columns: int = 4) -> tupl
                         label=backend if body == 0 else None, gid=f"integrated {backend}")
         ax.plot([0.0], [0.0], marker="*", ms=9, color="gold", mec="0.3", ls="none", zorder=3,
                 label="first body (the origin)")
-        worst = ", ".join(f"{b} {float(np.max(r)):.1e}" for b, r in scene.residuals.items())
-        ax.set_title(f"{scene.name}\nworst |dr|/L: {worst}", fontsize="small")
-        where = "code length" if scene.in_code_units else display.unit_text(unit)
+        where = "code length" if scene.in_code_units else display.unit_math(unit)
         ax.set_xlabel(f"in-plane x [{where}]", fontsize="small")
         ax.set_ylabel(f"in-plane y [{where}]", fontsize="small")
         ax.set_aspect("equal", adjustable="datalim")
         ax.tick_params(labelsize="x-small")
+        for axis in (ax.xaxis, ax.yaxis):
+            axis.set_major_locator(MaxNLocator(4))
         ax.grid(alpha=0.3)
     for ax in panels[len(shown):]:
         ax.set_axis_off()
@@ -111,7 +121,23 @@ def validation_tracks(report: Any, figure: Any = None, columns: int = 4) -> tupl
         panels[len(shown)].legend(handles, labels, loc="center", fontsize="small", frameon=False)
     else:
         figure.legend(handles, labels, loc="outside lower center", ncol=len(labels), fontsize="small", frameon=False)
+    for ax, scene in zip(panels, shown, strict=False):
+        frame.title(ax, _track_title(scene), size="small")
+    frame.title(figure, f"Integrated tracks over the closed forms, each scene face on; the worst {ERROR} of each "
+                        f"backend over its panel")
     return figure, panels[:len(shown)]
+
+
+def _track_title(scene: Any) -> str:
+    """The scene, each backend's worst |dr| / L, and how many points its marked outputs fall on where they repeat
+    (a run sampled every half period has two)."""
+    worst = ", ".join(f"{backend} {display.number_math(float(np.max(series)), 2)}"
+                      for backend, series in scene.residuals.items())
+    relative = scene.expected[:, 1:] - scene.expected[:, :1]
+    size = float(np.max(np.abs(relative))) or 1.0
+    spots = len(np.unique(np.round(relative[:, 0] / size, 6), axis=0))
+    repeats = f"\n{len(relative)} outputs at {spots} points" if spots <= len(relative) // 4 else ""
+    return f"{scene.name}\n{worst}{repeats}"
 
 
 #: at most this many outputs of each body are marked in validation_tracks (every k-th), so the markers stay apart
@@ -175,7 +201,6 @@ def work_precision(rows: Sequence[Any], columns: int = 3) -> tuple[Any, np.ndarr
             errors = [max(r.error, 1e-17) for r in runs]
             style = dict(marker="*", ms=12, ls="none") if method == "orbits analytic" else dict(marker="o", ms=3)
             ax.loglog(seconds, errors, color=f"C{k}", label=method, **style)
-        ax.set_title(problem, fontsize="medium")
         ax.set_xlabel("wall time [s]")
         ax.set_ylabel("position error / orbit size")
         ax.grid(alpha=0.3, which="major")
@@ -183,4 +208,8 @@ def work_precision(rows: Sequence[Any], columns: int = 3) -> tuple[Any, np.ndarr
         ax.set_visible(False)
     handles, labels = axes.flat[0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="outside right upper", fontsize="small")
+    for ax, problem in zip(axes.flat, problems):
+        frame.title(ax, problem)
+    frame.title(fig, "Work-precision: each method's position error (relative to the orbit's size) against its wall "
+                     "time", size="large")
     return fig, axes

@@ -80,14 +80,15 @@ def sweep_client(
     address: str | None = None, workers: int = LOCAL_WORKERS, processes: bool = False
 ) -> "Iterator[Client]":
     """A dask.distributed Client: of the scheduler at `address`, or of a new LocalCluster of `workers`
-    single-threaded workers (processes or threads), closed again on exit."""
+    single-threaded workers (processes or threads), closed again on exit. A local cluster's dashboard takes a free
+    port of the system's choosing, so two sweeps at once (or another dask on 8787) never collide."""
     from dask.distributed import Client, LocalCluster
 
     if address:
         with Client(address) as client:
             yield client
         return
-    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=processes, dashboard_address=None) as cluster:
+    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=processes, dashboard_address=":0") as cluster:
         with Client(cluster) as client:
             yield client
 

@@ -55,16 +55,18 @@ def osculating(positions, velocities, index: int, mu: float, centre: int = 0):
     return p / ((1.0 - e) * (1.0 + e)), e, inc, np.unwrap(node), np.unwrap(argp), nu
 
 
+def block_averages(x: np.ndarray, samples: int) -> np.ndarray:
+    """Averages of x over consecutive blocks of `samples` outputs along the first axis (an incomplete last block
+    is left out)."""
+    blocks = len(x) // samples
+    return x[: blocks * samples].reshape(blocks, samples, *np.shape(x)[1:]).mean(axis=1)
+
+
 def mean_series(times, positions, velocities, index: int = 1, mu: float = 1.0, samples: int = SAMPLES) -> Series:
     """Series of revolution averages: the outputs come `samples` to a revolution, averaged in blocks."""
     a, e, inc, node, argp, _ = osculating(positions, velocities, index, mu)
-    blocks = times.size // samples
-
-    def average(x):
-        return x[: blocks * samples].reshape(blocks, samples).mean(axis=1)
-
-    return Series(average(times), average(a), average(e), average(inc), average(node), average(argp),
-                  average(e * np.cos(argp)), average(e * np.sin(argp)))
+    return Series(*(block_averages(x, samples) for x in (times, a, e, inc, node, argp, e * np.cos(argp),
+                                                         e * np.sin(argp))))
 
 
 def slope(t, x) -> float:
@@ -91,11 +93,13 @@ def _earth():
     return earth, earth.j2, earth.j2_radius
 
 
-def _oblate_problem(a_m, e, inc, argp, revolutions, j3=False, samples=SAMPLES):
-    """A test particle about the Earth's J2 and J4 (and J3), code units of a and GM_Earth."""
-    earth, j2, radius = _earth()
-    r, v = _particle(1.0, e, inc, 0.0, argp, 0.0)
-    harmonics = ZonalHarmonics(j2, radius / a_m, earth.j4, 0, earth.j3 if j3 else 0.0)
+def _oblate_problem(a_m, e, inc, argp, revolutions, j3=False, samples=SAMPLES, primary=None, raan=0.0, nu=0.0):
+    """A test particle about the J2 and J4 (and J3) of `primary` (the Earth by default), in code units of a and
+    its GM."""
+    primary = primary or BODIES["Earth"]
+    r, v = _particle(1.0, e, inc, raan, argp, nu)
+    harmonics = ZonalHarmonics(primary.j2, primary.j2_radius / a_m, primary.j4 or 0.0, 0,
+                               (primary.j3 or 0.0) if j3 else 0.0)
     return NBodyProblem([1.0, 0.0], [np.zeros(3), r], [np.zeros(3), v], 1, _grid(revolutions, samples=samples),
                         forces=(harmonics,))
 
@@ -133,30 +137,59 @@ def _node_checks(a_m, e_osc, revolutions, label, predicted_rate=None):
     return checks
 
 
+def scene_orbit(name: str):
+    """The orbit (an orbits.Orbit about the Earth, its elements taken as mean elements at t = 0) of the J2 scene
+    `name`: "j2_iss" 400 km circular at 51.64 deg, "j2_sun_synchronous" 700 km circular at the sun-synchronous
+    inclination, "j2_molniya" a = 26554 km, e = 0.74, omega = 270 deg at the critical inclination."""
+    import astropy.units as u
+
+    from orbits.orbit import Orbit
+    from orbits.perturbations import sun_synchronous
+
+    earth = BODIES["Earth"]
+    if name == "j2_iss":
+        return Orbit.circular("Earth", earth.radius * u.m + 400 * u.km, inc=51.64 * u.deg)
+    if name == "j2_sun_synchronous":
+        design = sun_synchronous("Earth", altitude=700 * u.km)
+        return Orbit.circular("Earth", design.semi_major_axis, inc=design.inclination)
+    if name == "j2_molniya":
+        return Orbit.from_elements("Earth", a=26_554 * u.km, e=0.74, inc=oblateness.CRITICAL_INCLINATIONS[0] * u.rad,
+                                   argp=270 * u.deg)
+    raise KeyError(f"{name!r} is not a J2 scene; those are {', '.join(J2_SCENES)}")
+
+
+#: the scenes of an orbit about the Earth's J2 and J4 alone, whose orbits scene_orbit gives
+J2_SCENES = ("j2_iss", "j2_sun_synchronous", "j2_molniya")
+
+
+def _elements(orbit):
+    """(a (m), e, i, omega (rad)) of a one-orbit Orbit."""
+    return float(orbit.semi_major_axis.to_value("m")), float(orbit.e), float(orbit.inc), float(orbit.argp)
+
+
 def _iss(revolutions=30):
     """An ISS-like orbit: 400 km circular at 51.64 deg; J2 turns its node back about 5 deg a day."""
     earth, j2, radius = _earth()
-    a_m, inc = earth.radius + 400e3, math.radians(51.64)
     start = time.perf_counter()
-    problem = _oblate_problem(a_m, 0.0, inc, 0.0, revolutions)
-    rate = oblateness.node_rate(a_m, 0.0, inc, earth.gm, j2, radius) * DEG_PER_DAY
+    a_m, e, inc, argp = _elements(scene_orbit("j2_iss"))
+    problem = _oblate_problem(a_m, e, inc, argp, revolutions)
+    rate = oblateness.node_rate(a_m, e, inc, earth.gm, j2, radius) * DEG_PER_DAY
     return _scene("j2_iss", f"An ISS-like test particle, 400 km circular at 51.64 deg, about the Earth's J2 and J4 "
                   f"for {revolutions} revolutions: its node regresses at {rate:.4f} deg/day",
-                  problem, time.perf_counter() - start, _node_checks(a_m, 0.0, revolutions, "node rate"))
+                  problem, time.perf_counter() - start, _node_checks(a_m, e, revolutions, "node rate"))
 
 
 def _sun_synchronous(revolutions=30):
     """A circular sun-synchronous orbit at 700 km: its node follows the mean Sun, +0.9856 deg/day."""
-    earth, j2, radius = _earth()
-    a_m = earth.radius + 700e3
+    earth = BODIES["Earth"]
     start = time.perf_counter()
-    inc = float(oblateness.sun_synchronous_inclination(a_m, 0.0, earth.gm, j2, radius, SUN_RATE))
-    problem = _oblate_problem(a_m, 0.0, inc, 0.0, revolutions)
+    a_m, e, inc, argp = _elements(scene_orbit("j2_sun_synchronous"))
+    problem = _oblate_problem(a_m, e, inc, argp, revolutions)
     sun = SUN_RATE / math.sqrt(earth.gm / a_m**3)
     return _scene("j2_sun_synchronous", f"A sun-synchronous test particle, 700 km circular at "
                   f"{math.degrees(inc):.2f} deg, about the Earth's J2 and J4 for {revolutions} revolutions: its "
                   f"node follows the mean Sun", problem, time.perf_counter() - start,
-                  _node_checks(a_m, 0.0, revolutions, "node rate = the Sun's", predicted_rate=sun))
+                  _node_checks(a_m, e, revolutions, "node rate = the Sun's", predicted_rate=sun))
 
 
 #: |domega/dt| / (n k) at the critical inclination, from mean elements: measured 1.6e-3 = 5.3 k with both backends
@@ -166,10 +199,8 @@ MOLNIYA_TOLERANCE_IN_K = 20.0
 
 def _molniya(revolutions=20):
     """A Molniya orbit (12 h, e = 0.74) at the critical inclination: its periapsis stands still."""
-    earth, j2, radius = _earth()
-    a_m, e, argp = 26_554e3, 0.74, math.radians(270.0)
-    inc = oblateness.CRITICAL_INCLINATIONS[0]
     start = time.perf_counter()
+    a_m, e, inc, argp = _elements(scene_orbit("j2_molniya"))
     problem = _oblate_problem(a_m, e, inc, argp, revolutions)
     node = _node_checks(a_m, e, revolutions, "node rate")
 
@@ -234,24 +265,37 @@ def frozen_centre(series: Series, rate: float) -> float:
 DRAG_TOLERANCE = 1e-5
 
 
+def scene_decay():
+    """The drag_decay scene's orbit and atmosphere (an orbits.perturbations.DragDecay): 280 km circular, C_D A / m
+    = 0.022 m2/kg, in the 250-300 km band of the Earth's standard exponential atmosphere."""
+    import astropy.units as u
+
+    from orbits.perturbations import DragDecay
+
+    return DragDecay.of("Earth", altitude=280 * u.km, ballistic=0.022 * u.m**2 / u.kg)
+
+
+def _drag_problem(decay, times):
+    """A test particle on the circular orbit of `decay` (a DragDecay) inside its exponential band, in code units of
+    the orbit's radius and the primary's GM, output at `times` (code units)."""
+    r, v = _particle(1.0, 0.0, math.radians(51.64), 0.0, 0.0, 0.0)
+    a0 = decay.a0
+    force = ExponentialDrag(decay.density * decay.b * a0, decay.base / a0, decay.scale_height / a0)
+    return NBodyProblem([1.0, 0.0], [np.zeros(3), r], [np.zeros(3), v], 1, times, forces=(force,))
+
+
 def _drag_decay(revolutions=30):
     """A 280 km circular orbit, C_D A / m = 0.022 m2/kg, in the 250-300 km band of the exponential atmosphere."""
-    from orbits.perturbations import STANDARD_ATMOSPHERE
-
-    earth = BODIES["Earth"]
-    band = STANDARD_ATMOSPHERE.band(280e3)
-    a0, b = earth.radius + 280e3, 0.022
-    base, rho0, height = earth.radius + band.base, band.density, band.scale_height
     start = time.perf_counter()
-    r, v = _particle(1.0, 0.0, math.radians(51.64), 0.0, 0.0, 0.0)
-    force = ExponentialDrag(rho0 * b * a0, base / a0, height / a0)
-    problem = NBodyProblem([1.0, 0.0], [np.zeros(3), r], [np.zeros(3), v], 1, _grid(revolutions), forces=(force,))
-    time_unit = math.sqrt(a0**3 / earth.gm)
+    decay = scene_decay()
+    a0, mu, b, rho0, base, height = decay.a0, decay.mu, decay.b, decay.density, decay.base, decay.scale_height
+    problem = _drag_problem(decay, _grid(revolutions))
+    time_unit = math.sqrt(a0**3 / mu)
     error_order = float(drag.decay_per_revolution(a0, b, rho0, base, height) / height) ** 2
 
     def checks(times, positions, velocities):
         a, *_ = osculating(positions, velocities, 1, 1.0)
-        predicted = drag.radius_after(times[-1] * time_unit, a0, earth.gm, b, rho0, base, height) - a0
+        predicted = drag.radius_after(times[-1] * time_unit, a0, mu, b, rho0, base, height) - a0
         return [Measurement(f"decay in {revolutions} revolutions, O((da_rev / H)^2) = {error_order:.1e}", "km",
                             float(predicted) / 1e3, float(a[-1] - 1.0) * a0 / 1e3, DRAG_TOLERANCE, "relative error")]
 
@@ -345,6 +389,216 @@ def _mercury(revolutions=20):
                   f"field for {revolutions} orbits: the perihelion advances 6 pi G M / (c^2 a (1 - e^2)) a "
                   f"revolution, {per_orbit / period * unit:.2f} arcsec per century", problem,
                   time.perf_counter() - start, checks, period=period)
+
+
+# ---- integrations for the pictures (orbits.plot.perturbations) ---------------------------------------------------
+#: the argument of periapsis is drawn when the orbit's e exceeds this many J2 (R/p)**2: J2's short-period terms give
+#: a circular orbit an osculating e of that order, whose periapsis then turns with the body, not secularly
+DEFINED_PERIAPSIS_IN_K = 10.0
+#: the longest decay the drag picture integrates (revolutions of the starting orbit)
+MAX_DECAY_REVOLUTIONS = 500
+#: outputs per revolution of the pictures' J2 runs: the osculating curves resolved near periapsis at e = 0.74, and
+#: revolution averages free of the aliasing 16 samples leave there (their scatter about the line was 5 arcsec)
+HISTORY_SAMPLES = 64
+#: outputs per orbit of the perturber in the picture's Kozai-Lidov run (9.3 such orbits a Kozai timescale)
+KOZAI_SAMPLES = 20
+
+
+def _picture_backends(backends, forces: bool) -> list[str]:
+    """The backends to integrate with: those given, or each of rebound and heyoka that is installed (rebound's
+    extra forces need REBOUNDx); a one-line error when none is."""
+    import importlib.util
+
+    from orbits.validate.backends import available
+
+    if backends is not None:
+        return list(backends)
+    names = [name for name in ("rebound", "heyoka") if available(name)
+             and not (name == "rebound" and forces and importlib.util.find_spec("reboundx") is None)]
+    if not names:
+        raise ModuleNotFoundError("the picture integrates with rebound (with REBOUNDx) or heyoka; neither is "
+                                  "installed: pip install heyoka")
+    return names
+
+
+def _checked(rule, value, name: str):
+    """`value` checked by one of orbits.validate.models' parameter rules; its ValueError becomes a one-line
+    OrbitDomainError naming the parameter."""
+    from orbits.core.errors import OrbitDomainError
+
+    try:
+        return rule(value)
+    except ValueError as err:
+        raise OrbitDomainError(f"{name} = {err}") from None
+
+
+def _integrate(backends, problem):
+    from orbits.validate.backends import integrate
+
+    return {name: integrate(name, problem) for name in backends}
+
+
+@dataclass(frozen=True, eq=False)
+class SecularHistory:
+    """The node (and, for an eccentric orbit, the argument of periapsis) of one orbit about an oblate body as each
+    backend integrates it under the body's J2 and J4, beside the first-order closed form's secular lines: what
+    orbits.plot.secular_elements draws.
+
+    Times in days, angles in degrees, unwrapped and kept within 180 deg of the orbit's elements at t = 0.
+    `osculating[backend][element]` holds the (K,) osculating values at `times`; `mean[backend][element]` the (B,)
+    averages over each revolution, at `mean_times`; `lines[element]` = (value at t = 0, rate in deg/day), the
+    closed form's rate (at the mean a, e, i) drawn through the first revolution's mean; `accuracy` = J2 (R/p)**2,
+    the rates' relative error order.
+    """
+
+    title: str
+    times: np.ndarray
+    osculating: dict
+    mean_times: np.ndarray
+    mean: dict
+    lines: dict
+    accuracy: float
+
+
+def secular_history(orbit, revolutions: int = 30, backends=None) -> SecularHistory:
+    """Integrate `orbit` (an orbits.Orbit about a catalogue body with J2, one orbit; or the name of a J2 scene,
+    J2_SCENES) under the body's J2 and J4 for `revolutions` (1 to 2000) with rebound and heyoka, and measure its
+    node and periapsis: a SecularHistory. The orbit's elements are used as mean elements at t = 0."""
+    from orbits.constants import body_with_gm
+    from orbits.core.errors import OrbitDomainError
+    from orbits.perturbations import oblate_body
+
+    if isinstance(orbit, str):
+        orbit = scene_orbit(orbit)
+    if orbit.shape != ():
+        raise OrbitDomainError(f"the history follows one orbit; this Orbit holds {orbit.shape} of them")
+    revolutions = _checked(models._count(1, 2000), revolutions, "revolutions")
+    orbit._require_ellipse("J2's secular history")
+    primary = oblate_body(body_with_gm(orbit.mu) or "an unknown primary")
+    a_m, e, inc, argp = _elements(orbit)
+    problem = _oblate_problem(a_m, e, inc, argp, revolutions, samples=HISTORY_SAMPLES, primary=primary,
+                              raan=float(orbit.raan), nu=float(orbit.nu))
+    runs = _integrate(_picture_backends(backends, forces=True), problem)
+    k = float(oblateness.oblateness_factor(a_m * (1 - e) * (1 + e), primary.j2, primary.j2_radius))
+    names = ("node", "periapsis") if e > DEFINED_PERIAPSIS_IN_K * k else ("node",)
+    day = math.sqrt(a_m**3 / primary.gm) / DAY
+    starts = {"node": math.degrees(float(orbit.raan)), "periapsis": math.degrees(argp)}
+    states, means = {}, {}
+    for backend, run in runs.items():
+        _, _, _, node, periapsis, _ = osculating(run.positions, run.velocities, 1, 1.0)
+        series = mean_series(run.times, run.positions, run.velocities, samples=HISTORY_SAMPLES)
+        both = {"node": (node, series.node), "periapsis": (periapsis, series.periapsis)}
+        states[backend], means[backend] = {}, {}
+        for name in names:
+            instant, averaged = (np.degrees(x) for x in both[name])
+            turns = 360.0 * round((starts[name] - instant[0]) / 360.0)
+            states[backend][name], means[backend][name] = instant + turns, averaged + turns
+    first = next(iter(runs.values()))
+    series = mean_series(first.times, first.positions, first.velocities, samples=HISTORY_SAMPLES)
+    mean_elements = (float(series.a.mean()), float(series.e.mean()), float(series.inc.mean()), 1.0, primary.j2,
+                     primary.j2_radius / a_m)
+    rates = {"node": oblateness.node_rate(*mean_elements), "periapsis": oblateness.periapsis_rate(*mean_elements)}
+    mean_times = series.times * day
+    lines = {}
+    for name in names:
+        rate = math.degrees(float(rates[name])) / day
+        lines[name] = (float(means[next(iter(runs))][name][0] - rate * mean_times[0]), rate)
+    title = (f"{primary.name}: a = {a_m / 1e3:.0f} km, e = {e:.3g}, i = {math.degrees(inc):.2f} deg; "
+             f"{revolutions} revolutions ({float(problem.times[-1]) * day:.3g} d)")
+    return SecularHistory(title, problem.times * day, states, mean_times, means, lines, k)
+
+
+@dataclass(frozen=True, eq=False)
+class DecayHistory:
+    """A circular orbit decaying by drag as each backend integrates it, until the closed form's end (the band's
+    base or the breakdown altitude): what orbits.plot.drag_decay draws over the closed form. `decay` is the
+    orbits.perturbations.DragDecay integrated; `times` (K,) in days; `altitude[backend]` (K,) the radius less the
+    body's equatorial radius, in km; `mean_times` (B,) and `mean_altitude[backend]` (B,) the same averaged over
+    each revolution of the starting orbit (which removes the small eccentricity drag keeps)."""
+
+    decay: object
+    times: np.ndarray
+    altitude: dict
+    mean_times: np.ndarray
+    mean_altitude: dict
+
+
+def decay_history(decay=None, backends=None) -> DecayHistory:
+    """Integrate the circular orbit of `decay` (an orbits.perturbations.DragDecay; by default the drag_decay scene's)
+    in its exponential band with rebound and heyoka from the start to the end of its lifetime, at most
+    MAX_DECAY_REVOLUTIONS revolutions: a DecayHistory."""
+    from orbits.core.errors import OrbitDomainError
+
+    decay = decay or scene_decay()
+    time_unit = math.sqrt(decay.a0**3 / decay.mu)
+    end = decay.lifetime.to_value("s") / time_unit
+    revolutions = end / (2.0 * math.pi)
+    if not revolutions <= MAX_DECAY_REVOLUTIONS:
+        raise OrbitDomainError(f"the decay lasts {revolutions:.4g} revolutions, more than the "
+                               f"{MAX_DECAY_REVOLUTIONS} a picture integrates: draw the closed form alone")
+    times = _grid(math.floor(revolutions))
+    times = np.append(times, end) if times.size == 0 or times[-1] < end else times
+    runs = _integrate(_picture_backends(backends, forces=True), _drag_problem(decay, times))
+    radius = body(decay.primary).radius
+    altitude = {name: (np.linalg.norm(run.positions[:, 1] - run.positions[:, 0], axis=-1) * decay.a0 - radius) / 1e3
+                for name, run in runs.items()}
+    days = times * time_unit / DAY
+    return DecayHistory(decay, days, altitude, block_averages(days, SAMPLES),
+                        {name: block_averages(values, SAMPLES) for name, values in altitude.items()})
+
+
+@dataclass(frozen=True, eq=False)
+class KozaiHistory:
+    """The Kozai-Lidov cycles of the kozai_lidov scene's triple as each backend integrates them, with the
+    quadrupole theory's marks: what orbits.plot.kozai_cycles draws.
+
+    `times` (K,) in units of the Kozai timescale tau; per backend the osculating `eccentricity`, `inclination` (deg)
+    and `constant` sqrt(1 - e**2) cos i, and that constant averaged over each orbit of the perturber
+    (`mean_constant`, at `mean_times`), which removes the outer orbit's short-period terms; the theory's `e_max`,
+    `inclination_at_e_max` (deg), the `start` value of sqrt(1 - e**2) cos i (which it conserves), the
+    oscillation's `period` (tau) and `accuracy` eps_sa (the relative size of the terms it drops); `title` names
+    the triple and the span.
+    """
+
+    title: str
+    times: np.ndarray
+    eccentricity: dict
+    inclination: dict
+    constant: dict
+    mean_times: np.ndarray
+    mean_constant: dict
+    e_max: float
+    inclination_at_e_max: float
+    start: float
+    period: float
+    accuracy: float
+
+
+def kozai_history(inc_deg: float = 65.0, cycles: float = 2.0, backends=None) -> KozaiHistory:
+    """Integrate the kozai_lidov scene's triple (a test particle at a = 1, e0 = 0.01, omega = 90 deg, inclined
+    inc_deg (45 to 80) to an equal mass's circular orbit at 12) for `cycles` (0.1 to 4) oscillations of e with
+    rebound and heyoka, output KOZAI_SAMPLES times an outer orbit: a KozaiHistory."""
+    inc_deg = _checked(models._positive(80.0, "deg", low=45.0), inc_deg, "inc_deg")
+    cycles = _checked(models._positive(4.0, "cycles", low=0.1), cycles, "cycles")
+    e0, a_out, mass_ratio = 0.01, 12.0, 1.0
+    problem, e_max, period, tau = kozai_problem(inc_deg, e0=e0, a_out=a_out, mass_ratio=mass_ratio, cycles=cycles)
+    outer = 2.0 * math.pi * math.sqrt(a_out**3 / (1.0 + mass_ratio))
+    times = _grid(math.floor(cycles * period / outer), outer, KOZAI_SAMPLES)
+    problem = NBodyProblem(problem.gm, problem.positions, problem.velocities, problem.n_active, times)
+    runs = _integrate(_picture_backends(backends, forces=False), problem)
+    start = math.sqrt((1 - e0) * (1 + e0)) * math.cos(math.radians(inc_deg))
+    eccentricity, inclination, constant = {}, {}, {}
+    for name, run in runs.items():
+        _, e, i, *_ = osculating(run.positions, run.velocities, 2, 1.0)
+        eccentricity[name], inclination[name] = e, np.degrees(i)
+        constant[name] = np.sqrt((1 - e) * (1 + e)) * np.cos(i)
+    title = (f"a test particle at a = 1, e0 = {e0:g}, i0 = {inc_deg:g} deg, and an equal mass at {a_out:g} "
+             f"(circular), for {cycles:g} cycles")
+    return KozaiHistory(title, times / tau, eccentricity, inclination, constant,
+                        block_averages(times / tau, KOZAI_SAMPLES),
+                        {name: block_averages(values, KOZAI_SAMPLES) for name, values in constant.items()}, e_max,
+                        math.degrees(math.acos(start / math.sqrt((1 - e_max) * (1 + e_max)))), start,
+                        period / tau, float(third_body.averaging_parameter(1.0, a_out, 0.0, mass_ratio)))
 
 
 SCENES: dict[str, Callable[..., models.ModelScene]] = {

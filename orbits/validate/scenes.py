@@ -21,6 +21,7 @@ from orbits.core.errors import SceneError
 from orbits.nbody import NBodyProblem
 from orbits.scene import Scene
 from orbits.validate import models
+from orbits.validate import periodic as _periodic  # noqa: F401  (registers the periodic-orbit model scenes)
 from orbits.validate import perturbed as _perturbed  # noqa: F401  (registers the perturbed-orbit model scenes)
 from orbits.validate.plan import CodeUnits, Measurement, Plan, Trajectory, plan
 

@@ -353,7 +353,7 @@ def test_bad_input_names_quantity_value_range_and_unit(kwargs, error, fragment):
 
 
 def test_quantities_table_names_and_only():
-    pair = Binary.from_elements("Earth", "Moon", a=384399 * u.km, e=0.0549)
+    pair = Binary.from_elements("Earth", "Moon", a=384399 * u.km, e=0.0549, inc=90 * u.deg)
     table = pair.quantities()
     assert list(table) == orbits.binary.QUANTITY_NAMES
     assert all(name == name.lower() for name in table)
@@ -366,3 +366,24 @@ def test_quantities_table_names_and_only():
 
 def test_module_examples_run():
     assert doctest.testmod(orbits.binary).failed == 0
+
+
+def test_without_an_inclination_the_sky_quantities_ask_for_it():
+    """No inclination given: K1, K2, f(M), the radial velocities and the sky position raise (never a face-on 0)
+    and the table leaves them out; given i = 90 deg, K1 is the closed form 2 pi a1 / (P sqrt(1 - e**2))."""
+    hot_jupiter = Binary.from_elements(1 * u.solMass, 1 * u.jupiterMass, period=4.23 * u.day)
+    for name in ("rv_semi_amplitude1", "rv_semi_amplitude2", "mass_function"):
+        with pytest.raises(OrbitDomainError, match="needs the inclination i of the orbit to the sky"):
+            getattr(hot_jupiter, name)
+        assert name not in hot_jupiter.quantities()
+    for method in (hot_jupiter.radial_velocities, hot_jupiter.sky_position):
+        with pytest.raises(OrbitDomainError, match="inc=... \\(90 deg: edge-on"):
+            method()
+    with pytest.raises(OrbitDomainError, match="inclination"):
+        hot_jupiter.quantities(["rv_semi_amplitude1"])
+    assert "relative_inclination" not in hot_jupiter.quantities() and "period" in hot_jupiter.quantities()
+    edge_on = Binary.from_elements(1 * u.solMass, 1 * u.jupiterMass, period=4.23 * u.day, inc=90 * u.deg)
+    a1 = edge_on.star1.semi_major_axis.to_value(u.m)
+    expected = 2 * math.pi * a1 / edge_on.period.to_value(u.s)
+    assert edge_on.rv_semi_amplitude1.to_value(u.m / u.s) == pytest.approx(expected, rel=1e-15)  # measured 0
+    assert Binary.circular("Sun", "Jupiter", 5.2 * u.AU, inc=0 * u.deg).rv_semi_amplitude1 == 0 * u.m / u.s

@@ -307,7 +307,7 @@ def test_an_orbit_needs_a_parent_and_an_ephemeris_point():
         Orbit.from_body("Sun", "2026-11-25")
     with pytest.raises(UnknownNameError, match="not in the ephemeris"):
         Orbit.from_body("Titan", "2026-11-25")
-    with pytest.raises(OrbitDomainError, match="no mean orbit"):
+    with pytest.raises(OrbitDomainError, match="no published orbit"):
         Orbit.from_body("Titan")
 
 

@@ -161,7 +161,8 @@ def test_energies_and_angular_momentum_of_both_forms():
     k = probe.kinetic_energy_at(r).to_value(u.J)
     assert math.isclose(k, 722 * probe.speed_at(r).value ** 2 / 2, rel_tol=1e-14)
     assert math.isclose(probe.potential_energy_at(r).to_value(u.J), -jupiter.gm * 722 / 3e8, rel_tol=1e-15)
-    pair = Flyby.between("Sun", "Jupiter", 1 * u.km / u.s, 1 * u.AU)
+    with pytest.warns(orbits.InsideBodyWarning, match="they collide"):  # the notes' example: a collision
+        pair = Flyby.between("Sun", "Jupiter", 1 * u.km / u.s, 1 * u.AU)
     m, big = jupiter.mass, BODIES["Sun"].mass
     eta = 1e3 / (m + big)
     assert math.isclose(pair.energy.to_value(u.J), m * big * (m + big) * eta**2 / 2, rel_tol=1e-14)
@@ -183,7 +184,8 @@ def test_the_hyperbola_as_an_orbit():
 
 
 def test_arrays_broadcast():
-    encounters = Flyby.past("Jupiter", [[3], [6]] * u.km / u.s, [1e6, 2e6, 4e6] * u.km)
+    with pytest.warns(orbits.InsideBodyWarning, match=r"Flyby \(1 of 6\): .* inside Jupiter"):
+        encounters = Flyby.past("Jupiter", [[3], [6]] * u.km / u.s, [1e6, 2e6, 4e6] * u.km)
     assert encounters.shape == (2, 3) and encounters.deflection_angle.shape == (2, 3)
     single = Flyby.past("Jupiter", 6 * u.km / u.s, 2e6 * u.km)
     assert encounters.periapsis_distance[1, 1] == single.periapsis_distance
@@ -199,7 +201,7 @@ def test_arrays_broadcast():
         (lambda: Flyby.past("Earth", 1 * u.km / u.s, 1 * u.km, periapsis=1 * u.km), TypeError, "exactly one"),
         (lambda: Flyby.between("Sun", -1 * u.kg, 1 * u.km / u.s, 1 * u.AU), OrbitDomainError, "mass m2 = -1.0 kg"),
         (lambda: Flyby.past("Earth", 1, 1 * u.km), TypeError, "has no unit"),
-        (lambda: Flyby.past("Earth", 1 * u.km / u.s, 1 * u.km).quantities(["R"]), KeyError, "unknown quantities"),
+        (lambda: Flyby.past("Earth", 1 * u.km / u.s, 1e5 * u.km).quantities(["R"]), KeyError, "unknown quantities"),
     ],
 )
 def test_bad_input_names_quantity_value_range_and_unit(call, error, fragment):
@@ -210,7 +212,8 @@ def test_bad_input_names_quantity_value_range_and_unit(call, error, fragment):
 def test_quantities_tables():
     fixed = Flyby.past("Jupiter", 5.6 * u.km / u.s, 1e6 * u.km)
     assert "energy" not in fixed.quantities() and "star1_periapsis_speed" not in fixed.quantities()
-    pair = Flyby.between("Sun", "Jupiter", 1 * u.km / u.s, 1 * u.AU)
+    with pytest.warns(orbits.InsideBodyWarning, match="they collide"):
+        pair = Flyby.between("Sun", "Jupiter", 1 * u.km / u.s, 1 * u.AU)
     assert list(pair.quantities()) == orbits.flyby.QUANTITY_NAMES
     assert pair.quantities(["star2_periapsis_speed"])["star2_periapsis_speed"] == pair.star2.periapsis_speed
     assert math.isclose(pair.mass.item(), BODIES["Sun"].mass * BODIES["Jupiter"].mass / (pair.mu.item() / G))
@@ -218,3 +221,24 @@ def test_quantities_tables():
 
 def test_module_examples_run():
     assert doctest.testmod(orbits.flyby).failed == 0
+
+
+def test_a_flyby_inside_the_bodies_is_a_collision_said_once():
+    """Flyby.between adds the two catalogue radii, Flyby.past takes the primary's; the relative Orbit does not say
+    it a second time."""
+    import warnings
+
+    from orbits import InsideBodyWarning
+
+    with warnings.catch_warnings(record=True) as said:
+        warnings.simplefilter("always")
+        crash = Flyby.between("Sun", "Jupiter", 1 * u.km / u.s, b=1 * u.AU)
+        assert crash.orbit.e > 1
+    assert [str(w.message) for w in said] == [
+        "Flyby: closest approach 84235.41 km is inside the Sun and Jupiter (radii added: 767192 km): they collide"]
+    assert issubclass(said[0].category, InsideBodyWarning)
+    with pytest.warns(InsideBodyWarning, match="inside Jupiter"):
+        Flyby.past("Jupiter", 5.6 * u.km / u.s, periapsis=50_000 * u.km)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert Flyby.past("Jupiter", 5.6 * u.km / u.s, periapsis=200_000 * u.km).orbit.e > 1

@@ -28,9 +28,9 @@ def _warnings_are_errors():
 @pytest.mark.parametrize(
     "build, fragment",
     [
-        (lambda: Orbit.from_elements("Earth", a=7000 * u.km, e=0.1, inc=np.nan * u.deg), "inclination i = nan rad"),
-        (lambda: Orbit.from_elements("Earth", a=7000 * u.km, e=0.1, raan=np.nan * u.deg), "Omega = nan rad"),
-        (lambda: Orbit.from_elements("Earth", a=7000 * u.km, e=0.1, argp=np.inf * u.deg), "omega = inf rad"),
+        (lambda: Orbit.from_elements("Earth", a=8000 * u.km, e=0.1, inc=np.nan * u.deg), "inclination i = nan rad"),
+        (lambda: Orbit.from_elements("Earth", a=8000 * u.km, e=0.1, raan=np.nan * u.deg), "Omega = nan rad"),
+        (lambda: Orbit.from_elements("Earth", a=8000 * u.km, e=0.1, argp=np.inf * u.deg), "omega = inf rad"),
         (lambda: Orbit.from_elements("Earth", a=1e-300 * u.km, e=0.1), "|a| = 1e-297 m is outside the range"),
         (lambda: Orbit.from_elements("Earth", a=1e300 * u.km, e=0.1), "overflow or underflow float64"),
         (lambda: Orbit.from_elements("Earth", q=7000 * u.km, e=1e300), "e = 1e+300 is outside [0, 1e+12]"),
@@ -107,6 +107,15 @@ def test_the_command_line_refuses_them_in_one_line(args, fragment):
     assert fragment in result.stderr and len(result.stderr.strip().splitlines()) == 1
 
 
+def test_a_body_name_where_a_quantity_belongs_is_named_as_a_body():
+    from orbits.inputs import parse_quantity
+
+    with pytest.raises(OrbitDomainError, match="--r1: 'Earth' is a body, not a length"):
+        parse_quantity("Earth", "length", "--r1")
+    with pytest.raises(OrbitDomainError, match="cannot read 'Eartth' as a quantity"):
+        parse_quantity("Eartth", "length", "--r1")
+
+
 # ---- what a float64 array cannot stand for, and angles that count modulo a turn -----------------------------
 
 
@@ -116,7 +125,7 @@ def test_the_command_line_refuses_them_in_one_line(args, fragment):
     (lambda: Orbit.from_elements("Earth", a=[7000, 8000] * u.km, e=np.ma.MaskedArray([0.1, 0.2], mask=[0, 1])),
      "eccentricity e is a masked array"),
     (lambda: Orbit.from_elements("Earth", a=(7000 + 1j) * u.km, e=0.1), "is complex; pass real numbers"),
-    (lambda: Orbit.from_elements("Earth", a=7000 * u.km, e=0.1 + 0j), "eccentricity e = (0.1+0j) is complex"),
+    (lambda: Orbit.from_elements("Earth", a=8000 * u.km, e=0.1 + 0j), "eccentricity e = (0.1+0j) is complex"),
 ])
 def test_masked_and_complex_values_are_refused_not_stripped(build, fragment):
     """A masked array's masked elements were computed and the mask dropped; a complex length kept its real part
@@ -135,17 +144,17 @@ def wrapped(value: float, turn: int) -> float:
                                             (-180.0, 180.0), (2.0**60 + 2.0**10, wrapped(2.0**60 + 2.0**10, 360))])
 def test_an_angle_in_degrees_keeps_its_value_however_large(degrees, exact):
     """nu = 1e15 deg gave -79.954 deg (exact: 1e15 mod 360 = 280, i.e. -80); 1e20 deg as a node gave 100.35 deg."""
-    orbit = Orbit.from_elements("Earth", a=7000 * u.km, e=0.1, inc=10 * u.deg, raan=degrees * u.deg,
+    orbit = Orbit.from_elements("Earth", a=8000 * u.km, e=0.1, inc=10 * u.deg, raan=degrees * u.deg,
                                 nu=degrees * u.deg)
     assert orbit.true_anomaly.to_value(u.deg) == pytest.approx(exact, abs=2e-14)  # one rounding to rad and back
     assert orbit.ascending_node.to_value(u.deg) == pytest.approx(exact % 360, abs=2e-14)
 
 
 def test_whole_turns_come_off_in_any_unit_a_turn_is_a_whole_number_of():
-    one = Orbit.from_elements("Earth", a=7000 * u.km, e=0.1, nu=1e20 * u.arcsec).true_anomaly
+    one = Orbit.from_elements("Earth", a=8000 * u.km, e=0.1, nu=1e20 * u.arcsec).true_anomaly
     assert one.to_value(u.arcsec) == pytest.approx(wrapped(1e20, 1296000), abs=1e-9)  # 640000 arcsec
     with pytest.raises(OrbitDomainError, match=r"true anomaly nu = 1e\+20 rad is too large for an exact reduction"):
-        Orbit.from_elements("Earth", a=7000 * u.km, e=0.1, nu=1e20 * u.rad)
+        Orbit.from_elements("Earth", a=8000 * u.km, e=0.1, nu=1e20 * u.rad)
 
 
 def test_the_mean_and_true_anomalies_agree_and_e_lies_in_its_documented_range():

@@ -58,9 +58,11 @@ def test_repr_is_one_line():
 
 def test_quantities_and_html():
     t = lambert([7000, 0, 0] * u.km, [0, 8000, 1000] * u.km, 40 * u.min, "Earth")
-    q = t.quantities()
+    with pytest.warns(orbits.InsideBodyWarning, match="closest approach 3876.922 km .* passes through the Earth"):
+        q = t.quantities()  # the transfer's elements come from its Orbit, which sees it dive through the Earth
     assert list(q) == ["v1", "v2", "departure_speed", "arrival_speed", "transfer_angle", "total_angle",
-                       "semi_major_axis", "eccentricity", "time_of_flight"]
+                       "semi_major_axis", "eccentricity", "inclination", "ascending_node", "argument_of_periapsis",
+                       "periapsis_distance", "departure_true_anomaly", "time_of_flight"]
     assert t.quantities(["eccentricity"]).keys() == {"eccentricity"}
     assert "LambertTransfer" in t._repr_html_()
 
@@ -90,3 +92,61 @@ def test_errors(args, kwargs, error, message):
 def test_opposite_positions_with_a_normal():
     t = lambert([1, 0, 0] * u.AU, [-1.2, 0, 0] * u.AU, 250 * u.day, normal=[0, 0, 1])
     assert t.transfer_angle.to_value(u.deg) == 180.0 and np.cross(t.r1, t.v1_si)[2] > 0
+
+
+def test_between_bodies_on_dates_is_the_porkchop_cell_and_reaches_mars():
+    """Earth 2026-11-26 to Mars 2027-08-15: the porkchop cell of the same dates to 1e-12 (the same states, mass and
+    plane rule), and v1 propagated at 60 digits (orbits.tools.reference) from the Earth's DE421 position as astropy
+    reads it reaches astropy's DE421 Mars within 1e-12 of its distance."""
+    from astropy.coordinates import get_body_barycentric_posvel
+    from astropy.time import Time
+
+    from orbits import Porkchop, ephemeris
+    from orbits.tools.reference import propagate
+
+    trip = lambert("Earth", "Mars", depart="2026-11-26", arrive="2027-08-15", source="de421")
+    cell = Porkchop.between("Earth", "Mars", ("2026-11-26", "2026-11-26"), ("2027-08-15", "2027-08-15"),
+                            source="de421")
+    assert cell.shape == (1, 1)
+    for ours, theirs in ((trip.v1_si, cell.v1_si[0, 0]), (trip.v2_si, cell.v2_si[0, 0])):
+        assert np.linalg.norm(ours - theirs) <= 1e-12 * np.linalg.norm(theirs)  # measured 0
+    assert trip.c3.value == pytest.approx(cell.c3[0, 0].unmasked.value, rel=1e-12)
+    assert trip.arrival_v_inf.value == pytest.approx(cell.arrival_v_inf[0, 0].unmasked.value, rel=1e-12)
+
+    def heliocentric(name, when):
+        kernel = ephemeris.kernel_path()
+        r, v = get_body_barycentric_posvel(name, when, ephemeris=kernel)
+        r_sun, v_sun = get_body_barycentric_posvel("sun", when, ephemeris=kernel)
+        return (r - r_sun).xyz.to_value(u.m), (v - v_sun).xyz.to_value(u.m / u.s)
+
+    depart, arrive = (Time(t, scale="utc") for t in ("2026-11-26", "2027-08-15"))
+    r_earth, v_earth = heliocentric("earth", depart)
+    r_mars, v_mars = heliocentric("mars", arrive)
+    r, v = propagate(r_earth, trip.v1_si, float(trip.mu), float(trip.tof))
+    miss = np.linalg.norm(np.array([float(x) for x in r]) - r_mars) / np.linalg.norm(r_mars)
+    assert miss < 1e-12  # measured 3.0e-15
+    assert trip.c3.value == pytest.approx(np.sum((trip.v1_si - v_earth) ** 2), rel=2e-15)
+    assert trip.arrival_v_inf.value == pytest.approx(
+        np.linalg.norm(np.array([float(x) for x in v]) - v_mars), rel=1e-13)  # measured 1.2e-14
+    normal = np.cross(trip.r1, trip.v1_si)
+    assert normal @ orbits.manoeuvres.lambert.ECLIPTIC_POLE > 0  # prograde about the ecliptic pole
+    assert trip.inclination.to_value(u.deg) < 2  # the transfer lies near the ecliptic, as the planets do
+
+
+def test_between_bodies_errors_and_elements_without_bodies():
+    with pytest.raises(OrbitDomainError, match="needs the dates depart=... and arrive=..."):
+        lambert("Earth", "Mars", depart="2026-11-26")
+    with pytest.raises(OrbitDomainError, match="the time of flight is arrive - depart"):
+        lambert("Earth", "Mars", 200 * u.day, depart="2026-11-26", arrive="2027-08-15")
+    with pytest.raises(OrbitDomainError, match="must be after depart"):
+        lambert("Earth", "Mars", depart="2027-08-15", arrive="2026-11-26")
+    with pytest.raises(OrbitDomainError, match="both ends are Mars"):
+        lambert("mars", "Mars", depart="2026-11-26", arrive="2027-08-15")
+    with pytest.raises(OrbitDomainError, match="depart and arrive are dates of a transfer between bodies"):
+        lambert([1, 0, 0] * u.AU, [0, 1.5, 0] * u.AU, 200 * u.day, depart="2026-11-26")
+    plain = lambert([1, 0, 0] * u.AU, [0, 1.5, 0] * u.AU, 200 * u.day, "Sun")
+    assert plain.inclination == 0 * u.rad and "c3" not in plain.quantities()
+    with pytest.raises(OrbitDomainError, match="needs the bodies at both ends"):
+        _ = plain.c3
+    assert plain.periapsis_distance.to_value(u.AU) == pytest.approx(
+        plain.semi_major_axis.to_value(u.AU) * (1 - plain.eccentricity.value), rel=1e-14)

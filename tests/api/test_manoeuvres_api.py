@@ -13,6 +13,7 @@ import orbits.manoeuvres.assist
 import orbits.manoeuvres.impulsive
 import orbits.manoeuvres.rocket
 from orbits import (
+    BODIES,
     BiElliptic,
     CosmicVelocities,
     Departure,
@@ -181,7 +182,7 @@ def test_the_third_cosmic_velocity_as_a_departure():
 
 def test_manoeuvre_errors():
     with pytest.raises(OrbitDomainError, match=r"intermediate radius rb = 50000000.0 m is outside the allowed range "
-                                               r"\(max\(r1, r2\), inf\) m"):
+                                               r"\[max\(r1, r2\), inf\) m"):
         BiElliptic.between("Earth", 7000 * u.km, 105000 * u.km, 50000 * u.km)
     with pytest.raises(OrbitDomainError, match=r"final orbit radius r2 = 300000.0 m is inside Earth"):
         Hohmann.between("Earth", 6678 * u.km, 300 * u.km)
@@ -268,3 +269,40 @@ def test_the_integrated_kicks_are_the_burns_reported(build):
     if reported:
         np.testing.assert_allclose(kicks, reported, rtol=5e-16, atol=0)
     assert kicks.sum() == pytest.approx(manoeuvre.delta_v.to_value(u.m / u.s), rel=4e-16)
+
+
+@pytest.mark.parametrize("r1, r2", [(7000, 105000), (105000, 7000)])
+def test_bielliptic_with_rb_at_the_larger_radius_is_hohmann(r1, r2):
+    """rb = max(r1, r2) is the degenerate bi-elliptic transfer (edges inclusive where the physics is defined): one
+    burn is zero, the budget is Hohmann's, and the time adds half a circle at the larger radius."""
+    degenerate = BiElliptic.between("Earth", r1 * u.km, r2 * u.km, max(r1, r2) * u.km)
+    hohmann = Hohmann.between("Earth", r1 * u.km, r2 * u.km)
+    zero = degenerate.third_burn if r2 > r1 else degenerate.first_burn
+    assert zero == 0 * u.m / u.s
+    assert degenerate.delta_v.value == pytest.approx(hohmann.delta_v.value, rel=4e-16)  # measured 0 and 2.2e-16
+    assert degenerate.saving.to_value(u.m / u.s) == pytest.approx(0, abs=1e-12)
+    half_circle = math.pi * math.sqrt((max(r1, r2) * 1e3) ** 3 / BODIES["Earth"].gm)
+    assert degenerate.transfer_time.value == pytest.approx(hohmann.transfer_time.value + half_circle, rel=1e-15)
+    with pytest.raises(OrbitDomainError, match=r"allowed range \[max\(r1, r2\), inf\)"):
+        BiElliptic.between("Earth", r1 * u.km, r2 * u.km, (max(r1, r2) - 1e-6) * u.km)
+
+
+def test_hohmann_between_the_mean_orbits_of_two_bodies():
+    """Earth to Mars as circles of radius a: the synodic period is 1 / (1/T1 - 1/T2) of the two circular periods
+    (779.9 d, the published 779.94 d of the true orbits), and a body leading by the phase angle at departure
+    reaches the meeting point (pi ahead of the departure point) exactly at arrival: 44.3 deg for Mars."""
+    trip = Hohmann.between_bodies("Earth", "Mars")
+    mu = BODIES["Sun"].gm
+    t1, t2 = (2 * math.pi * math.sqrt(r**3 / mu) for r in (trip.r1, trip.r2))
+    assert trip.synodic_period.to_value(u.s) == pytest.approx(1 / (1 / t1 - 1 / t2), rel=1e-14)  # measured 1.5e-16
+    assert trip.synodic_period.to_value(u.day) == pytest.approx(779.94, rel=2e-4)
+    swept = trip.phase_angle.to_value(u.rad) + 2 * math.pi / t2 * trip.transfer_time.to_value(u.s)
+    assert swept == pytest.approx(math.pi, rel=1e-15)
+    assert trip.phase_angle.to_value(u.deg) == pytest.approx(44.35, abs=0.01)
+    assert trip.r1 == BODIES["Earth"].orbit.a and trip.r2 == BODIES["Mars"].orbit.a
+    venus = Hohmann.between_bodies("Earth", "Venus")
+    assert -60 < venus.phase_angle.to_value(u.deg) < -50  # inward: Venus trails by 54 deg
+    with pytest.raises(OrbitDomainError, match="the synodic period needs two different radii"):
+        _ = Hohmann.between("Earth", 7000 * u.km, 7000 * u.km).synodic_period
+    with pytest.raises(OrbitDomainError, match="Moon orbits Earth and Mars orbits Sun"):
+        Hohmann.between_bodies("Moon", "Mars")

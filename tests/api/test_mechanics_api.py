@@ -19,6 +19,7 @@ from orbits import (
     DampedOscillator,
     DrivenOscillator,
     EffectiveGravity,
+    InsideBodyWarning,
     OrbitDomainError,
     Pendulum,
     Projectile,
@@ -82,8 +83,9 @@ def test_slingshot_is_the_head_on_limit_of_a_flyby():
     assert list(bounced) == [2 * 13.07 + 10.0, 0.0]  # 2 U - v, exactly
     v_inf = np.linalg.norm(craft - planet)
     mu = BODIES["Jupiter"].gm * u.m**3 / u.s**2
-    for periapsis in (1 * u.km, 1 * u.mm):  # a point-mass Jupiter
-        assist = GravityAssist.past(mu, craft * u.km / u.s, planet * u.km / u.s, periapsis, normal=[0, 0, 1])
+    for periapsis in (1 * u.km, 1 * u.mm):  # a point-mass Jupiter: the catalogue's, of radius 71492 km, is hit
+        with pytest.warns(InsideBodyWarning, match="inside Jupiter"):
+            assist = GravityAssist.past(mu, craft * u.km / u.s, planet * u.km / u.s, periapsis, normal=[0, 0, 1])
         after = assist.outgoing_velocity.to_value(u.km / u.s)
         k = (periapsis * (v_inf * u.km / u.s) ** 2 / mu).to_value(u.one)
         miss = np.linalg.norm(after[:2] - bounced) / (2 * v_inf)
@@ -284,3 +286,14 @@ def test_exact_period_on_a_broad_random_set_through_the_public_api():
         error = abs(float(t) - exact) / math.ulp(float(exact))
         worst = max(worst, float(error) - kappa)
     assert worst <= 3.0, worst
+
+
+@pytest.mark.parametrize("drag", ["none", "linear", "quadratic"])
+def test_a_projectile_shows_a_one_line_repr_with_or_without_drag(drag):
+    """The repr names the drag it has (it raised TypeError for a throw without drag, reading the missing rate)."""
+    shot = Projectile.launch(20 * u.m / u.s, 45 * u.deg)
+    shot = {"none": shot, "linear": shot.with_linear_drag(0.1 / u.s),
+            "quadratic": shot.with_quadratic_drag(30 * u.m / u.s)}[drag]
+    text = repr(shot)
+    named = {"none": "no drag", "linear": "linear drag", "quadratic": "quadratic drag"}[drag]
+    assert "\n" not in text and named in text

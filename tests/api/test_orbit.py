@@ -69,11 +69,11 @@ def test_propagate_with_the_state_transition_matrix_moves_a_covariance():
 
 
 def test_arrays_of_orbits_broadcast():
-    orbits = Orbit.from_elements("Earth", a=[7000, 8000, 9000] * u.km, e=np.array([[0.0], [0.5]]))
+    orbits = Orbit.from_elements("Earth", a=[14000, 16000, 18000] * u.km, e=np.array([[0.0], [0.5]]))
     assert orbits.shape == (2, 3)
     assert orbits.period.shape == (2, 3)
     assert orbits.r.shape == (2, 3, 3)
-    single = Orbit.from_elements("Earth", a=8000 * u.km, e=0.5)
+    single = Orbit.from_elements("Earth", a=16000 * u.km, e=0.5)
     assert orbits.period[1, 1] == single.period
 
 
@@ -88,7 +88,7 @@ def test_energy_needs_the_mass_and_then_matches_the_notes():
 
 
 def test_quantities_table_and_only():
-    orbit = Orbit.from_elements("Earth", a=7000 * u.km, e=0.1)
+    orbit = Orbit.from_elements("Earth", a=8000 * u.km, e=0.1)
     everything = orbit.quantities()
     assert "period" in everything and "energy" not in everything  # no mass given: left out
     assert list(orbit.quantities(["period", "eccentricity"])) == ["period", "eccentricity"]
@@ -137,3 +137,24 @@ def test_import_orbits_does_not_load_heavy_backends():
     code = "import sys, orbits; print(sorted(m for m in ('rebound', 'heyoka', 'matplotlib') if m in sys.modules))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
+
+
+def test_an_orbit_through_its_primary_says_so_whichever_constructor_built_it():
+    """Periapsis below the catalogue body's equatorial radius: an InsideBodyWarning naming how many orbits of an
+    array, from from_elements, circular and from_vectors alike; a GM or mass that is no catalogue body's, or an
+    orbit above the surface, says nothing."""
+    import warnings
+
+    from orbits import InsideBodyWarning
+
+    with pytest.warns(InsideBodyWarning, match=r"Orbit \(1 of 3\): closest approach 6300 km is inside the Earth"):
+        Orbit.from_elements("Earth", a=[7000, 8000, 9000] * u.km, e=0.1)
+    with pytest.warns(InsideBodyWarning, match="inside the Earth"):
+        Orbit.circular("Earth", 6000 * u.km)
+    with pytest.warns(InsideBodyWarning, match="closest approach 1500 km is inside the Moon"):
+        Orbit.from_vectors("Moon", [1500, 0, 0] * u.km, [0, 2.0, 0] * u.km / u.s)  # faster than circular there
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        Orbit.from_elements("Earth", a=[7000, 8000, 9000] * u.km, e=0.05)  # q = 6650 km and up: above
+        Orbit.from_elements(3.986e14 * u.m**3 / u.s**2, a=7000 * u.km, e=0.5)  # a GM, no catalogue radius
+        Orbit.from_body("Mars")

@@ -1,6 +1,7 @@
 """orbits.perturbations: the unit-aware designs, decay and Kozai-Lidov objects, their one-line errors."""
 
 import astropy.units as u
+import numpy as np
 import pytest
 
 from orbits import Orbit, OrbitDomainError
@@ -49,12 +50,32 @@ def test_drag_decay_and_kozai_lidov_objects():
     assert (rate * 36525 * u.day).to_value(u.arcsec) == pytest.approx(42.98, abs=0.005)
 
 
+def test_drag_decay_runs_through_the_band_below_its_altitude():
+    """An orbit at a band's base decays through the band below (a lifetime, not zero); a band may start at the
+    surface; the breakdown altitude ends the closed form when it lies above the band's base."""
+    at_base = DragDecay.of("Earth", altitude=400 * u.km, ballistic=0.005 * u.m**2 / u.kg)
+    assert at_base.quantities()["base_altitude"].to_value(u.km) == pytest.approx(350.0)
+    assert at_base.lifetime.to_value(u.day) > 100.0
+    mars = DragDecay.of("Mars", altitude=200 * u.km, ballistic=0.01 * u.m**2 / u.kg, density=0.020 * u.kg / u.m**3,
+                        scale_height=11.1 * u.km, base_altitude=0 * u.km)
+    breakdown = mars.breakdown_altitude.to_value(u.km)
+    assert breakdown > 100.0  # measured 157.3 km, far above the surface
+    assert mars.altitude_after(mars.lifetime).to_value(u.km) == pytest.approx(breakdown, rel=1e-12)
+    per_revolution = 2 * np.pi * 0.01 * mars.quantities()["density_at_base"].value * np.exp(-breakdown / 11.1) * (
+        mars.a0 - 200e3 + breakdown * 1e3) ** 2
+    assert per_revolution == pytest.approx(11.1e3, rel=1e-12)  # the decay in a revolution is H there
+
+
 @pytest.mark.parametrize("call, message", [
     (lambda: SecularOrbit.of(Orbit.circular("Ceres", 1000 * u.km)), "Ceres has no J2 in the catalogue"),
     (lambda: sun_synchronous("Earth", a=20_000 * u.km, e=0.1), "no sun-synchronous orbit at a = 20000 km, e = 0.1"),
     (lambda: sun_synchronous("Earth", altitude=700 * u.km, e=0.99), "lies inside Earth"),
     (lambda: DragDecay.of("Earth", altitude=300 * u.km, ballistic=0.01 * u.m**2 / u.kg, density=1e-11 * u.kg / u.m**3,
-                          scale_height=50 * u.km, base_altitude=350 * u.km), "below the atmosphere band's base"),
+                          scale_height=50 * u.km, base_altitude=350 * u.km), "not above the atmosphere band's base"),
+    (lambda: DragDecay.of("Earth", altitude=160 * u.km, ballistic=0.1 * u.m**2 / u.kg),
+     "sinks 35.66 km a revolution, more than the scale height H = 22.523 km"),
+    (lambda: DragDecay.of("Earth", altitude=100 * u.km, ballistic=0.01 * u.m**2 / u.kg),
+     r"outside the table, \(100, 1500\] km"),
     (lambda: frozen("Earth", altitude=700 * u.km, inc=63.43494882292201 * u.deg), "critical inclination"),
 ])
 def test_bad_inputs_are_one_line_errors(call, message):

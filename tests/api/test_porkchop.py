@@ -245,7 +245,7 @@ def test_the_picture_draws_contours_and_marks_the_minima(chart, tmp_path):
         star = marks[0].get_xydata()[0]
         assert star[0] == pytest.approx(chart.minimum_c3.launch.tdb.jd - 2440587.5)
         assert star[1] == pytest.approx(chart.minimum_c3.arrival.tdb.jd - 2440587.5)
-        assert "least C3: 2026-10-30" in marks[0].get_label() or "least C3: 2026-10-31" in marks[0].get_label()
+        assert "least $C_3$: 2026-10-30" in marks[0].get_label() or "least $C_3$: 2026-10-31" in marks[0].get_label()
         assert ax.get_xlabel() == "launch date [TDB]" and ax.get_ylabel() == "arrival date [TDB]"
         assert ax.xaxis.get_major_formatter().fmt == "%Y-%m-%d"
         save(fig, tmp_path / "porkchop.png")
@@ -259,3 +259,19 @@ def test_dates_are_on_the_grid(chart):
     steps = np.diff(chart.launch_dates.jd)
     np.testing.assert_allclose(steps, 10.0, rtol=0, atol=1e-9)
     assert abs((chart.launch_dates[0] - Time("2026-09-01", scale="utc")).to_value(u.s)) < 1e-6
+
+
+def test_a_least_value_on_the_grid_edge_is_flagged():
+    """Launches ending 2026-10-15, before the 2026 window's least C3 (2026-10-31): the least C3 on the grid is its
+    last launch date (2026-10-01), flagged; the arrival window around 2027-08-20 holds it inside, not on its
+    edge."""
+    early = Porkchop.between("Earth", "Mars", ("2026-09-01", "2026-10-15"), ("2027-06-01", "2027-11-01"),
+                             step=15 * u.day)
+    best = early.minimum_c3
+    assert best.launch.tdb.iso[:10] == "2026-10-01" and best.edges == ("last launch date",)
+    assert best.edge_note.startswith("least C3 on the grid's edge (last launch date)")
+    assert "on the grid's edge (last launch date)" in repr(best)
+    whole = Porkchop.between("Earth", "Mars", LAUNCH_2026, ARRIVAL_2027, step=15 * u.day)
+    assert whole.minimum_c3.edges == () and whole.minimum_c3.edge_note is None
+    one_launch = Porkchop.between("Earth", "Mars", ("2026-10-31", "2026-10-31"), ARRIVAL_2027, step=15 * u.day)
+    assert "launch" not in " ".join(one_launch.minimum_c3.edges)  # a single date is no edge of a search

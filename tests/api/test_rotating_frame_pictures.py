@@ -53,7 +53,7 @@ def test_earth_moon_zero_velocity_curves_are_where_the_jacobi_constant_says(eart
     _, ax = lagrange_plane(earth_moon, points=301)
     labels = {handle.get_label() for handle in ax.get_legend().legend_handles}
     assert {"forbidden at C(L1)", "forbidden at C(L2)", "forbidden at C(L3)", "Earth (M)"} <= labels
-    assert any(label.startswith("Moon (m), mu = 0.01215") for label in labels)
+    assert any(label.startswith("Moon (m), $\\mu$ = 0.01215") for label in labels)
     assert "384399 km" in ax.get_xlabel()
     filled, lines = ax.collections[0], ax.collections[1]
     constants = np.sort(earth_moon.jacobi_constants.to_value(u.m**2 / u.s**2)[:3])
@@ -132,7 +132,7 @@ def test_a_horseshoe_of_the_sun_and_earth_goes_round_through_l3():
     longitude, offset = ax.get_lines()[0].get_xydata().T
     shown = np.isfinite(longitude)
     assert longitude[shown].min() < -179 and longitude[shown].max() > 179  # it passes L3
-    assert np.abs(longitude[shown]).min() > 10  # and turns back before the Earth; measured 12.8 deg
+    assert 10 < np.abs(longitude[shown]).min() < 16  # and turns back before the Earth; measured 12.8 deg
     assert 0.004 < np.nanmax(np.abs(offset)) < 0.006  # measured 0.0049 r
     assert ax.get_xlim() == (-180, 180) and "longitude" in ax.get_xlabel()
 

@@ -36,12 +36,16 @@ KEYS = {
 }
 
 
+#: helpers of the rules that check shapes or quote values, not a quantity's value
+NOT_RULES = {"<module>", "broadcast", "broadcast_shape", "first_where", "_spaced"}
+
+
 def _is_rule(code) -> bool:
     module = code.co_filename.replace("\\", "/")
-    if code.co_name == "<module>":
+    if code.co_name in NOT_RULES or code.co_name.startswith("<"):
         return False
-    if module.endswith("orbits/core/checks.py"):  # but broadcast(_shape), which every core function calls to broadcast
-        return not code.co_name.startswith(("broadcast", "<"))  # its arguments (naming them when they do not fit)
+    if module.endswith("orbits/core/checks.py"):
+        return True
     if module.endswith("orbits/inputs.py"):
         return not code.co_name.startswith(("parse_", "_")) and code.co_name not in ("names", "find_body",
                                                                                     "named_body")
@@ -52,8 +56,17 @@ def _is_text_parser(code) -> bool:
     return code.co_filename.replace("\\", "/").endswith("orbits/inputs.py") and code.co_name.startswith("parse_")
 
 
+def _importing(frame) -> bool:
+    """Whether the call comes from a module of ours being imported (constants computed once, not an input)."""
+    while frame is not None:
+        if frame.f_code.co_name == "<module>" and "/orbits/" in frame.f_code.co_filename.replace("\\", "/"):
+            return True
+        frame = frame.f_back
+    return False
+
+
 def checks_during(call) -> Counter:
-    """Counter of input key -> outermost rule calls made while `call()` runs."""
+    """Counter of input key -> outermost rule calls made while `call()` runs (not those of an import)."""
     counts: Counter = Counter()
     depth = [0]
 
@@ -62,7 +75,7 @@ def checks_during(call) -> Counter:
         if not (_is_rule(code) or _is_text_parser(code)):
             return
         if event == "call":
-            if depth[0] == 0 and _is_rule(code):
+            if depth[0] == 0 and _is_rule(code) and not _importing(frame.f_back):
                 named = frame.f_locals.get("name")
                 keys = (KEYS.get(named, named),) if isinstance(named, str) else IMPLIED.get(code.co_name,
                                                                                            (code.co_name,))

@@ -195,3 +195,27 @@ def test_plot_option_on_the_other_verbs(args, tmp_path):
     result = run(*args, "--plot", str(picture))
     assert result.exit_code == 0, result.output
     assert picture.read_bytes()[:5] == b"%PDF-"
+
+
+def test_orbit_speed_energies_and_swept_area_asked_for():
+    import astropy.units as u
+
+    from orbits import Orbit
+
+    args = ["orbit", "--primary", "Earth", "--a", "8000 km", "--e", "0.1", "--mass", "1000 kg", "--at-r", "7500 km",
+            "--area-between", "0 h,1 h", "--format", "json"]
+    result = run(*args)
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    orbit = Orbit.from_elements("Earth", a=8000 * u.km, e=0.1, mass=1000 * u.kg)
+    assert data["speed_at_r"]["value"] == orbit.speed_at(7500 * u.km).value
+    assert data["kinetic_energy_at_r"]["value"] == orbit.kinetic_energy_at(7500 * u.km).value
+    assert data["potential_energy_at_r"]["unit"] == "J"
+    assert data["area_swept"]["value"] == orbit.area_swept(0 * u.s, 1 * u.h).value
+    assert data["laplace_runge_lenz_magnitude"]["value"] == orbit.laplace_runge_lenz_magnitude.value
+    only = json.loads(run(*args[:-2], "--only", "speed_at_r,period", "--format", "json").stdout)
+    assert set(only) == {"speed_at_r", "period"}
+    unreachable = run("orbit", "--primary", "Earth", "--a", "8000 km", "--e", "0.1", "--at-r", "9000 km")
+    assert unreachable.exit_code == 2 and "the body never gets there" in unreachable.output
+    bad = run("orbit", "--primary", "Earth", "--a", "8000 km", "--area-between", "1 h")
+    assert bad.exit_code == 2 and "write T1,T2" in bad.output

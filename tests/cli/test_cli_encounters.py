@@ -86,7 +86,7 @@ def test_flyby_inside_the_sun_warns_and_draws_a_4_au_picture(tmp_path):
     result = runner.invoke(app, [*args, "--plot", str(picture)])
     assert result.exit_code == 0, result.output
     assert result.stderr.strip().splitlines() == [
-        "orbits: warning: closest approach 8.424e4 km is inside the radii of Sun and Jupiter added (7.672e5 km): "
+        "orbits: warning: Flyby: closest approach 84235.41 km is inside the Sun and Jupiter (radii added: 767192 km): "
         "they collide"
     ]
     assert picture.stat().st_size > 10_000
@@ -171,3 +171,25 @@ def test_a_warning_not_of_orbits_is_passed_on_once_and_the_command_returns():
         warnings.simplefilter("always")
         assert reports_errors(command)() == 42
     assert [(w.category, str(w.message)) for w in passed_on] == [(UserWarning, "from a library")]
+
+
+def test_binary_without_an_inclination_says_what_it_left_out():
+    """A hot Jupiter without --inc: no K1 = 0 and f(M) = 0 of a face-on orbit; the title and the JSON say why."""
+    args = ["binary", "--m1", "1 solMass", "--m2", "1 jupiterMass", "--period", "4.23 d"]
+    data = run_json(*args)
+    assert "rv_semi_amplitude1" not in data and "mass_function" not in data
+    assert "inclination not given" in data["about"]["inclination"] and "--inc" in data["about"]["inclination"]
+    table = runner.invoke(app, args)
+    assert table.exit_code == 0 and "inclination not given" in table.stdout
+    asked = runner.invoke(app, [*args, "--only", "rv_semi_amplitude1"])
+    assert asked.exit_code == 2 and "give --inc" in asked.output
+    edge_on = run_json(*args, "--inc", "90", "--only", "rv_semi_amplitude1")
+    assert edge_on["rv_semi_amplitude1"]["value"] == pytest.approx(125.59, abs=0.01)  # 2 pi a1 / P
+    assert "about" not in edge_on
+
+
+def test_a_flyby_through_the_sun_is_called_a_collision_once():
+    result = runner.invoke(app, ["flyby", "--primary", "Sun", "--secondary", "Jupiter", "--v-inf", "1 km/s",
+                                 "--b", "1 AU", "--only", "periapsis_distance"])
+    assert result.exit_code == 0
+    assert result.stderr.count("they collide") == 1 and "inside the Sun and Jupiter" in result.stderr

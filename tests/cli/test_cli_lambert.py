@@ -65,3 +65,23 @@ def test_bad_input_is_one_line_and_exit_2(args, message):
     assert result.exit_code == 2
     lines = [line for line in result.output.splitlines() if line.strip()]
     assert len(lines) == 1 and lines[0].startswith("orbits: error:") and message in lines[0], result.output
+
+
+def test_between_bodies_on_dates():
+    from orbits import lambert
+
+    args = ["lambert", "--from", "Earth", "--to", "Mars", "--depart", "2026-11-26", "--arrive", "2027-08-15"]
+    table = run(*args)
+    assert table.exit_code == 0, table.output
+    assert "Lambert transfer from Earth (2026-11-26 00:01:09 TDB) to Mars" in table.output and "c3" in table.output
+    assert max(map(len, table.output.splitlines())) <= 80
+    data = json.loads(run(*args, "--format", "json").stdout)
+    trip = lambert("Earth", "Mars", depart="2026-11-26", arrive="2027-08-15")
+    assert data["c3"]["value"] == trip.c3.value and data["about"]["from"] == "Earth"
+    assert data["v1"]["value"] == trip.v1_si.tolist()
+    body_as_position = run("lambert", "--r1", "Earth", "--r2", "Mars", "--tof", "200 d")
+    assert body_as_position.exit_code == 2 and "--from and --to" in body_as_position.output
+    mixed = run(*args, "--tof", "200 d")
+    assert mixed.exit_code == 2 and "--tof" in mixed.output
+    missing = run("lambert", "--from", "Earth", "--to", "Mars", "--depart", "2026-11-26")
+    assert missing.exit_code == 2 and "needs --arrive" in missing.output

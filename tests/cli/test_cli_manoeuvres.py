@@ -115,3 +115,14 @@ def test_assist_refuses_a_zero_axis_in_one_line():
             "--periapsis", "200000 km", "--normal", "0,0,0"]
     result = CliRunner().invoke(app, args)
     assert result.exit_code == 2 and "zero vector" in result.output and len(result.output.strip().splitlines()) == 1
+
+
+def test_hohmann_between_bodies_and_a_body_where_a_radius_belongs():
+    data = run_json("transfer", "hohmann", "--from", "Earth", "--to", "Mars")
+    assert round(data["synodic_period"]["value"] / 86400, 1) == 779.9
+    assert round(math.degrees(data["phase_angle"]["value"]), 2) == 44.35
+    result = runner.invoke(app, ["transfer", "hohmann", "--r1", "Earth", "--r2", "Mars"])
+    assert result.exit_code == 2 and "'Earth' is a body, not a radius" in result.output
+    assert "--from Earth --to Mars" in result.output
+    both = runner.invoke(app, ["transfer", "hohmann", "--from", "Earth", "--to", "Mars", "--r1", "7000 km"])
+    assert both.exit_code == 2 and "without --r1" in both.output

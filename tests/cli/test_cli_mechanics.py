@@ -98,7 +98,7 @@ def test_collide_plot_shows_the_velocities_after(monkeypatch, tmp_path):
         tip = [drawn_lines[label].get_xdata()[1], drawn_lines[label].get_ydata()[1]]
         assert tip == pytest.approx(velocity.to_value(u.m / u.s), rel=1e-15)
     assert "body 2 before (at rest)" in drawn_lines  # a zero vector is named, not lost
-    assert ax.get_legend() is not None and ax.get_xlabel() == "v_x [m / s]"
+    assert ax.get_legend() is not None and ax.get_xlabel() == "$v_x$ [m/s]"
 
 
 def test_projectile_plot_lands_where_the_table_says(monkeypatch, tmp_path):
@@ -158,3 +158,19 @@ def test_bad_input_is_one_line_and_exit_2(args, fragment):
     assert result.exit_code == 2
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("orbits: error:") and fragment in lines[0]
+
+
+def test_the_course_quantities_are_in_the_tables_and_json():
+    """Each body's kinetic energy before and after, the projectile's accelerations at launch and landing, the
+    vertical circle's at the bottom and top: in the JSON, equal to the library."""
+    hit = run_json("collide", "--m1", "2 kg", "--v1", "3 m/s", "--m2", "1 kg", "--v2", "0 m/s")
+    library = Collision.head_on(2 * u.kg, 3 * u.m / u.s, 1 * u.kg, 0 * u.m / u.s)
+    for name in ("kinetic_energy1_before", "kinetic_energy2_before", "kinetic_energy1_after", "kinetic_energy2_after"):
+        assert hit[name]["value"] == getattr(library, name).value and hit[name]["unit"] == "J"
+    thrown = run_json("projectile", "--speed", "30 m/s", "--angle", "40", "--drag", "quadratic",
+                      "--terminal-speed", "25 m/s")
+    ball = Projectile.launch(30 * u.m / u.s, 40 * u.deg).with_quadratic_drag(25 * u.m / u.s)
+    assert thrown["launch_acceleration"]["value"] == ball.launch_acceleration.value
+    assert thrown["landing_acceleration"]["unit"] == "m / s2"
+    loop = run_json("pendulum", "--length", "1.5 m", "--bottom-speed", "9 m/s")
+    assert loop["acceleration_at_bottom"]["value"] == 54.0 and "acceleration_at_top" in loop

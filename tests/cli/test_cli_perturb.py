@@ -39,8 +39,25 @@ def test_verbs(args, shown):
     ("sun-synchronous", "--a", "20000 km", "--e", "0.1"),
     ("decay", "--altitude", "300 km", "--density", "1e-11 kg/m3", "--scale-height", "50 km", "--base-altitude",
      "350 km"),
+    ("decay", "--altitude", "160 km", "--ballistic", "0.1 m2/kg"),
+    ("rates", "--altitude", "400 km", "--plot", "rates.png", "--revolutions", "0"),
+    ("rates", "--altitude", "400 km", "--plot", "rates.txt"),
 ])
 def test_bad_inputs_exit_2_with_one_line(args):
     result = run("perturb", *args)
     assert result.exit_code == 2
     assert result.stderr.count("\n") == 1 and result.stderr.startswith("orbits: error: ")
+
+
+def test_plots_are_written_where_a_picture_exists(tmp_path):
+    """rates and sun-synchronous integrate the orbit (rebound and heyoka) for their picture; decay draws the closed
+    form. Each writes its PNG, and the table is printed as without --plot."""
+    molniya = ("rates", "--a", "26554 km", "--e", "0.74", "--inc", "63.43", "--argp", "270", "--revolutions", "3")
+    for args, name in ((molniya, "rates.png"), (("sun-synchronous", "--altitude", "700 km", "--revolutions", "2"),
+                                                 "sso.png"),
+                       (("decay", "--altitude", "280 km", "--ballistic", "0.022 m2/kg"), "decay.png")):
+        path = tmp_path / name
+        result = run("perturb", *args, "--plot", str(path))
+        assert result.exit_code == 0, result.output
+        assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+        assert result.stdout == run("perturb", *args).stdout

@@ -56,3 +56,15 @@ def test_bad_input_is_one_line_and_exit_2(args, message):
     assert result.exit_code == 2, result.output
     lines = result.output.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("orbits: error:") and message in lines[0]
+
+
+def test_a_least_value_on_the_grid_edge_is_flagged_in_the_table_and_the_json():
+    edge = ["--launch", "2026-09-01:2026-10-15", "--arrival", "2027-06-01:2027-11-01", "--step", "15 d"]
+    table = run(*edge)
+    assert table.exit_code == 0, table.output
+    assert "least C3 on the grid's edge (last launch date): the minimum may lie outside" in " ".join(
+        table.output.split())
+    assert "(edge)" in table.output
+    data = json.loads(run(*edge, "--format", "json").stdout)
+    assert data["about"]["min_c3_edge"].startswith("least C3 on the grid's edge (last launch date)")
+    assert "about" not in json.loads(run(*COARSE, "--format", "json").stdout)

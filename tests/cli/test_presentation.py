@@ -65,6 +65,8 @@ def test_every_readme_example_fits_80_columns_with_no_cut_cell(command):
         return
     cells = {cell for line in table.splitlines() for cell in line.split()}
     for name, entry in data.items():
+        if name == "about":  # what answered and what was assumed, as text (cli/render.py to_json)
+            continue
         value = entry["value"]
         if isinstance(value, list) or isinstance(value, str):
             continue
@@ -121,8 +123,8 @@ def test_json_is_strict_and_equals_the_library_bit_for_bit():
         values = q.value.tolist()
         expected = [v if math.isfinite(v) else str(v) for v in values] if isinstance(values, list) else values
         assert data[name]["value"] == expected and data[name]["unit"] == q.unit.to_string(), name
-    orbit = strict_json(run('orbit --primary Earth --a "6778 km" --e 0.1 --inc 51.64 --format json'))
-    exact = orbits.Orbit.from_elements("Earth", a=6778 * u.km, e=0.1, inc=51.64 * u.deg).quantities()
+    orbit = strict_json(run('orbit --primary Earth --a "6778 km" --e 0.01 --inc 51.64 --format json'))
+    exact = orbits.Orbit.from_elements("Earth", a=6778 * u.km, e=0.01, inc=51.64 * u.deg).quantities()
     assert all(orbit[name]["value"] == q.value.tolist() for name, q in exact.items())
 
 

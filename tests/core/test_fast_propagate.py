@@ -74,7 +74,7 @@ def test_mixed_conics_against_mpmath(jit):
 
 def test_safeguarded_pass_matches_the_vectorised_pass():
     """Pass 2 (bracketed Halley from the same starter) gives the pass-1 root, checked state by state."""
-    from orbits.core import _fast_propagate as kernel
+    from orbits.core import _fast_universal as kernel
 
     r0, v0, dt = mixed_states(np.random.default_rng(63), 300)
     mu = np.full(len(dt), MU)

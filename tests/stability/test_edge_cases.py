@@ -211,7 +211,7 @@ ROWS = [
     (
         35,
         "angles beyond 2 pi are wrapped",
-        lambda: Orbit.from_elements("Earth", a=7000 * u.km, e=0.1, raan=400 * u.deg).ascending_node,
+        lambda: Orbit.from_elements("Earth", a=8000 * u.km, e=0.1, raan=400 * u.deg).ascending_node,
         lambda q: math.isclose(q.to_value(u.deg), 40.0, rel_tol=1e-12),
     ),
     (

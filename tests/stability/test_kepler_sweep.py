@@ -49,8 +49,9 @@ def test_hyperbolic_sweep(record):
 
 
 def test_hyperbolic_sweep_over_the_whole_range(record):
-    """M from 1e-12 to 1e300 and e - 1 from 1e-15 to 1e12, the range the README claims: measured worst 2.17 ulp
-    (M = 1.04e15, e = 2.51e6; the narrower sweep above stays below 1.5 ulp)."""
+    """M from 1e-12 to 1e300 and e - 1 from 1e-15 to 1e12, the range the README claims: measured worst 0.88 ulp on
+    both paths (2.17 ulp at M = 1.04e15, e = 2.51e6 while the logarithmic form took log(M + H) - log(e / 2); the
+    narrower sweep above stays below 1.5 ulp)."""
     worst = hyperbolic_sweep(2029, 300, 12)
     record("Kepler hyperbolic sweep (M to 1e300, e to 1e12)", 5000, worst, "ulp")
     assert worst <= BOUND_ULPS

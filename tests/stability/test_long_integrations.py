@@ -18,8 +18,8 @@ from orbits.validate import backends
 pytestmark = pytest.mark.slow
 
 #: IAS15 (epsilon 1e-9), e = 0, 0.5, 0.9, 0.99: bounds on (position error / a, |dE / E|, |de|) for runs of up to
-#: that many periods. Energy keeps the 3e-13 target of EDGE_CASES.md where it holds; elsewhere each bound is ~10x the worst
-#: measured (the comment; e = 0.99 sets position and energy, the LRL vector varies).
+#: that many periods. Energy keeps the 3e-13 target of EDGE_CASES.md where it holds; elsewhere each bound is ~10x
+#: the worst measured (the comment; e = 0.99 sets position and energy, the LRL vector varies).
 IAS15_BOUNDS = {
     500: (2e-8, 3e-13, 4e-14),  # measured 1.9e-9, 2.0e-13 (at 200 periods), 3.7e-15 (over 50..500 periods)
     1000: (4e-8, 3e-13, 4e-14),  # measured 3.8e-9, 1.7e-13, 3.8e-15

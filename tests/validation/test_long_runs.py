@@ -82,5 +82,5 @@ def test_a_span_of_more_than_a_million_periods_is_refused_at_load_time(tmp_path)
     path = tmp_path / "long.toml"
     path.write_text(source.replace("periods = 100", 'span = "1e12 yr"').replace("outputs = 200", "outputs = 10"))
     with pytest.raises(SceneError, match=r"time.span: a run of 3.15576e\+19 s is 5.\d+e\+15 periods of the fastest "
-                                         r"orbit \('Earth' and 'satellite', period 5828.52 s\)"):
+                                         r"orbit \('Earth' and 'satellite', period 5828.52 s\).*at most 1e\+06"):
         scenes.load(path)

@@ -27,6 +27,8 @@ MANOEUVRES = {
         5e-14),  # measured 5.2e-15
     "bi-elliptic 15x via 30x": (lambda: BiElliptic.between(
         "Earth", 7000 * u.km, 105000 * u.km, 210000 * u.km).impulse_plan(1 * u.h), 1e-12),  # measured 1.9e-13
+    "bi-elliptic with rb = r2 (Hohmann and a zero third burn)": (lambda: BiElliptic.between(
+        "Earth", 7000 * u.km, 42164 * u.km, 42164 * u.km).impulse_plan(10 * u.min), 8e-14),  # measured 7.7e-15
     "plane change 30 deg": (lambda: PlaneChange.at("Earth", 7000 * u.km, 30 * u.deg).impulse_plan(30 * u.min),
                             2e-15),  # measured 2.2e-16
     "phasing 20 deg ahead, 2 revolutions": (lambda: Phasing.to(

@@ -66,7 +66,8 @@ def test_long_runs_1000_orbits(name, bound):
     Measured at 1000 orbits: e = 0.9 comet 4.1e-9 (IAS15) and 1.1e-8 (heyoka); binary 6.1e-9 (IAS15) and
     1.2e-7 (heyoka: its relative tolerance acts on coordinates that the moving centre of mass carries 55 AU
     from the origin, 55 times the orbit). Phase errors grow about quadratically in time, hence the
-    (scale / 10)**2 factor; the e = 0.9 bound sits inside the 1e-7 at 1e4 periods that tests/stability/EDGE_CASES.md sets."""
+    (scale / 10)**2 factor; the e = 0.9 bound sits inside the 1e-7 at 1e4 periods that
+    tests/stability/EDGE_CASES.md sets."""
     base = scene.load(name)
     scale = 10 * slow_scale()
     long = scene.Scene(base.name, base.description, base.bodies, base.times * scale, base.asks, base.tolerance)

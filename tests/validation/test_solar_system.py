@@ -41,11 +41,11 @@ def test_from_1950_the_floors_larger_epoch_is_reached_and_passes():
 
 
 def test_without_relativity_mercurys_perihelion_lags_by_gr_advance():
-    """The Newtonian perihelion trails DE421 by GR's 42.98 arcsec/century: measured 4.2982 arcsec in 10 years
-    against 4.298 (relative 5e-5)."""
+    """The Newtonian perihelion trails DE421 by GR's 42.98 arcsec/century: measured 4.29818 arcsec in 10
+    years against 4.29805 (relative 3.1e-5), the public relativistic_periapsis_advance of Standish's mean orbit."""
     newtonian = validate_scene(models.build("solar_system", {"post_newtonian": False}))
     lag = next(c for c in newtonian.checks if c.quantity.startswith("Mercury perihelion lag"))
-    assert lag.passed and lag.analytic == pytest.approx(4.298)
+    assert lag.passed and lag.analytic == pytest.approx(4.298, abs=5e-4)  # Clemence 1947, Will 2014: 42.98 / cy
     for backend in ("rebound", "heyoka"):
         assert lag.values[backend] == pytest.approx(4.298, rel=5e-4)
     mercury = next(c for c in newtonian.checks if c.quantity.startswith("Mercury: max km"))

@@ -5,6 +5,7 @@ One module per benchmark, each with its row class, its run function and its tabl
 - kepler: Kepler's equation (bench_kepler, format_rows).
 - propagate: two-body propagation (bench_propagate, format_propagate).
 - lambert: Lambert solvers (bench_lambert, format_lambert).
+- periodic: periodic orbits of the restricted problem, one and a family (bench_periodic, format_periodic).
 - ephemeris: states of a body from DE421 (bench_ephemeris, format_ephemeris).
 - api: the unit-aware API against the float64 core (bench_api, format_api).
 - cli: cold start of the command line (bench_cli, format_cli).

@@ -48,7 +48,8 @@ def _api_cases(n, rng):
     from orbits.core.propagate import propagate
 
     shape = () if n == 1 else (n,)
-    a, e, nu = 7000 + rng.uniform(0, 1000, shape), rng.uniform(0, 0.5, shape), rng.uniform(-np.pi, np.pi, shape)
+    # periapses of 7000 km and up: every orbit clears the Earth (an orbit through it would warn)
+    a, e, nu = 14000 + rng.uniform(0, 2000, shape), rng.uniform(0, 0.5, shape), rng.uniform(-np.pi, np.pi, shape)
     a_q, nu_q, dt = a * u.km, nu * u.rad, rng.uniform(0, 1e4, shape)
     dt_q = dt * u.s
     orbit = Orbit.from_elements("Earth", a=a_q, e=e, nu=nu_q)

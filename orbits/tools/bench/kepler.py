@@ -276,12 +276,8 @@ def _measure(method, data, refs, repeats):
     """Time method on data (best of repeats) and compare its first results with refs."""
     n = len(data.e) if method.subset is None else min(len(data.e), method.subset)
     inputs = method.prepare(data.e[:n], data.M[:n])
-    best = math.inf
     try:
-        for _ in range(repeats):
-            start = time.perf_counter()
-            result = method.solve(inputs, data.hyperbolic)
-            best = min(best, time.perf_counter() - start)
+        best, result = best_time(lambda: method.solve(inputs, data.hyperbolic), repeats)
     except Exception as exc:  # a peer failing on some input is a benchmark result, not a crash
         note = f"raised {type(exc).__name__}: {exc}".splitlines()[0][:200]
         nan = math.nan

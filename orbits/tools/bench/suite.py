@@ -8,6 +8,7 @@ from orbits.tools.bench.cli import bench_cli, format_cli
 from orbits.tools.bench.ephemeris import bench_ephemeris, format_ephemeris
 from orbits.tools.bench.kepler import bench_kepler, format_rows
 from orbits.tools.bench.lambert import bench_lambert, format_lambert
+from orbits.tools.bench.periodic import bench_periodic, format_periodic
 from orbits.tools.bench.propagate import bench_propagate, format_propagate
 from orbits.tools.bench.stm import bench_stm, format_stm
 from orbits.tools.bench.table import rows_to_json
@@ -19,6 +20,7 @@ BENCHMARKS = {
     "propagate": (bench_propagate, format_propagate),
     "stm": (bench_stm, format_stm),
     "lambert": (bench_lambert, format_lambert),
+    "periodic": (bench_periodic, format_periodic),
     "ephemeris": (bench_ephemeris, format_ephemeris),
     "api": (bench_api, format_api),
     "cli": (bench_cli, format_cli),

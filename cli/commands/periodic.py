@@ -1,0 +1,224 @@
+"""`orbits periodic`: a periodic orbit of the restricted three-body problem, or a table of its family."""
+
+from enum import StrEnum
+from typing import TYPE_CHECKING, Annotated
+
+import typer
+
+from orbits_cli.commands.binary import MASS_HELP
+from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
+
+if TYPE_CHECKING:
+    from orbits.periodic import PeriodicFamily
+
+
+class Family(StrEnum):
+    lyapunov = "lyapunov"
+    halo = "halo"
+    vertical = "vertical"
+    dro = "dro"
+    nrho = "nrho"
+
+
+class Branch(StrEnum):
+    northern = "northern"
+    southern = "southern"
+
+
+class Spacing(StrEnum):
+    arclength = "arclength"
+    period = "period"
+    jacobi = "jacobi"
+
+
+#: the constructor of each family, and the targets it takes
+CONSTRUCTORS = {"lyapunov": "lyapunov", "halo": "halo", "vertical": "vertical", "dro": "distant_retrograde",
+                "nrho": "near_rectilinear"}
+
+
+def command(
+    primary: Annotated[str, typer.Argument(help=f"the heavier body M: {MASS_HELP}")],
+    secondary: Annotated[str, typer.Argument(help=f"the lighter body m: {MASS_HELP}")],
+    family: Annotated[Family, typer.Option("--family", help="lyapunov (planar), halo, vertical, dro (distant "
+                                           "retrograde) or nrho (the halo family near the secondary)")],
+    point: Annotated[str | None, typer.Option("--point", help="L1, L2 or L3 (default: L1 for lyapunov and vertical, "
+                                              "L2 for halo and nrho; none for dro)")] = None,
+    branch: Annotated[Branch | None, typer.Option("--branch", help="halo and nrho: northern (reaching farther to "
+                                                  "+z, the binary's spin) or southern (default: northern halo, "
+                                                  "southern nrho)")] = None,
+    ax: Annotated[str | None, typer.Option("--ax", help="x amplitude (half the extent in x), e.g. '20000 km'")] = None,
+    ay: Annotated[str | None, typer.Option("--ay", help="y amplitude (half the extent in y)")] = None,
+    az: Annotated[str | None, typer.Option("--az", help="z amplitude (the largest distance from the binary's "
+                                           "plane)")] = None,
+    period: Annotated[str | None, typer.Option("--period", help="period, e.g. '12 d'")] = None,
+    jacobi: Annotated[str | None, typer.Option("--jacobi", help="Jacobi constant: a plain number in units of "
+                                               "(n r)**2, or in m2/s2 / km2/s2")] = None,
+    closest_approach: Annotated[str | None, typer.Option("--closest-approach", help="least distance from the "
+                                                         "secondary's centre (an NRHO's perilune radius)")] = None,
+    resonance: Annotated[str | None, typer.Option("--resonance", help="nrho: p:q synodic resonance, period q/p "
+                                                  "synodic periods (the Gateway's: 9:2)")] = None,
+    r: Annotated[str | None, typer.Option("--r", help="separation, e.g. '384399 km' (default: the secondary's "
+                                          "catalogued mean distance)")] = None,
+    members: Annotated[int | None, typer.Option("--members", min=2, max=1000, help="a table of this many members "
+                                                "of the family, from its first to the requested one (or to its "
+                                                "end)")] = None,
+    spacing: Annotated[Spacing, typer.Option("--spacing", help="family members evenly in arclength along the "
+                                             "family, in period or in Jacobi constant")] = Spacing.arclength,
+    only: OnlyOption = None,
+    fmt: FormatOption = Format.table,
+    plot: PlotOption = None,
+) -> None:
+    """A periodic orbit of the restricted three-body problem about a Lagrange point or the secondary: corrected by
+    differential correction, continued along its family to the requested amplitude, period, Jacobi constant,
+    closest approach or resonance. With --members, a table of the family with its stability indices
+    nu = lambda + 1/lambda (stable when both are real and |nu| <= 2) and its bifurcations.
+    """
+    from orbits import inputs
+    from orbits.periodic import PeriodicFamily, PeriodicOrbit
+    from orbits_cli import render
+    from orbits_cli.commands.lagrange import build
+
+    system = build(primary, secondary, r)
+    targets = _targets(family.value, ax=ax, ay=ay, az=az, period=period, jacobi=jacobi,
+                       closest_approach=closest_approach, resonance=resonance)
+    chosen_branch = None if branch is None else branch.value
+    if members is not None:
+        result = PeriodicFamily.of(system, family.value, point, branch=chosen_branch, members=members,
+                                   spacing=spacing.value, **targets)
+        quantities = result.quantities(inputs.names(only))
+        title = f"{result.members[0].describe()} family: {len(result)} members to {result.end}"
+        if plot:
+            from orbits.plot import periodic_family
+
+            save_plot(lambda: periodic_family(result), plot)
+        if fmt == Format.json:
+            render.emit(title, quantities, fmt.value, about=_about(result))
+        else:
+            render.print_tables(family_tables(result, quantities), title)
+        return
+    if chosen_branch is not None and family not in (Family.halo, Family.nrho):
+        from orbits import OrbitDomainError
+
+        raise OrbitDomainError(f"--branch {chosen_branch}: only halo families have a northern and a southern branch")
+    options = {} if chosen_branch is None else {"branch": chosen_branch}
+    constructor = getattr(PeriodicOrbit, CONSTRUCTORS[family.value])
+    orbit = constructor(system, **({} if family == Family.dro else {"point": point or _default_point(family)}),
+                        **options, **targets)
+    quantities = orbit.quantities(inputs.names(only))
+    if plot:
+        from orbits.plot import periodic_orbit
+
+        save_plot(lambda: periodic_orbit(orbit), plot)
+    if fmt == Format.json:
+        render.emit(repr(orbit), quantities, fmt.value)
+    else:
+        render.print_tables(orbit_tables(quantities), f"{orbit!r} (rotating frame, origin at the barycentre)")
+
+
+def _default_point(family: Family) -> str:
+    from orbits.periodic import DEFAULT_POINT
+
+    return DEFAULT_POINT[family.value]
+
+
+def _targets(family: str, **given) -> dict:
+    """The targets given on the command line as Quantities (a resonance as its text), checked for the family."""
+
+    from orbits import OrbitDomainError, inputs
+
+    allowed = {"lyapunov": ("ax", "ay", "period", "jacobi", "closest_approach"),
+               "halo": ("az", "ax", "period", "jacobi", "closest_approach"),
+               "vertical": ("az", "ay", "period", "jacobi"),
+               "dro": ("ax", "ay", "period", "jacobi", "closest_approach"),
+               "nrho": ("resonance", "period", "closest_approach")}[family]
+    kinds = {"ax": "length", "ay": "length", "az": "length", "closest_approach": "length", "period": "time"}
+    targets = {}
+    for name, text in given.items():
+        if text is None:
+            continue
+        option = "--" + name.replace("_", "-")
+        if name not in allowed:
+            choices = ", ".join("--" + a.replace("_", "-") for a in allowed)
+            raise OrbitDomainError(f"{option} does not select a {family} orbit; give one of {choices}")
+        if name == "resonance":
+            targets[name] = text
+        elif name == "jacobi":
+            targets[name] = _jacobi(text, option)
+        else:
+            targets[name] = inputs.parse_quantity(text, kinds[name], option)
+    return targets
+
+
+def _jacobi(text: str, option: str):
+    """A Jacobi constant: a plain number (units of (n r)**2) or a speed squared ('3.3 km2 / s2')."""
+    import astropy.units as u
+
+    from orbits import OrbitDomainError
+
+    try:
+        return float(text) * u.one
+    except ValueError:
+        pass
+    try:
+        value = u.Quantity(text)
+    except (TypeError, ValueError):
+        raise OrbitDomainError(f"{option}: cannot read {text!r}; write a plain number such as 3.05 or a speed "
+                               f"squared such as '3.3 km2 / s2'") from None
+    if not value.unit.is_equivalent(u.m**2 / u.s**2):
+        raise OrbitDomainError(f"{option}: {text!r} is not a speed squared (m2/s2) nor a plain number")
+    return value
+
+
+def orbit_tables(quantities: dict) -> list:
+    """One table of the orbit's quantities; the stability indices as nu_1, nu_2 (real, or re and im), the
+    eigenvalues left to the JSON output."""
+    import astropy.units as u
+    import numpy as np
+
+    from orbits_cli import render
+
+    rows = {}
+    for name, q in quantities.items():
+        if name == "eigenvalues":
+            continue
+        if name == "stability_indices":
+            for k, (re, im) in enumerate(np.asarray(q.value)):
+                rows[f"nu_{k + 1}"] = (re if im == 0.0 else np.array([re, im])) << u.one
+            continue
+        rows[name] = q
+    return [render.quantity_table("", rows)]
+
+
+def family_tables(result: "PeriodicFamily", quantities: dict) -> list:
+    """One row per member: period, Jacobi constant, amplitudes, closest approaches, stability indices; then the
+    bifurcations found along the family."""
+    import astropy.units as u
+    import numpy as np
+
+    from orbits_cli import render
+
+    columns = []
+    headers = {"period": "T", "dimensionless_jacobi_constant": "C", "ax": "Ax", "ay": "Ay", "az": "Az",
+               "closest_approach_primary": "to M", "closest_approach_secondary": "to m"}
+    for name, header in headers.items():
+        if name in quantities:
+            columns.append(render.column(name, quantities[name], header))
+    if "stability_indices" in quantities:
+        nu = np.asarray(quantities["stability_indices"].value)
+        for k in range(2):
+            columns.append((f"nu_{k + 1}", [render.number(re) if im == 0.0 else f"{render.number(re)}"
+                                            f"{'+' if im > 0 else '-'}{render.number(abs(im))}i"
+                                            for re, im in nu[:, k]]))
+        columns.append(("stable", ["yes" if m.stable else "no" for m in result.members]))
+    tables = render.column_tables(("#", [str(k + 1) for k in range(len(result))]), columns) if columns else []
+    if "stability_indices" in quantities and result.bifurcations:
+        rows = {}
+        for k, (kind, orbit) in enumerate(result.bifurcations):
+            rows[f"{kind} bifurcation {k + 1}: C"] = orbit.dimensionless_jacobi_constant << u.one
+            rows[f"{kind} bifurcation {k + 1}: T"] = orbit.period
+        tables.append(render.quantity_table("bifurcations (a stability index crosses 2 or -2)", rows))
+    return tables
+
+
+def _about(result: "PeriodicFamily") -> dict:
+    return {"family": result.members[0].describe(), "end": result.end, "members": str(len(result))}

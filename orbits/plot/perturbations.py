@@ -1,0 +1,199 @@
+"""Pictures of perturbed orbits: an oblate body's secular motion (secular_elements: the node and the argument of
+periapsis of integrations over the closed form's secular lines), the Kozai-Lidov cycles (kozai_cycles: e, i and
+the conserved sqrt(1 - e**2) cos i of integrations with the quadrupole theory's marks) and drag decay (drag_decay:
+altitude against time, the closed form's curve, where it stops holding, and integrations over it).
+
+Each reads what it is given: a record of integrations (orbits.validate.perturbed's SecularHistory, KozaiHistory
+or DecayHistory) or a DragDecay, through their attributes; nothing here integrates.
+"""
+
+from typing import Any
+
+import astropy.units as u
+import numpy as np
+
+from orbits import display
+from orbits.plot import frame
+
+#: how each backend's curves look: (colour, line style of the osculating curve, marker of the means)
+BACKEND_STYLES = {"rebound": ("C0", "-", "o"), "heyoka": ("C1", "--", "x")}
+#: the closed form's curves and marks
+THEORY_COLOR = "0.15"
+#: each element's name on an axis
+ELEMENT_LABELS = {"node": r"node $\Omega$", "periapsis": r"argument of periapsis $\omega$"}
+ELEMENT_SYMBOLS = {"node": r"\Omega", "periapsis": r"\omega"}
+#: the time axis of a decay: (unit, its label, for lifetimes below this)
+TIME_UNITS = ((u.h, "h", 2 * u.day), (u.day, "d", 1000 * u.day), (u.year, "yr", np.inf * u.year))
+
+
+def _style(backend: str, k: int) -> tuple[str, str, str]:
+    return BACKEND_STYLES.get(backend, (f"C{k + 2}", ":", "+"))
+
+
+def _legend_below(figure: Any, axes: np.ndarray, columns: int = 3) -> None:
+    """One legend for all panels, below them, each entry once (in the order first drawn)."""
+    entries = {}
+    for ax in np.ravel(axes):
+        for handle, label in zip(*ax.get_legend_handles_labels(), strict=True):
+            entries.setdefault(label, handle)
+    figure.legend(list(entries.values()), list(entries), loc="outside lower center", ncol=min(columns, len(entries)),
+                  fontsize="small", frameon=False)
+
+
+# ---- an oblate body's secular motion -------------------------------------------------------------------------
+def secular_elements(history: Any, figure: Any = None) -> tuple[Any, np.ndarray]:
+    """The node Omega (and the argument of periapsis omega, where the history has it) against time, as each backend
+    integrates the orbit (thin: osculating; markers: the average over each revolution), over the straight line of
+    the first-order closed form; beside each, the revolution averages less that line (arcsec), which show the
+    theory's own error, O(J2 (R/p)**2) of the rate. `history` is a SecularHistory (orbits.validate.perturbed).
+    Returns (figure, (rows, 2) array of panels)."""
+    names = list(history.lines)
+    figure = frame.figure(figure, (11.0, 2.9 * len(names) + 1.9))
+    panels = figure.subplots(len(names), 2, sharex=True, squeeze=False, width_ratios=(3, 2))
+    for row, name in zip(panels, names, strict=True):
+        _element_panels(row, history, name)
+    for ax in panels[-1]:
+        ax.set_xlabel("time [d]")
+    panels[0, 0].set_title("integrated (osculating and revolution means) over the closed form", fontsize="medium")
+    panels[0, 1].set_title(f"revolution means less the closed form\n(first order: O(J2 (R/p)$^2$) = "
+                           f"{display.number_math(history.accuracy, 2)} of the rate)", fontsize="medium")
+    moving = " and ".join(ELEMENT_LABELS[name].split(" $")[0] for name in names)
+    figure.suptitle(f"The {moving} under J2 and J4: rebound and heyoka over the secular closed form\n"
+                    f"{history.title}")
+    _legend_below(figure, panels)
+    return figure, panels
+
+
+def _element_panels(row: np.ndarray, history: Any, name: str) -> None:
+    """One element: its values over the closed form's line (left) and the means less the line (right)."""
+    left, right = row
+    start, rate = history.lines[name]
+    times = np.asarray(history.times, dtype=float)
+    span = np.array([0.0, times[-1]])
+    left.plot(span, start + rate * span, color=THEORY_COLOR, lw=1.4, zorder=3,
+              label=f"closed form: first-order J2 rates ({'+' if rate > 0 else ''}{display.number_math(rate, 4)} deg/d "
+              f"for ${ELEMENT_SYMBOLS[name]}$ here)"
+              if len(history.lines) == 1 else "closed form: first-order J2 rates")
+    right.axhline(0.0, color=THEORY_COLOR, lw=1.4, zorder=1)
+    mean_times = np.asarray(history.mean_times, dtype=float)
+    line_at_means = start + rate * mean_times
+    for k, backend in enumerate(history.osculating):
+        color, dashes, marker = _style(backend, k)
+        left.plot(times, history.osculating[backend][name], color=color, ls=dashes, lw=0.7, alpha=0.8, zorder=1,
+                  label=f"{backend}: osculating")
+        left.plot(mean_times, history.mean[backend][name], color=color, ls="none", marker=marker, ms=5,
+                  mfc="none", zorder=2, label=f"{backend}: mean over each revolution")
+        right.plot(mean_times, (np.asarray(history.mean[backend][name]) - line_at_means) * 3600.0, color=color,
+                   ls=dashes, lw=0.8, marker=marker, ms=5, mfc="none", zorder=2)
+    left.set_ylabel(f"{ELEMENT_LABELS[name]} [deg]")
+    left.ticklabel_format(axis="y", useOffset=False)
+    right.set_ylabel(f"${ELEMENT_SYMBOLS[name]}$ less the line [arcsec]")
+    for ax in row:
+        ax.grid(alpha=0.3)
+
+
+# ---- the Kozai-Lidov cycles ----------------------------------------------------------------------------------
+def kozai_cycles(history: Any, figure: Any = None) -> tuple[Any, np.ndarray]:
+    """The eccentricity, the inclination and sqrt(1 - e**2) cos i against time (units of the Kozai timescale tau)
+    as each backend integrates a hierarchical triple, with the quadrupole theory's marks: e_max, the inclination
+    at e_max that the conserved sqrt(1 - e**2) cos i gives, that conserved value, and the times of e_max (half a
+    period, then every period, from a start at e_min). `history` is a KozaiHistory (orbits.validate.perturbed).
+    Returns (figure, array of the three panels)."""
+    figure = frame.figure(figure, (9.6, 8.6))
+    panels = figure.subplots(3, 1, sharex=True)
+    times = np.asarray(history.times, dtype=float)
+    e_ax, i_ax, c_ax = panels
+    for k, backend in enumerate(history.eccentricity):
+        color, dashes, _ = _style(backend, k)
+        for ax, values in zip(panels, (history.eccentricity, history.inclination, history.constant), strict=True):
+            ax.plot(times, values[backend], color=color, ls=dashes, lw=0.9 if ax is not c_ax else 0.5,
+                    alpha=1.0 if ax is not c_ax else 0.45, label=f"{backend} (osculating)")
+        c_ax.plot(history.mean_times, history.mean_constant[backend], color=color, ls=dashes, lw=2.0,
+                  label=f"{backend}, averaged over each orbit of the perturber")
+    e_ax.axhline(history.e_max, color=THEORY_COLOR, ls="--", lw=1.0,
+                 label=f"quadrupole: $e_{{max}}$ = {display.number(history.e_max, 4)}, i = "
+                       f"{display.number(history.inclination_at_e_max, 4)}$\\degree$ there")
+    i_ax.axhline(history.inclination_at_e_max, color=THEORY_COLOR, ls="--", lw=1.0)
+    c_ax.axhline(history.start, color=THEORY_COLOR, ls="-.", lw=1.0,
+                 label=f"quadrupole: $\\sqrt{{1-e^2}}\\,\\cos i$ conserved at its start, "
+                       f"{display.number(history.start, 4)}")
+    peaks = np.arange(0.5, times[-1] / history.period + 0.5) * history.period
+    for j, peak in enumerate(peaks[peaks <= times[-1]]):
+        for ax in panels:
+            ax.axvline(peak, color="0.5", ls=":", lw=1.0,
+                       label=f"quadrupole: $e_{{max}}$ every period, {display.number(history.period, 4)} $\\tau$"
+                       if j == 0 and ax is e_ax else None)
+    e_ax.set_ylabel("eccentricity e")
+    i_ax.set_ylabel(r"inclination i [$\degree$]")
+    c_ax.set_ylabel(r"$\sqrt{1-e^2}\,\cos i$")
+    c_ax.set_xlabel(r"time [Kozai timescales $\tau$]")
+    for ax in panels:
+        ax.grid(alpha=0.3)
+    figure.suptitle(f"Kozai-Lidov cycles: rebound and heyoka with the quadrupole theory's marks\n{history.title}\n"
+                    f"(the doubly averaged theory drops terms of relative size $\\epsilon_{{sa}}$ = "
+                    f"{display.number_math(history.accuracy, 2)})")
+    _legend_below(figure, panels, columns=2)
+    return figure, panels
+
+
+# ---- drag decay ----------------------------------------------------------------------------------------------
+def drag_decay(decay: Any, history: Any = None, figure: Any = None) -> tuple[Any, np.ndarray]:
+    """Altitude against time of a circular orbit decaying by drag: the closed form's curve (a DragDecay, read
+    through its properties) to the end of its lifetime and the point where it stops holding (the band's base, or
+    the breakdown altitude where the decay in one revolution reaches the scale height H). With a DecayHistory
+    (orbits.validate.perturbed), each backend's integrated altitude over it, and below, the integration less the
+    closed form (m). Returns (figure, array of the panels)."""
+    table = decay.quantities()
+    lifetime = decay.lifetime
+    unit, label = next((unit, label) for unit, label, below in TIME_UNITS if lifetime < below)
+    figure = frame.figure(figure, (9.0, 7.4 if history is not None else 5.8))
+    panels = np.atleast_1d(figure.subplots(2 if history is not None else 1, 1, sharex=True, squeeze=False,
+                                           height_ratios=(3, 1.4) if history is not None else None)[:, 0])
+    ax = panels[0]
+    times = np.linspace(0.0, 1.0, 400) * lifetime
+    ax.plot(times.to_value(unit), decay.altitude_after(times).to_value(u.km), color=THEORY_COLOR, lw=1.6, zorder=2,
+            label="closed form (a circular orbit in one exponential band)")
+    if history is not None:
+        _integrated_decay(panels, decay, history, unit)
+    base = table["base_altitude"].to_value(u.km)
+    breakdown = table["breakdown_altitude"].to_value(u.km)
+    end = max(base, breakdown)
+    km = {name: display.quantity_math(table[name], digits=4, unit=u.km)
+          for name in ("altitude", "base_altitude", "breakdown_altitude", "scale_height")}
+    if base >= breakdown:
+        ax.axhline(base, color="0.5", ls=":", lw=1.0, label=f"the band's base, {km['base_altitude']}")
+    else:
+        ax.axhline(breakdown, color="C3", ls=":", lw=1.0, label=f"breakdown altitude, {km['breakdown_altitude']} "
+                   f"(the band's base: {km['base_altitude']})")
+    why = ("the band's base, where its exponential law ends" if base >= breakdown
+           else "the decay in one revolution reaches H")
+    ax.plot([lifetime.to_value(unit)], [end], marker="*", ms=13, color="C3", mec="0.2", ls="none", zorder=4,
+            label=f"the closed form stops holding: {why}")
+    ax.set_ylabel("altitude above the equator [km]")
+    panels[-1].set_xlabel(f"time [{label}]")
+    for panel in panels:
+        panel.grid(alpha=0.3)
+    lasts = display.number_math(lifetime.to_value(unit), 4)
+    figure.suptitle(f"Drag decay of a circular orbit about {decay.primary}: from {km['altitude']} to "
+                    f"{display.quantity_math(end * u.km, digits=4)} in {lasts} {label}\n"
+                    f"B = C$_D$A/m = {display.number_math(decay.b, 4)} m$^2$/kg, scale height H = "
+                    f"{km['scale_height']}\nthe closed form's error order, (decay in a revolution / H)$^2$, is "
+                    f"{display.number_math(table['accuracy'].to_value(u.one), 2)} at the start")
+    _legend_below(figure, panels, columns=2)
+    return figure, panels
+
+
+def _integrated_decay(panels: np.ndarray, decay: Any, history: Any, unit: u.UnitBase) -> None:
+    """Each backend's altitude over the closed form (top) and less it, in m (bottom)."""
+    days = np.asarray(history.times, dtype=float) * u.day
+    means = np.asarray(history.mean_times, dtype=float) * u.day
+    closed = decay.altitude_after(np.minimum(means, decay.lifetime)).to_value(u.km)
+    for k, (backend, altitude) in enumerate(history.altitude.items()):
+        color, dashes, marker = _style(backend, k)
+        panels[0].plot(days.to_value(unit), altitude, color=color, ls=dashes, lw=1.0, zorder=3,
+                       label=f"{backend}: integrated radius less the equatorial radius")
+        panels[1].plot(means.to_value(unit), (np.asarray(history.mean_altitude[backend]) - closed) * 1e3, color=color,
+                       ls=dashes, lw=0.8, marker=marker, ms=4, mfc="none",
+                       label=f"{backend}: radius averaged over each revolution")
+    panels[1].axhline(0.0, color=THEORY_COLOR, lw=1.2)
+    panels[1].set_ylabel("averaged radius less\nthe closed form [m]")

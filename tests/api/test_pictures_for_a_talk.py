@@ -1,0 +1,408 @@
+"""Every picture of orbits.plot, drawn from small inputs, held to what a talk needs (picture_checks.problems): no
+text over other text or outside the figure, each legend entry once, a title naming what is drawn (and when),
+powers and Greek letters typeset. Then what was wrong with particular pictures: L1 and L2 apart, the inner planets
+of the whole solar system shown, a flyby's impact parameter in one unit and its asymptotes told apart, the
+validation panels, the porkchop's labels and its optimum on the edge of the grid."""
+
+import warnings
+
+import astropy.units as u
+import matplotlib
+import numpy as np
+import pytest
+from picture_checks import legend_labels, legends, overlapping_texts, problems, titles, untypeset
+
+from orbits import (
+    Binary,
+    Collision,
+    Cosmology,
+    DampedOscillator,
+    Flyby,
+    Orbit,
+    Pendulum,
+    Projectile,
+    RestrictedThreeBody,
+    Rolling,
+    VerticalCircle,
+)
+from orbits import plot as pictures
+from orbits.core.errors import InsideBodyWarning
+
+matplotlib.use("Agg")
+
+
+def test_the_checks_find_overlaps_text_outside_and_untypeset_powers():
+    """The shared checks are not vacuous: two labels on one spot overlap, a title wider than its figure reaches
+    outside it, a legend entry twice, '1.287 1e+06 km', '10^3 km' and 'km2/s2' are found; their typeset forms
+    are not."""
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(3, 2))
+    ax.text(0.5, 0.5, "here", transform=ax.transAxes)
+    ax.text(0.5, 0.5, "and here", transform=ax.transAxes)
+    fig.suptitle("a title much wider than a figure three inches across can hold")
+    found = overlapping_texts(fig)
+    assert ("here", "and here") in found
+    assert ("a title much wider than a figure three inches across can hold", "outside the figure") in found
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for label in ("b = 1.287 1e+06 km", "x [10^3 km]", "C3 [km2/s2]", "theta0", "x", "x"):
+        ax.plot([], [], label=label)
+    ax.plot([], [], label=r"b = 1.287$\times10^{6}$ km, x [$10^{3}$ km], C3 [km$^{2}$/s$^{2}$], $\theta_0$")
+    ax.legend()
+    assert untypeset(fig) == ["b = 1.287 1e+06 km", "x [10^3 km]", "C3 [km2/s2]", "theta0"]
+    assert set(problems(fig)) == {"no title", "legend entry twice: 'x'", *(
+        f"not typeset: {text!r}" for text in ("b = 1.287 1e+06 km", "x [10^3 km]", "C3 [km2/s2]", "theta0"))}
+
+
+# ---- one small case of every picture -------------------------------------------------------------------------
+
+
+def _quiet(build):
+    """Draw with the InsideBodyWarning of a colliding flyby silenced (it is tested where it is raised)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", InsideBodyWarning)
+        return build()
+
+
+def _molniya(**kwargs):
+    return Orbit.from_elements("Earth", a=26600 * u.km, e=0.74, inc=63.4 * u.deg, argp=270 * u.deg, **kwargs)
+
+
+def _visual_binary():
+    return Binary.from_elements(1.1 * u.solMass, 0.8 * u.solMass, period=20 * u.yr, e=0.5, inc=50 * u.deg,
+                                raan=30 * u.deg, argp=100 * u.deg, nu=40 * u.deg, com_v=[0, 0, 12] * u.km / u.s)
+
+
+H0 = 67.66 * u.km / u.s / u.Mpc
+
+
+def _rotating_tracks(system):
+    """A tadpole about L4 and a horseshoe through L3 as drawn (rotating-frame positions, no integration)."""
+    mu = float(system.mass_ratio)
+    angle = np.linspace(0, 2 * np.pi, 400)
+    tadpole = np.radians(60 + 25 * np.sin(angle))
+    horseshoe = np.radians(180 + 170 * np.sin(angle))
+    tracks = {}
+    for label, longitude, wobble in (("tadpole about L4", tadpole, 0.004), ("horseshoe through L3", horseshoe, 0.01)):
+        radius = 1 + wobble * np.cos(angle)
+        tracks[label] = np.stack([radius * np.cos(longitude) - mu, radius * np.sin(longitude), 0 * angle],
+                                 axis=1) * system.separation
+    return tracks
+
+
+def _departure():
+    system = RestrictedThreeBody.from_primaries("Earth", "Moon")
+    r0, _ = system.departure_state("L1", 100 * u.km)
+    rate = float(system.growth_rates[0].to_value(1 / u.s))
+    times = np.linspace(0, 4 / rate, 200) * u.s
+    grow = (100 * u.km) * np.exp(rate * times.to_value(u.s))
+    track = r0 + np.stack([grow, 0.3 * grow, 0 * grow], axis=1) - [100, 30, 0] * u.km
+    return pictures.lagrange_departure(system, "L1", 100 * u.km, times, track)
+
+
+def _ring(n=7):
+    """A ring of n bodies turning once per 2 pi (code units) and breaking up at t = 20."""
+    times = np.linspace(0, 30, 300)
+    angles = times[:, None] + 2 * np.pi * np.arange(n) / n
+    scatter = 1e-16 * np.exp(times)[:, None] * np.cos(3 * np.arange(n))[None, :]
+    radius = 1 + scatter
+    positions = np.stack([radius * np.cos(angles + scatter), radius * np.sin(angles + scatter), 0 * angles], axis=-1)
+    return times, positions
+
+
+def _ring_breakup():
+    times, _ = _ring()
+    return pictures.ring_breakup(times, 1e-16 * np.exp(times), 1.0, 29.9, period=2 * u.d)
+
+
+def _ring_snapshots():
+    times, positions = _ring()
+    return pictures.ring_snapshots(times, positions, 1.0, 20.0, period=2 * u.d)
+
+
+@pytest.fixture(scope="module")
+def halo():
+    from orbits import PeriodicOrbit
+
+    return PeriodicOrbit.halo(RestrictedThreeBody.from_primaries("Earth", "Moon"), "L2", az=20_000 * u.km)
+
+
+@pytest.fixture(scope="module")
+def lyapunov_family():
+    from orbits import PeriodicFamily
+
+    return PeriodicFamily.of(RestrictedThreeBody.from_primaries("Earth", "Moon"), "lyapunov", members=6,
+                             point="L1", ax=10_000 * u.km)
+
+
+@pytest.fixture(scope="module")
+def validated():
+    """Four scenes through both integrators: two of 100 whole orbits, a flyby, the expanding sphere."""
+    from orbits.validate import load
+    from orbits.validate.run import validate
+
+    return validate([load(name) for name in ("circular", "eccentric", "flyby", "expanding_universe")])
+
+
+@pytest.fixture(scope="module")
+def mars_chart():
+    from orbits import Porkchop
+
+    return Porkchop.between("Earth", "Mars", ("2026-09-01", "2027-01-31"), ("2027-06-01", "2028-03-01"),
+                            step=10 * u.day)
+
+
+@pytest.fixture(scope="module")
+def jupiter_chart():
+    """The least C3 of these windows lies on the last launch date (the issue's example, at a coarser step)."""
+    from orbits import Porkchop
+
+    return Porkchop.between("Earth", "Jupiter", ("2026-01-01", "2027-12-31"), ("2028-01-01", "2031-01-01"),
+                            step=20 * u.day)
+
+
+def _precision_rows():
+    from collections import namedtuple
+
+    row = namedtuple("Row", "problem method seconds error")
+    rows = []
+    for problem in ("circular, 100 periods", "eccentric e = 0.9, 100 periods"):
+        rows.append(row(problem, "orbits analytic", 1e-5, 1e-16))
+        for k, method in enumerate(("rebound IAS15", "heyoka taylor")):
+            rows += [row(problem, method, 1e-3 * 3**j * (k + 1), 1e-6 / 10**j) for j in range(5)]
+    return rows
+
+
+#: name -> (draw, words the title must hold)
+CASES = {
+    "orbit_plane": (lambda: pictures.orbit_plane(_molniya(nu=30 * u.deg), times=[1, 2, 3] * u.h),
+                    ["Earth", "t0"]),
+    "orbit_plane at a date": (lambda: pictures.orbit_plane(_molniya(), epoch="2026-11-25"),
+                              ["Earth", "2026-11-25"]),
+    "orbits": (lambda: pictures.orbits(Orbit.circular("Earth", 42164 * u.km), _molniya(),
+                                       Orbit.from_elements("Earth", q=6678 * u.km, e=0.73, raan=30 * u.deg),
+                                       labels=["GEO", "Molniya", "GTO"]), ["Earth", "t0"]),
+    "orbits, an array": (lambda: pictures.orbits(Orbit.from_elements("Earth", a=[8000, 9000, 10000] * u.km, e=0.1)),
+                         ["Earth"]),
+    "orbits in 3-D": (lambda: _molniya(nu=30 * u.deg).plot(projection="3d"), ["Earth"]),
+    "the whole solar system": (lambda: pictures.solar_system("2026-11-25", which="all", highlight="Jupiter",
+                                                             observer="Earth"), ["solar system", "2026-11-25"]),
+    "the inner solar system": (lambda: pictures.solar_system("2026-11-25", highlight="Mars", observer="Earth"),
+                               ["inner solar system", "2026-11-25"]),
+    "the solar system in 3-D": (lambda: pictures.solar_system("2026-11-25", projection="3d"),
+                                ["solar system", "2026-11-25"]),
+    "the whole solar system in 3-D": (lambda: pictures.solar_system("2026-11-25", which="all", projection="3d"),
+                                      ["solar system", "2026-11-25"]),
+    "flyby_plane": (lambda: pictures.flyby_plane(Flyby.past("Jupiter", v_inf=5.6 * u.km / u.s,
+                                                            periapsis=200_000 * u.km)), ["Flyby", "Jupiter"]),
+    "flyby_plane, a collision": (lambda: _quiet(lambda: pictures.flyby_plane(
+        Flyby.between("Sun", "Jupiter", 1 * u.km / u.s, b=1 * u.AU))), ["Flyby", "Sun", "collide"]),
+    "binary_plane": (lambda: pictures.binary_plane(_visual_binary()), ["binary", "t0"]),
+    "binary_sky": (lambda: pictures.binary_sky(_visual_binary(), distance=10 * u.pc), ["sky", "t0"]),
+    "radial_velocity_curves": (lambda: pictures.radial_velocity_curves(_visual_binary()), ["Radial velocit"]),
+    "scale_factor_curves": (lambda: pictures.scale_factor_curves(
+        {"flat": Cosmology.from_densities(H0, Om0=0.31, Ol0=0.69), "planck18": Cosmology.planck18(),
+         "closed": Cosmology.from_densities(H0, Om0=3.0, Ol0=0.0)}, 100 * u.Gyr, log=True),
+        ["Scale factor", "100 Gyr"]),
+    "hubble_diagram": (lambda: pictures.hubble_diagram({"Planck 2018": Cosmology.planck18()}, z_max=3.0),
+                       ["Hubble diagram", "z = 3"]),
+    "distance_curves": (lambda: pictures.distance_curves(Cosmology.planck18()), ["Distances", "z = 10"]),
+    "cosmology_overview": (lambda: pictures.cosmology_overview(Cosmology.planck18(), "Planck 2018"),
+                           ["Planck 2018", "Scale factor", "Distances", "Hubble diagram"]),
+    "cosmology_overview, no big bang": (lambda: pictures.cosmology_overview(Cosmology.de_sitter(H0), "de Sitter"),
+                                        ["de Sitter", "Scale factor"]),
+    "lagrange_plane, Sun-Earth": (lambda: pictures.lagrange_plane(RestrictedThreeBody.from_primaries("Sun", "Earth"),
+                                                                  points=201), ["Sun", "Earth", "Lagrange"]),
+    "lagrange_plane, Earth-Moon": (lambda: pictures.lagrange_plane(
+        RestrictedThreeBody.from_primaries("Earth", "Moon"), points=201), ["Earth", "Moon", "Lagrange"]),
+    "lagrange_plane with trajectories": (lambda: pictures.lagrange_plane(
+        RestrictedThreeBody.from_primaries("Sun", "Earth"), points=201,
+        trajectories=_rotating_tracks(RestrictedThreeBody.from_primaries("Sun", "Earth"))), ["Sun", "Earth"]),
+    "lagrange_departure": (_departure, ["L1", "Earth", "Moon"]),
+    "coorbital_plane": (lambda: pictures.coorbital_plane(
+        RestrictedThreeBody.from_primaries("Sun", "Earth"),
+        _rotating_tracks(RestrictedThreeBody.from_primaries("Sun", "Earth"))), ["Co-orbital", "Sun", "Earth"]),
+    "ring_breakup": (_ring_breakup, ["ring", "break"]),
+    "ring_snapshots": (_ring_snapshots, ["ring of 7", "break"]),
+    "work_precision": (lambda: pictures.work_precision(_precision_rows()), ["Work-precision", "circular"]),
+    "collision_velocities, head on": (lambda: pictures.collision_velocities(
+        Collision.head_on(2 * u.kg, 3 * u.m / u.s, 1 * u.kg, -1 * u.m / u.s, 0.5)), ["collision", "2 kg"]),
+    "collision_velocities, oblique": (lambda: pictures.collision_velocities(
+        Collision.oblique(2 * u.kg, [3, 1] * u.m / u.s, 1 * u.kg, [-1, 0] * u.m / u.s, 0.8, normal=[1, 0])),
+        ["collision", "2 kg"]),
+    "projectile_paths": (lambda: pictures.projectile_paths(
+        {"no drag": Projectile.launch(30 * u.m / u.s, 60 * u.deg),
+         "quadratic drag": Projectile.launch(30 * u.m / u.s, 60 * u.deg).with_quadratic_drag(25 * u.m / u.s)}),
+        ["Projectile", "30 m/s", "60 deg"]),
+    "projectile_paths, one": (lambda: pictures.projectile_paths(
+        {"no drag": Projectile.launch(20 * u.m / u.s, 45 * u.deg)}), ["Projectile", "20 m/s", "45 deg"]),
+    "pendulum_periods": (lambda: pictures.pendulum_periods(Pendulum.simple(1 * u.m, 170 * u.deg)),
+                         ["pendulum", "170 deg"]),
+    "damped_motion": (lambda: pictures.damped_motion(
+        {"under": DampedOscillator.of(2 / u.s, 0.5 / u.s, 1 * u.m),
+         "critical": DampedOscillator.of(2 / u.s, 4 / u.s, 1 * u.m),
+         "over": DampedOscillator.of(2 / u.s, 8 / u.s, 1 * u.m)}, 60 * u.s), ["Damped", "60 s"]),
+    "vertical_circle_forces": (lambda: pictures.vertical_circle_forces(
+        {"string, 6 m/s": VerticalCircle.of(1 * u.m, 6 * u.m / u.s, mass=1 * u.kg),
+         "rod, 6.5 m/s": VerticalCircle.of(1 * u.m, 6.5 * u.m / u.s, mass=1 * u.kg, support="rod"),
+         "string, 3 m/s": VerticalCircle.of(1 * u.m, 3 * u.m / u.s, mass=1 * u.kg)}), ["vertical circle", "1 m"]),
+    "rolling_race": (lambda: pictures.rolling_race({"ball": Rolling.down(30 * u.deg, 0.4),
+                                                    "hoop": Rolling.down(30 * u.deg, 1.0)}, 2 * u.m),
+                     ["Rolling", "30 deg", "2 m"]),
+}
+
+#: cases drawn from a fixture: name -> (fixture, draw, title words)
+FIXTURE_CASES = {
+    "periodic_orbit": ("halo", lambda o: pictures.periodic_orbit(o), ["halo", "Earth-Moon", "L2"]),
+    "periodic_family": ("lyapunov_family", lambda f: pictures.periodic_family(f), ["lyapunov", "family"]),
+    "stability_diagram": ("lyapunov_family", lambda f: pictures.stability_diagram(f), ["tability", "lyapunov"]),
+    "validation_residuals": ("validated", lambda r: pictures.validation_residuals(r), ["Position errors"]),
+    "validation_tracks": ("validated", lambda r: pictures.validation_tracks(r), ["tracks"]),
+    "validation_overview": ("validated", lambda r: pictures.validation_overview(r), ["Position errors", "tracks"]),
+    "porkchop": ("mars_chart", lambda c: pictures.porkchop(c), ["Earth to Mars", "2026"]),
+    "porkchop, least C3 on the edge": ("jupiter_chart", lambda c: pictures.porkchop(c), ["Earth to Jupiter"]),
+}
+
+
+def _check(fig, words):
+    shown = " ".join(titles(fig))
+    missing = [word for word in words if word not in shown]
+    assert not missing, f"the title {shown!r} lacks {missing}"
+    assert problems(fig) == []
+
+
+@pytest.mark.parametrize("name", CASES)
+def test_every_picture_is_fit_for_a_talk(name, tmp_path):
+    draw, words = CASES[name]
+    fig = draw()[0]
+    _check(fig, words)
+    pictures.save(fig, tmp_path / "picture.png")
+
+
+@pytest.mark.parametrize("name", FIXTURE_CASES)
+def test_every_picture_of_a_computed_object_is_fit_for_a_talk(name, request, tmp_path):
+    fixture, draw, words = FIXTURE_CASES[name]
+    fig = draw(request.getfixturevalue(fixture))[0]
+    _check(fig, words)
+    pictures.save(fig, tmp_path / "picture.png")
+
+
+def test_the_pictures_format_no_numbers_themselves():
+    """Numbers in titles, legends and labels come from orbits.display (natural units, sensible digits, typeset):
+    no format specification in the picture code ('{x:.4g}', '%.3g')."""
+    import re
+    from pathlib import Path
+
+    import orbits.plot
+
+    found = []
+    for path in Path(orbits.plot.__file__).parent.glob("*.py"):
+        for number, line in enumerate(path.read_text().splitlines(), 1):
+            if re.search(r"\{[^{}]*:[+ ]?[\d.]*[dgfe%]\}|%[\d.]*[dgf]\b", line.replace('"%Y-%m-%d"', "")):
+                found.append(f"{path.name}:{number}: {line.strip()}")
+    assert found == []
+
+
+# ---- what was wrong with particular pictures -----------------------------------------------------------------
+
+
+def test_sun_earths_l1_and_l2_are_labelled_apart():
+    """L1 and L2 of Sun-Earth lie 0.02 r apart, 3 pixels at the scale of the whole frame: their labels sit on
+    either side, L1 towards the Sun."""
+    _, ax = pictures.lagrange_plane(RestrictedThreeBody.from_primaries("Sun", "Earth"), points=201)
+    ax.figure.canvas.draw()
+    boxes = {text.get_text(): text.get_window_extent() for text in ax.texts if text.get_text().startswith("L")}
+    assert set(boxes) == {"L1", "L2", "L3", "L4", "L5"}
+    assert boxes["L1"].x1 < boxes["L2"].x0 and not boxes["L1"].overlaps(boxes["L2"])
+
+
+def test_the_whole_solar_system_shows_the_inner_planets_and_a_short_legend():
+    """`where Jupiter --plot`: the inner planets in a panel of their own, every name readable, the positions
+    labelled with their date, and no legend entry of the length of 'system barycentre (planet and moons)'."""
+    fig, ax = pictures.solar_system("2026-11-25", which="all", highlight="Jupiter", observer="Earth")
+    whole, inner = fig.axes
+    assert {t.get_text() for t in inner.texts if t.get_gid() == "name"} == {"Mercury", "Venus", "Earth", "Mars"}
+    labels = legend_labels(fig)
+    assert "body at 2026-11-25 00:01 TDB" in labels and not any("now" in label for label in labels)
+    assert not any("barycentre" in label for label in labels) and max(map(len, labels)) <= 45
+    assert overlapping_texts(fig) == []
+
+
+def test_a_flyby_legend_gives_b_in_one_unit_and_tells_the_asymptotes_apart():
+    _, ax = pictures.flyby_plane(Flyby.past("Jupiter", v_inf=5.6 * u.km / u.s, periapsis=200_000 * u.km))
+    labels = [line.get_label() for line in ax.get_lines()]
+    assert r"impact parameter b = 1.287$\times10^{6}$ km" in labels  # was '1.287 1e+06 km'
+    incoming, outgoing = (next(line for line in ax.get_lines() if line.get_gid() == f"{way} asymptote")
+                          for way in ("incoming", "outgoing"))
+    assert (incoming.get_linestyle(), incoming.get_color()) != (outgoing.get_linestyle(), outgoing.get_color())
+
+
+def test_validation_pictures_say_what_l_is_and_why_a_long_run_shows_two_points(validated):
+    fig, _ = pictures.validation_overview(validated)
+    shown = " ".join(titles(fig))
+    assert "L: the largest distance of an orbiting body from its primary" in shown
+    circular = next(title for title in titles(fig) if title.startswith("circular"))
+    assert circular.endswith("200 outputs at 2 points")  # 100 periods sampled every half period
+    assert overlapping_texts(fig) == []  # the track panels' tick labels ('-30000-20000-10000') included
+
+
+def test_a_3d_legend_keeps_clear_of_the_z_label():
+    """The whole solar system in 3-D: a legend of fourteen entries beside the axes ran over the z label."""
+    fig, ax = pictures.solar_system("2026-11-25", which="all", projection="3d")
+    fig.canvas.draw()
+    (legend,) = legends(fig)
+    assert not legend.get_window_extent().overlaps(ax.zaxis.label.get_window_extent())
+    assert overlapping_texts(fig) == []
+
+
+def test_the_porkchop_labels_each_contour_level_once(mars_chart):
+    """Along the ridge of 180-degree transfers the contours crowd into short loops, and each loop got a label."""
+    _, ax = pictures.porkchop(mars_chart)
+    for lines in (c for c in ax.collections if c.get_gid() in ("C3", "arrival v_inf", "time of flight")):
+        labelled = [text.get_text() for text in lines.labelTexts]
+        assert len(labelled) == len(set(labelled)) <= len(lines.levels)
+    assert overlapping_texts(ax.figure) == []
+
+
+def test_a_porkchop_flags_a_least_value_on_the_edge_of_its_grid(mars_chart, jupiter_chart):
+    """Earth to Jupiter, 2026-2027 launches: the least C3 lies on the last arrival date; its star is drawn whole
+    and ringed, and its legend entry names the edge. The Mars window's minima lie inside: no ring."""
+    _, ax = pictures.porkchop(jupiter_chart)
+    star = next(line for line in ax.get_lines() if line.get_gid() == "minimum")
+    assert "on the grid's edge: last arrival date" in star.get_label()
+    (ring,) = [line for line in ax.get_lines() if line.get_gid() == "on the edge"]
+    np.testing.assert_array_equal(ring.get_xydata(), star.get_xydata())
+    x, y = star.get_xydata()[0]
+    fig = ax.figure
+    fig.canvas.draw()
+    size = star.get_markersize() * fig.dpi / 72 / 2  # the star's half-width in pixels
+    px, py = ax.transData.transform((x, y))
+    box = ax.get_window_extent()
+    assert box.x0 + size <= px <= box.x1 - size and box.y0 + size <= py <= box.y1 - size  # whole: not clipped
+    _, ax = pictures.porkchop(mars_chart)
+    assert not [line for line in ax.get_lines() if line.get_gid() == "on the edge"]
+
+
+def test_the_cosmology_overview_keeps_each_legend_under_its_panel():
+    """The middle legend ran in two columns into the right one, and that one to the figure's edge."""
+    fig, axes = pictures.cosmology_overview(Cosmology.planck18(), "Planck 2018")
+    fig.canvas.draw()
+    for ax in axes:
+        legend, panel = ax.get_legend().get_window_extent(), ax.get_window_extent()
+        assert panel.x0 - 20 <= legend.x0 and legend.x1 <= panel.x1 + 20  # within 20 pixels of the panel
+    assert [ax.get_title() for ax in axes] == ["Scale factor", "Distances", "Hubble diagram"]
+
+
+def test_a_fast_oscillation_is_drawn_with_every_swing():
+    """omega0 = 50 rad/s over 60 s: 477 periods, 40 samples each (400 samples in all drew a moire)."""
+    fast = DampedOscillator.of(50 / u.s, 0.01 / u.s, 1 * u.m)
+    _, ax = pictures.damped_motion({"fast": fast}, 60 * u.s)
+    times = ax.get_lines()[0].get_xdata()
+    period = 2 * np.pi / fast.damped_frequency.to_value(u.rad / u.s)
+    assert np.max(np.diff(times)) <= period / 40 * (1 + 1e-9)
+
+
+def test_a_position_is_labelled_with_its_time():
+    """'body now' labelled the orbit's own epoch: it is 'body at t0', or the date the elements hold at."""
+    assert "body at t0" in legend_labels(pictures.orbits(_molniya())[0])
+    assert "body at 2026-11-25 00:01 TDB" in legend_labels(pictures.orbits(_molniya(), epoch="2026-11-25")[0])
