@@ -9,9 +9,9 @@ conical pendulum, and projectiles without drag, with linear (Stokes) drag and wi
     >>> ball.with_quadratic_drag(terminal_speed=30 * u.m / u.s).range.round(3)
     <Quantity 30.726 m>
 
-Linear drag is -m b v (b in 1/s, terminal speed g / b); quadratic drag -(1/2) C rho A |v| v with terminal speed v_t
-= sqrt(2 m g / (C rho A)) (the notes leave out the mass), given directly or from m, C, rho and A. The numbers come
-from orbits.core.projectile (accuracy stated there: heyoka agrees to 5e-16 for linear drag, 6e-14 for quadratic).
+Linear drag is -m b v (b in 1/s, terminal speed g / b); quadratic drag -(1/2) C rho A |v| v with terminal speed
+v_t = sqrt(2 m g / (C rho A)) (the notes leave out the mass), given directly or from m, C, rho and A. The numbers
+come from orbits.core.projectile (accuracy stated there: heyoka agrees to 5e-16 for linear drag, 6e-14 for quadratic).
 """
 
 from collections.abc import Iterable
