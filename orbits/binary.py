@@ -11,18 +11,20 @@
 Labels: star 1 (mass m1) is the notes' M and star 2 (m2) the notes' m, so `mass_fraction` m2 / (m1 + m2) is
 the notes' mu = m / (M + m), `star2.semi_major_axis` is the notes' a and `star1.semi_major_axis` their q.
 The relative orbit r = r2 - r1 (`relative`, an Orbit with mu = G (m1 + m2) and the reduced mass) carries the
-pair's energy, angular momentum and the joining line's areal rate L / (2 mu_red) (ERRATA #58). Each star
-(`star1`, `star2`) is a Star: the relative conic scaled by m_j / (m1 + m2) about the CM, a Kepler orbit with
-the fixed-centre parameter G m_j**3 / (m1 + m2)**2 (XXII.iii), so every Orbit quantity applies to it; its
-co-vertex speed is the corrected sigma_b of ERRATA #68. As m2 / m1 -> 0, star 2 becomes section XXI's planet
-about a fixed star: within 2e-15 at m2 / m1 = 1e-15 (tests/core/test_binary.py, tests/api/test_binary_api.py).
+pair's energy, angular momentum and the joining line's areal rate L / (2 mu_red) (the notes' (h + H) / 2 in
+XXII.ii is not that rate). Each star (`star1`, `star2`) is a Star: the relative conic scaled by m_j / (m1 + m2)
+about the CM, a Kepler orbit with the fixed-centre parameter G m_j**3 / (m1 + m2)**2 (XXII.iii), so every Orbit
+quantity applies to it. Its co-vertex speed is the notes' M sigma_b or m sigma_b with sigma_b =
+sqrt(G / alpha) / (m + M); the notes print sqrt(G / ((m + M) alpha)), which is off by sqrt(m + M). As
+m2 / m1 -> 0, star 2 becomes section XXI's planet about a fixed star: within 2e-15 at m2 / m1 = 1e-15
+(tests/core/test_binary.py, tests/api/test_binary_api.py).
 
-What an observer measures (issue 18; the notes stop at XXII.viii): the elements are read in the sky frame of
-visual and spectroscopic binaries, x toward the north, y toward the east, z along the line of sight away from the
-observer. Omega is then the position angle of the ascending node (where star 2 recedes), omega star 2's argument
-of periastron and i < 90 deg a position angle that increases (north through east). `sky_position` gives the
-apparent orbit of star 2 about star 1 (separation and position angle), `radial_velocities` both stars'
-line-of-sight velocities (> 0 receding, including the centre of mass's, the systemic velocity), and
+What an observer measures (beyond the notes, which end with the Lagrange points of XXII.viii): the elements are
+read in the sky frame of visual and spectroscopic binaries, x toward the north, y toward the east, z along the line
+of sight away from the observer. Omega is then the position angle of the ascending node (where star 2 recedes),
+omega star 2's argument of periastron and i < 90 deg a position angle that increases (north through east).
+`sky_position` gives the apparent orbit of star 2 about star 1 (separation and position angle), `radial_velocities`
+both stars' line-of-sight velocities (> 0 receding, including the centre of mass's, the systemic velocity), and
 `rv_semi_amplitude1`, `rv_semi_amplitude2` and `mass_function` what a spectrum gives back. From the other end,
 SpectroscopicBinary turns a measured period, semi-amplitude and eccentricity into the mass function and the
 companion's (minimum) mass: the round trip through an N-body integration whose radial velocity is then measured
@@ -249,8 +251,8 @@ class Binary(display.Displayed):
     # ---- the pair (XXII.ii-v, vii) --------------------------------------------------------------
     @cached_property
     def eccentricity(self) -> u.Quantity:
-        """e (dimensionless), common to the relative orbit and both stars' orbits (XXII.i; e = gamma / alpha,
-        ERRATA #64)."""
+        """e (dimensionless), common to the relative orbit and both stars' orbits (XXII.i): focal
+        distance over semi-major axis, the notes' gamma / alpha (XXII.iv prints the inverse, alpha / gamma)."""
         return self.relative.eccentricity
 
     @cached_property
@@ -292,7 +294,7 @@ class Binary(display.Displayed):
     @cached_property
     def joining_line_areal_velocity(self) -> u.Quantity:
         """Area swept by the line joining the stars per unit time, L / (2 mu_red) = sqrt(G (m1 + m2) p) / 2 (m2/s)
-        (XXII.ii corrected by ERRATA #58)."""
+        (XXII.ii prints (h + H) / 2 for this rate, which it is not)."""
         return self.relative.areal_velocity
 
     @cached_property
@@ -324,7 +326,8 @@ class Binary(display.Displayed):
     def speeds_at(self, separation: u.Quantity) -> tuple[u.Quantity, u.Quantity]:
         """(v1, v2) (m/s): the stars' speeds in the CM frame when they are `separation` (length) apart.
 
-        v_i = m_j / (m1 + m2) sqrt(G (m1 + m2) (2 / r - 1 / a)) (XXII.iv's M sigma and m sigma, ERRATA #67).
+        v_i = m_j / (m1 + m2) sqrt(G (m1 + m2) (2 / r - 1 / a)) (XXII.iv's M sigma and m sigma; the
+        square root covers the whole bracket, which the notes' printing leaves outside it).
         """
         relative = self.relative.speed_at(separation)
         x1, x2 = self._fractions

@@ -5,12 +5,13 @@
     >>> hit = Collision.head_on(2 * u.kg, 3 * u.m / u.s, 1 * u.kg, 0 * u.m / u.s, restitution=1)
     >>> hit.velocity1_after, hit.velocity2_after
     (<Quantity 1. m / s>, <Quantity 4. m / s>)
-    >>> energy_transfer(0.5).round(6)  # ERRATA #7: 4 r / (1 + r)**2, 8/9 at r = 1/2
+    >>> energy_transfer(0.5).round(6)  # elastic: 4 r / (1 + r)**2, 8/9 at r = 1/2
     <Quantity 0.888889>
 
 A head-on collision moves along a line (velocities are signed numbers); an oblique one takes 2-D or 3-D velocity
-vectors, and the impulse acts along the relative velocity (the notes' model, IX.xiii) or along a given contact
-normal (ERRATA #14). The numbers come from orbits.core.collisions (accuracy stated there).
+vectors, and the impulse acts along the relative velocity (the notes' model, IX.xiii, which holds for a head-on
+impact of smooth spheres) or along a given contact normal (for an oblique impact, the line of centres). The
+numbers come from orbits.core.collisions (accuracy stated there).
 """
 
 from collections.abc import Iterable
@@ -88,7 +89,8 @@ class Collision(display.Displayed):
 
     @cached_property
     def restitution(self) -> u.Quantity:
-        """e (dimensionless): (v2' - v1') / (v1 - v2) along the line of impact (IX.vi, ERRATA #5)."""
+        """e (dimensionless): (v2' - v1') / (v1 - v2) along the line of impact (IX.vi, which writes it as a
+        quotient of two vectors)."""
         return self.e << DIMENSIONLESS
 
     @cached_property
@@ -127,7 +129,7 @@ class Collision(display.Displayed):
 
     @cached_property
     def kinetic_energy_after(self) -> u.Quantity:
-        """K' (J), at most K (ERRATA #1: after <= before)."""
+        """K' (J), at most K (IX.ii prints the order of before and after the other way round)."""
         return self._kinetic(self.m1, self._after[0]) + self._kinetic(self.m2, self._after[1]) << units.J
 
     @cached_property
@@ -193,7 +195,8 @@ COLLISION_NAMES = [
 
 def energy_transfer(mass_ratio: float | u.Quantity, restitution: float | u.Quantity = 1.0) -> u.Quantity:
     """K2' / K1 = (1 + e)**2 r / (1 + r)**2 (dimensionless): the share of its kinetic energy a body of mass m1 gives
-    to a body of mass m2 at rest, r = m1 / m2 (IX.viii; elastic: 4 r / (1 + r)**2, ERRATA #7)."""
+    to a body of mass m2 at rest, r = m1 / m2 (IX.viii; elastic: 4 r / (1 + r)**2 = 4 m1 m2 / (m1 + m2)**2,
+    where the notes' second form drops the 4)."""
     r = units.to_number(mass_ratio, "mass ratio r = m1 / m2")
     require_positive(r, "mass ratio r = m1 / m2", "(dimensionless)")
     return core.energy_transfer_ratio(r, _restitution(restitution)) << DIMENSIONLESS

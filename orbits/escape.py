@@ -13,10 +13,10 @@
     >>> max_elongation(0.723 * u.AU, 1 * u.AU).to(u.deg).round(1)
     <Quantity 46.3 deg>
 
-The notes' 7.9, 11.2 and 16.7 km/s are the first three rounded (ERRATA #54: 7.904, 11.178, 16.65 km/s by
-patched conics); their fourth, "at least 525 km/s", is an empirical estimate of the Galactic escape speed and
+The notes' 7.9, 11.2 and 16.7 km/s are the first three rounded (7.904, 11.178 and 16.65 km/s by patched
+conics); their fourth, "at least 525 km/s", is an empirical estimate of the Galactic escape speed and
 has no formula here. The geosynchronous and the geostationary orbit share one radius (the latter is the
-equatorial one); 35786.1 km above Earth's IAU 2015 equatorial radius, the notes' 35786 km (ERRATA #55).
+equatorial one); 35786.1 km above Earth's IAU 2015 equatorial radius, the notes' 35786 km.
 """
 
 import warnings

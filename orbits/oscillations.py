@@ -37,7 +37,8 @@ class Pendulum(display.Displayed):
 
     @classmethod
     def simple(cls, length: u.Quantity, amplitude: u.Quantity, g: u.Quantity | None = None) -> "Pendulum":
-        """A bob on a string of `length` released from rest at `amplitude`: omega0 = sqrt(g / L) (ERRATA #88)."""
+        """A bob on a string of `length` released from rest at `amplitude`: omega0 = sqrt(g / L) of
+        L theta'' = -g sin(theta) (the notes drop the minus)."""
         omega0 = core.simple_pendulum_frequency(gravity(g), inputs.positive(length, units.M, "length L"))
         return cls(*np.broadcast_arrays(omega0, _amplitude(amplitude)))
 
@@ -45,7 +46,7 @@ class Pendulum(display.Displayed):
     def physical(cls, mass: u.Quantity, inertia: u.Quantity, distance: u.Quantity, amplitude: u.Quantity,
                  g: u.Quantity | None = None) -> "Pendulum":
         """A rigid body of `mass` and moment `inertia` about the pivot, its centre of mass `distance` below it:
-        omega0 = sqrt(m g L / I) (ERRATA #89, #90)."""
+        omega0 = sqrt(m g L / I) (the notes print sqrt(I / (m g L)), which is a time)."""
         omega0 = core.physical_pendulum_frequency(
             inputs.positive(mass, units.KG, "mass m"), gravity(g), inputs.positive(distance, units.M, "distance L"),
             inputs.positive(inertia, units.KG * units.M**2, "moment of inertia I"))
@@ -218,7 +219,7 @@ class DrivenOscillator(display.Displayed):
 
     @cached_property
     def velocity_amplitude(self) -> u.Quantity:
-        """w A (m/s): largest at w = omega0 (XXV.vii, ERRATA #106)."""
+        """w A (m/s): largest at w = omega0 (XXV.vii)."""
         return self.drive * self.amplitude.to_value(units.M) << units.M_PER_S
 
     @cached_property
@@ -299,7 +300,8 @@ class VerticalCircle(display.Displayed):
     @cached_property
     def regime(self) -> str:
         """"loops", "leaves the circle" (string only), "swings", "reaches the top" (rod at u = 2 sqrt(g R)) or
-        "at rest" (ERRATA #103-#105)."""
+        "at rest". A string loops from u = sqrt(5 g R) and leaves the circle above sqrt(2 g R), a rod loops above
+        2 sqrt(g R); at 2 sqrt(g R) exactly the rod creeps up to the top, which the notes count as swinging."""
         u2, gr = self.u * self.u, self._gr
         if self.u == 0:
             return "at rest"
@@ -313,14 +315,16 @@ class VerticalCircle(display.Displayed):
 
     @cached_property
     def turning_angle(self) -> u.Quantity:
-        """theta_m = arccos(1 - u**2 / (2 g R)) (rad), where a swinging body stops (ERRATA #102)."""
+        """theta_m = arccos(1 - u**2 / (2 g R)) (rad), where a swinging body stops (the notes print
+        arccos(u**2 / (2 g R)))."""
         if self.regime not in ("swings", "reaches the top", "at rest"):
             raise OrbitDomainError(f"the body {self.regime}: it has no turning angle")
         return core.turning_angle(self.u, self.g, self.radius) << units.RAD
 
     @cached_property
     def leaving_angle(self) -> u.Quantity:
-        """theta with N = 0, cos(theta) = (2 g R - u**2) / (3 g R) (rad), where a string slackens (ERRATA #104)."""
+        """theta with N = 0, cos(theta) = (2 g R - u**2) / (3 g R) (rad), where a string slackens: beyond the
+        horizontal diameter, where the notes place it."""
         if self.regime != "leaves the circle":
             raise OrbitDomainError(f"the body {self.regime}: it does not leave the circle")
         return core.leaving_angle(self.u, self.g, self.radius) << units.RAD
@@ -346,7 +350,7 @@ class VerticalCircle(display.Displayed):
 
     @cached_property
     def normal_force_at_top(self) -> u.Quantity:
-        """N = m (u**2 - 5 g R) / R (N) toward the centre (ERRATA #101), for a body that gets there."""
+        """N = m (u**2 - 5 g R) / R (N) toward the centre, for a body that gets there."""
         self._require_top()
         return self.normal_force_at(np.pi << units.RAD)
 
@@ -378,7 +382,8 @@ class VerticalCircle(display.Displayed):
         return self.acceleration_at(np.pi << units.RAD)[0]
 
     def normal_force_at(self, theta: u.Quantity) -> u.Quantity:
-        """N = (m / R)(u**2 - 2 g R + 3 g R cos(theta)) (N), toward the centre (ERRATA #101)."""
+        """N = (m / R)(u**2 - 2 g R + 3 g R cos(theta)) (N), toward the centre (the
+        notes print - m g cos(theta) and 1 g R cos(theta))."""
         if self.mass is None:
             raise OrbitDomainError("the normal force needs the body's mass: build it with mass=... kg")
         angle = inputs.angle(theta, "angle theta")

@@ -10,8 +10,8 @@ conical pendulum, and projectiles without drag, with linear (Stokes) drag and wi
     <Quantity 30.726 m>
 
 Linear drag is -m b v (b in 1/s, terminal speed g / b); quadratic drag -(1/2) C rho A |v| v with terminal speed
-v_t = sqrt(2 m g / (C rho A)) (ERRATA #32), given directly or from m, C, rho and A. The numbers come from
-orbits.core.projectile (accuracy stated there: heyoka agrees to 5e-16 for linear drag, 6e-14 for quadratic).
+v_t = sqrt(2 m g / (C rho A)) (the notes leave out the mass), given directly or from m, C, rho and A. The numbers
+come from orbits.core.projectile (accuracy stated there: heyoka agrees to 5e-16 for linear drag, 6e-14 for quadratic).
 """
 
 from collections.abc import Iterable
@@ -62,7 +62,7 @@ class Projectile(display.Displayed):
                             drag_coefficient: float | None = None, density: u.Quantity | None = None,
                             area: u.Quantity | None = None) -> "Projectile":
         """The same launch under drag -(1/2) C rho A |v| v (XX.iv): give v_t, or m, C, rho and A, from which
-        v_t = sqrt(2 m g / (C rho A)) (ERRATA #32)."""
+        v_t = sqrt(2 m g / (C rho A)) (the notes leave out the mass)."""
         if terminal_speed is not None:
             v_t = inputs.positive(terminal_speed, units.M_PER_S, "terminal speed v_t")
         else:
@@ -278,7 +278,8 @@ class EffectiveGravity(display.Displayed):
 
     @cached_property
     def toward_equator(self) -> u.Quantity:
-        """The horizontal component omega**2 R sin(2 phi) / 2 (m/s2), toward the equator (ERRATA #28)."""
+        """The horizontal component omega**2 R sin(2 phi) / 2 (m/s2), toward the equator (the
+        notes' sign points it toward the pole)."""
         return np.abs(self._components[0]) << ACCELERATION
 
     @cached_property

@@ -62,7 +62,7 @@ def command(
         result |= {"gravity_loss": rocket.gravity_loss(gravity),
                    "vertical_ascent_speed": rocket.vertical_ascent_speed(gravity)}
     stages = f"{rocket.stages} stages" if rocket.stages > 1 else "one stage"
-    render.emit(f"Rocket, {stages} (delta-v = v_e ln(m0 / mf), notes X with ERRATA #20)", result, fmt.value)
+    render.emit(f"Rocket, {stages} (delta-v = v_e ln(m0 / mf), the rocket equation of notes X)", result, fmt.value)
 
 
 def _each(texts, kind, option):

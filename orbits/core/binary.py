@@ -11,8 +11,8 @@ m1 |r1| = m2 |r2|), and that scaled conic is itself a Kepler orbit about a fixed
 parameter G m_j**3 / (m1 + m2)**2 (XXII.iii: a**3 / T**2 = G M**3 / ((m + M)**2 4 pi**2)).
 
 Every fraction is formed from the masses themselves, never as 1 - (other fraction), and in double-double
-arithmetic, so m2 / m1 = 1e-15 loses nothing (EDGE_CASES #45): tests/core/test_binary.py measures <= 0.5 ulp
-(correct rounding) for the fractions and the reduced mass against mpmath.
+arithmetic, so m2 / m1 = 1e-15 loses nothing (row 45 of tests/stability/EDGE_CASES.md): tests/core/test_binary.py
+measures <= 0.5 ulp (correct rounding) for the fractions and the reduced mass against mpmath.
 """
 
 import numpy as np
@@ -131,7 +131,7 @@ def propagate(
     return r1 + drift, v1 + com_v, r2 + drift, v2 + com_v
 
 
-# ---- what an observer measures: the orbit on the sky and the radial velocities (issue 18) -------------------
+# ---- what an observer measures: the orbit on the sky and the radial velocities ------------------------------
 #
 # The sky frame is that of visual and spectroscopic binaries (Thiele-Innes): x toward the north, y toward the
 # east, z along the line of sight AWAY from the observer, so that a radial velocity dz/dt > 0 is a recession

@@ -69,7 +69,7 @@ def center_of_mass_velocity(m1: ArrayLike, v1: ArrayLike, m2: ArrayLike, v2: Arr
 
 def internal_kinetic_energy(m1: ArrayLike, v1: ArrayLike, m2: ArrayLike, v2: ArrayLike, vectors: bool = False):
     """K_int = mu |v1 - v2|**2 / 2 (J), mu = m1 m2 / (m1 + m2): the kinetic energy in the centre-of-mass frame
-    (IX.iv, ERRATA #3). With vectors=True, v1 and v2 carry components on the last axis."""
+    (IX.iv). With vectors=True, v1 and v2 carry components on the last axis."""
     dv = np.asarray(v1, dtype=float) - np.asarray(v2, dtype=float)
     squared = _dot(dv, dv) if vectors else dv * dv
     return 0.5 * reduced_mass(m1, m2) * squared
@@ -82,7 +82,7 @@ def kinetic_energy(m: ArrayLike, v: ArrayLike, vectors: bool = False):
 
 
 def velocities_after(m1: ArrayLike, v1: ArrayLike, m2: ArrayLike, v2: ArrayLike, e: ArrayLike = 1.0):
-    """(v1', v2') (m/s) of a head-on collision along a line with restitution e (IX.vii, ix, xi; ERRATA #6, #9, #12).
+    """(v1', v2') (m/s) of a head-on collision along a line with restitution e (IX.vii, ix, xi: e = 1, 0, between).
 
     v1' = (1 + e) v_c - e v1 = v1 - (1 + e) x2 (v1 - v2), v2' = (1 + e) v_c - e v2 = v2 + (1 + e) x1 (v1 - v2);
     the relative velocity reverses and shrinks by e, momentum is conserved and K_int' = e**2 K_int. The formula
@@ -118,7 +118,7 @@ def oblique_velocities_after(
     v1' = v1 - (1 + e) x2 ((v1 - v2) . n) n, v2' = v2 + (1 + e) x1 ((v1 - v2) . n) n: the components along n
     collide as in velocities_after, the others are unchanged. Without `normal`, n is the relative velocity's
     direction (the notes' model: a head-on impact of smooth spheres); for an oblique impact of smooth spheres
-    pass the line of centres at contact (ERRATA #14). Raises OrbitDomainError if the bodies separate along n.
+    pass the line of centres at contact. Raises OrbitDomainError if the bodies separate along n.
     """
     v1, v2 = np.asarray(v1, dtype=float), np.asarray(v2, dtype=float)
     n = line_of_impact(v1, v2) if normal is None else _unit(normal)
@@ -159,8 +159,8 @@ def _unit(n):
 
 def perpendicular_foot(v1: ArrayLike, v2: ArrayLike) -> np.ndarray:
     """v_t = ((|v2|**2 - v1.v2) v1 + (|v1|**2 - v1.v2) v2) / |v1 - v2|**2 (m/s): the foot of the perpendicular
-    from the origin to the line through v1 and v2 (IX.xiii, ERRATA #14), the velocity both keep across the line
-    of impact, so that v_i = v_t + (v_i . n) n."""
+    from the origin to the line through v1 and v2 (IX.xiii, oblique collisions), the velocity both keep across the
+    line of impact, so that v_i = v_t + (v_i . n) n."""
     v1, v2 = np.asarray(v1, dtype=float), np.asarray(v2, dtype=float)
     cross = _dot(v1, v2)
     dv = v1 - v2
@@ -170,23 +170,23 @@ def perpendicular_foot(v1: ArrayLike, v2: ArrayLike) -> np.ndarray:
 
 def energy_transfer_ratio(mass_ratio: ArrayLike, e: ArrayLike = 1.0):
     """K2' / K1 = (1 + e)**2 r / (1 + r)**2 (dimensionless), r = m1 / m2: the share of a moving body's kinetic
-    energy given to a body at rest (IX.viii). Elastic: 4 r / (1 + r)**2 = 4 m1 m2 / (m1 + m2)**2, ERRATA #7 (the
-    notes drop the 4); 1 at r = 1, 8/9 at r = 1/2 and 2."""
+    energy given to a body at rest (IX.viii). Elastic: 4 r / (1 + r)**2 = 4 m1 m2 / (m1 + m2)**2 (the
+    notes' second form drops the 4); 1 at r = 1, 8/9 at r = 1/2 and 2."""
     r = np.asarray(mass_ratio, dtype=float)
     share = r / (1.0 + r)  # m1 / (m1 + m2)
     return (1.0 + np.asarray(e, dtype=float)) ** 2 * share / (1.0 + r)
 
 
 def energy_kept_ratio(mass_ratio: ArrayLike, e: ArrayLike = 1.0):
-    """K1' / K1 = ((r - e) / (1 + r))**2 (dimensionless), r = m1 / m2: what the moving body keeps (IX.viii,
-    ERRATA #8); elastic: ((1 - r) / (1 + r))**2."""
+    """K1' / K1 = ((r - e) / (1 + r))**2 (dimensionless), r = m1 / m2: what the moving body keeps (IX.viii);
+    elastic: ((1 - r) / (1 + r))**2."""
     r = np.asarray(mass_ratio, dtype=float)
     return ((r - np.asarray(e, dtype=float)) / (1.0 + r)) ** 2
 
 
 def spring_compression(m1: ArrayLike, v1: ArrayLike, m2: ArrayLike, v2: ArrayLike, k: ArrayLike):
     """x = |v1 - v2| sqrt(mu / k) (m): the greatest compression of a massless spring of constant k (N/m) between
-    the bodies, from k x**2 / 2 = K_int (IX.xii, ERRATA #13)."""
+    the bodies, from k x**2 / 2 = K_int (IX.xii)."""
     dv = np.abs(np.asarray(v1, dtype=float) - np.asarray(v2, dtype=float))
     return dv * np.sqrt(reduced_mass(m1, m2) / np.asarray(k, dtype=float))
 

@@ -32,13 +32,13 @@ def second_cosmic_velocity(g: ArrayLike, radius: ArrayLike) -> float | np.ndarra
 
 def escape_excess_speed(orbital_speed: ArrayLike) -> float | np.ndarray:
     """(sqrt 2 - 1) v (m/s): speed relative to a planet on a circular orbit of speed v (m/s) that, added along its
-    motion, reaches the local solar escape speed sqrt(2) v (patched conics, XXI.ix; ERRATA #54)."""
+    motion, reaches the local solar escape speed sqrt(2) v (patched conics, XXI.ix, cosmic velocities)."""
     return SQRT2_MINUS_1 * orbital_speed
 
 
 def third_cosmic_velocity(orbital_speed: ArrayLike, surface_escape_speed: ArrayLike) -> float | np.ndarray:
     """v3 = sqrt(((sqrt 2 - 1) v_orbit)**2 + v_esc**2) (m/s): launch speed that leaves the planet with the solar
-    escape excess (energy conservation in the planet's field, patched conics; XXI.ix, ERRATA #54). For Earth,
+    escape excess (energy conservation in the planet's field, patched conics; XXI.ix, cosmic velocities). For Earth,
     v_orbit = 29.785 km/s and v_esc = 11.178 km/s give 16.648 km/s (the notes' 16.7)."""
     return np.hypot(escape_excess_speed(orbital_speed), surface_escape_speed)
 

@@ -22,7 +22,7 @@ def focusing_ratio(b: ArrayLike, v_inf: ArrayLike, mu: ArrayLike) -> float | np.
 
 
 def eccentricity(b: ArrayLike, v_inf: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
-    """e = sqrt(1 + (b v_inf**2 / mu)**2) (dimensionless), the hyperbola's eccentricity (ERRATA #48)."""
+    """e = sqrt(1 + (b v_inf**2 / mu)**2) (dimensionless), the hyperbola's eccentricity."""
     return np.hypot(1.0, focusing_ratio(b, v_inf, mu))
 
 
@@ -39,7 +39,7 @@ def semilatus_rectum(b: ArrayLike, v_inf: ArrayLike, mu: ArrayLike) -> float | n
 def periapsis_distance(b: ArrayLike, v_inf: ArrayLike, mu: ArrayLike) -> float | np.ndarray:
     """Closest approach R = b k / (1 + sqrt(1 + k**2)) = (sqrt(mu**2 + v_inf**4 b**2) - mu) / v_inf**2 (m).
 
-    The notes' R (XXI.vi, XXII.vi) equals the periapsis |a| (e - 1) of the hyperbola (ERRATA #48, #73).
+    The notes' closest approach R of a flyby (XXI.vi, XXII.vi) is this periapsis |a| (e - 1) of the hyperbola.
     """
     k = focusing_ratio(b, v_inf, mu)
     return b * k / (1.0 + np.hypot(1.0, k))

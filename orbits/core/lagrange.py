@@ -7,15 +7,16 @@ primary M at (-mu, 0, 0), the secondary m at (1 - mu, 0, 0), rotation about +z. 
 axis; mirror x -> -x to compare.) L1 lies between the stars, L2 beyond m, L3 beyond M, and L4 (L5) leads
 (trails) m by 60 degrees, at (1/2 - mu, +-sqrt(3)/2).
 
-Collinear points solve the exact force balance on the x axis (ERRATA #78; the notes' intervals are wrong,
-ERRATA #79), rewritten as a quintic in the small offset from the nearer star, so tiny mu keeps full relative
-accuracy: rho = h u from m for L1 and L2 (h = (mu/3)**(1/3), u -> 1 as mu -> 0), and for L3 the distance
-from M, s = 1 - mu w (w -> 7/12). Each root comes from the bracketed Halley solver of orbits.core._roots.
-Accuracy (tests/core/test_lagrange.py, against mpmath roots of the raw force balance at >= 50 digits): offsets
-within 2 ulp (measured 1.3) for mu from 1e-300 to 1/2; positions within 2**-52 r; for mu >= 1e-15 the
-rotating-frame force at the returned point is below 1e-15 of the primaries' gravity there (measured 9.7e-16;
-below mu ~ 1e-32 rho < 2**-52 and x_L1, x_L2 round onto the secondary: use the offsets); eigenvalues within
-2e-14 of max |lambda| (measured 8e-16) of mpmath's eig of the linearisation.
+Collinear points solve the exact force balance on the x axis, with the signs of x - x_M and x - x_m kept rather
+than the notes' +- form. The intervals the notes' proof puts the points in have -x_m where x_m belongs (their L1
+interval is empty, their L2 one holds L1); the points lie as placed above. The balance is rewritten as a quintic
+in the small offset from the nearer star, so tiny mu keeps full relative accuracy: rho = h u from m for L1 and L2
+(h = (mu/3)**(1/3), u -> 1 as mu -> 0), and for L3 the distance from M, s = 1 - mu w (w -> 7/12). Each root comes
+from the bracketed Halley solver of orbits.core._roots. Accuracy (tests/core/test_lagrange.py, against mpmath
+roots of the raw force balance at >= 50 digits): offsets within 2 ulp (measured 1.3) for mu from 1e-300 to 1/2;
+positions within 2**-52 r; for mu >= 1e-15 the rotating-frame force at the returned point is below 1e-15 of the
+primaries' gravity there (measured 9.7e-16; below mu ~ 1e-32 rho < 2**-52 and x_L1, x_L2 round onto the secondary:
+use the offsets); eigenvalues within 2e-14 of max |lambda| (measured 8e-16) of mpmath's eig of the linearisation.
 """
 
 import numpy as np

@@ -4,15 +4,17 @@ SI units: lengths in m, times in s, angles in rad, g in m/s**2, masses in kg, mo
 frequencies in rad/s; a damped oscillator x'' = -k (x - C) - b x' (XXV.v) takes k in 1/s**2 and b in 1/s (force
 per unit mass). Everything broadcasts.
 
-- Pendulums (XXV.iv, corrected as ERRATA #88-#90): theta'' = -(g / L) sin(theta), I theta'' = -m g L sin(theta);
-  small-angle frequency sqrt(g / L), sqrt(m g L / I). The exact period at amplitude theta0 is
+- Pendulums (XXV.iv): theta'' = -(g / L) sin(theta), I theta'' = -m g L sin(theta), with the minus sign of a
+  restoring torque that the notes leave out; small-angle frequency sqrt(g / L), sqrt(m g L / I) (the notes'
+  sqrt(I / (m g L)) is a time). The exact period at amplitude theta0 is
   4 K(sin**2(theta0 / 2)) / omega0 = 2 pi / (omega0 AGM(1, cos(theta0 / 2))), the complete elliptic integral of
   the first kind by the arithmetic-geometric mean, with no cancellation up to theta0 -> pi.
-- Damped oscillators (XXV.v, corrected as ERRATA #91-#98): the initial-value solution in one form for all three
-  regimes, continuous across critical damping; and the notes' parametrisations with their corrected derivatives.
+- Damped oscillators (XXV.v): the initial-value solution in one form for all three regimes, continuous across
+  critical damping; and the notes' parametrisations with their derivatives, corrected where the notes' underdamped
+  x' has the opposite sign and x'' the wrong phase, and where their critically damped x' and x'' are wrong.
 - Driven oscillator (XXV.vii): the steady state's amplitude and phase lag, resonance.
-- Vertical circle (XXV.vi, corrected as ERRATA #99-#105): speed, normal force, turning and leaving angles, the
-  periods T1 (looping) and T2 (swinging) by the AGM.
+- Vertical circle (XXV.vi): speed, normal force, turning and leaving angles, the periods T1 (looping) and T2
+  (swinging) by the AGM; where the notes' signs or angles differ, each function says how.
 Accuracy (tests/core/test_oscillations.py): K(m) within 1 ulp and the pendulum period within 2 ulp of mpmath up to
 theta0 = 180 - 1e-6 degrees; damped motion within 1.2e-16 (of the initial scale) of a 50-digit solution in every
 regime. Against heyoka integrations of the same equations (tests/validation/test_mechanics_integration.py): periods
@@ -58,19 +60,20 @@ def ellipk(m: ArrayLike) -> np.ndarray:
 
 
 def simple_pendulum_frequency(g: ArrayLike, length: ArrayLike) -> np.ndarray:
-    """omega0 = sqrt(g / L) (rad/s): small oscillations of L theta'' = -g sin(theta) (XXV.iv, ERRATA #88)."""
+    """omega0 = sqrt(g / L) (rad/s): small oscillations of L theta'' = -g sin(theta) (XXV.iv, where the notes
+    drop the minus)."""
     return np.sqrt(np.asarray(g, dtype=float) / np.asarray(length, dtype=float))
 
 
 def physical_pendulum_frequency(mass: ArrayLike, g: ArrayLike, distance: ArrayLike, inertia: ArrayLike):
     """omega0 = sqrt(m g L / I) (rad/s): I theta'' = -m g L sin(theta), L the pivot-to-centre-of-mass distance and
-    I the moment about the pivot (XXV.iv, ERRATA #89-#90: the notes' sqrt(I / (m g L)) is a time)."""
+    I the moment about the pivot (XXV.iv, where the notes print sqrt(I / (m g L)), which is a time)."""
     return np.sqrt(np.asarray(mass, dtype=float) * np.asarray(g) * np.asarray(distance) / np.asarray(inertia))
 
 
 def torsion_frequency(kappa: ArrayLike, inertia: ArrayLike) -> np.ndarray:
-    """Omega = sqrt(kappa / I) (rad/s) of a torsion pendulum tau = -kappa theta (XXV.ii, ERRATA #86: kappa = I
-    Omega**2, not m Omega**2)."""
+    """Omega = sqrt(kappa / I) (rad/s) of a torsion pendulum tau = -kappa theta (XXV.ii): kappa = I
+    Omega**2, where the notes print m Omega**2."""
     return np.sqrt(np.asarray(kappa, dtype=float) / np.asarray(inertia, dtype=float))
 
 
@@ -198,7 +201,8 @@ def damped_motion(k: ArrayLike, b: ArrayLike, x0: ArrayLike, v0: ArrayLike, t: A
 def underdamped_notes(amplitude, phase, k, b, t):
     """(x, x', x'') of the notes' x = A e^(-bt/2) sin(psi), psi = omega_d t + phi (XXV.v, C = 0), with the
     corrected derivatives x' = A sqrt(k) e^(-bt/2) sin(psi + delta), x'' = A k e^(-bt/2) sin(psi + 2 delta),
-    delta = arccos(-b / (2 sqrt(k))) (ERRATA #92, #93: the notes' arctan is delta - pi, which flips x')."""
+    delta = arccos(-b / (2 sqrt(k))). The notes' phase arctan(-sqrt(4k - b**2) / b) is delta - pi, which flips the
+    sign of their x'; their x'' has delta where 2 delta belongs."""
     k, b, t = (np.asarray(x, dtype=float) for x in (k, b, t))
     psi = damped_frequency(k, b) * t + phase
     delta = np.arccos(-b / (2.0 * np.sqrt(k)))
@@ -207,8 +211,8 @@ def underdamped_notes(amplitude, phase, k, b, t):
 
 
 def underdamped_energy_notes(mass, amplitude, phase, k, b, t):
-    """K + U = (m A**2 k / 2) e^(-bt) [1 + (b / (2 sqrt(k))) cos(2 psi + delta)] (J), exactly (ERRATA #95: the notes'
-    (m A**2 k / 2) e^(-bt) holds only for b << 2 sqrt(k))."""
+    """K + U = (m A**2 k / 2) e^(-bt) [1 + (b / (2 sqrt(k))) cos(2 psi + delta)] (J), exactly; the notes'
+    (m A**2 k / 2) e^(-bt) holds only for b << 2 sqrt(k)."""
     k, b, t = (np.asarray(x, dtype=float) for x in (k, b, t))
     psi = damped_frequency(k, b) * t + phase
     delta = np.arccos(-b / (2.0 * np.sqrt(k)))
@@ -217,7 +221,8 @@ def underdamped_energy_notes(mass, amplitude, phase, k, b, t):
 
 def critically_damped_notes(amplitude, rate, b, t):
     """(x, x', x'') of the notes' x = A (1 + B t) e^(-bt/2) (XXV.v, k = b**2 / 4, C = 0), corrected:
-    x' = A (2B - b (1 + B t)) / 2 e^(-bt/2) (ERRATA #96), x'' = A b (b (1 + B t) - 4B) / 4 e^(-bt/2) (ERRATA #97)."""
+    x' = A (2B - b (1 + B t)) / 2 e^(-bt/2), x'' = A b (b (1 + B t) - 4B) / 4 e^(-bt/2); the notes print B for 2B
+    in x' and a wrong x''."""
     b, t = np.asarray(b, dtype=float), np.asarray(t, dtype=float)
     decay = amplitude * np.exp(-0.5 * b * t)
     line = 1.0 + rate * t
@@ -226,7 +231,7 @@ def critically_damped_notes(amplitude, rate, b, t):
 
 def overdamped_notes(amplitude, ratio, k, b, t):
     """(x, x', x'') of the notes' x = A e^(-bt/2) (e^(gt) + B e^(-gt)), g = sqrt(b**2 - 4k) / 2 (XXV.v, C = 0),
-    with the notes' derivatives (ERRATA #98: correct)."""
+    with the notes' derivatives, which are correct."""
     k, b, t = (np.asarray(x, dtype=float) for x in (k, b, t))
     root = np.sqrt(b * b - 4 * k)
     slow, fast = np.exp((-b + root) / 2 * t), ratio * np.exp((-b - root) / 2 * t)
@@ -254,7 +259,7 @@ def driven_phase_lag(omega0: ArrayLike, b: ArrayLike, drive: ArrayLike) -> np.nd
 
 
 def driven_velocity_amplitude(omega0, b, force_per_mass, drive) -> np.ndarray:
-    """w A (m/s): largest at w = omega0 for every damping (XXV.vii, ERRATA #106), where it is F0 / (m b)."""
+    """w A (m/s): largest at w = omega0 for every damping (XXV.vii), where it is F0 / (m b)."""
     return np.asarray(drive, dtype=float) * driven_amplitude(omega0, b, force_per_mass, drive)
 
 
@@ -277,7 +282,7 @@ def driven_steady_state(omega0, b, force_per_mass, drive, t):
 
 def circle_speed(u: ArrayLike, g: ArrayLike, radius: ArrayLike, theta: ArrayLike) -> np.ndarray:
     """v = sqrt(u**2 - 2 g R (1 - cos(theta))) = sqrt(u**2 - 4 g R sin**2(theta / 2)) (m/s) at angle theta (rad)
-    from the lowest point, for bottom speed u (ERRATA #99); NaN where the bead cannot reach theta."""
+    from the lowest point, for bottom speed u (XXV.vi); NaN where the bead cannot reach theta."""
     s = np.sin(0.5 * np.asarray(theta, dtype=float))
     squared = np.asarray(u, dtype=float) ** 2 - 4.0 * np.asarray(g) * np.asarray(radius) * s * s
     with np.errstate(invalid="ignore"):
@@ -286,27 +291,28 @@ def circle_speed(u: ArrayLike, g: ArrayLike, radius: ArrayLike, theta: ArrayLike
 
 def circle_normal_force(mass, u, g, radius, theta) -> np.ndarray:
     """N = m v**2 / R + m g cos(theta) = (m / R)(u**2 - 2 g R + 3 g R cos(theta)) (N), the force toward the centre
-    (string tension, track push) (XXV.vi, ERRATA #101: the notes write - m g cos and 1 g R cos)."""
+    (string tension, track push) (XXV.vi, where the notes print - m g cos(theta) and 1 g R cos(theta))."""
     g, radius = np.asarray(g, dtype=float), np.asarray(radius, dtype=float)
     return np.asarray(mass) / radius * (np.asarray(u) ** 2 - 2 * g * radius + 3 * g * radius * np.cos(theta))
 
 
 def circle_angular_acceleration(g, radius, theta) -> np.ndarray:
-    """theta'' = -(g / R) sin(theta) (rad/s**2) (XXV.vi, ERRATA #100: restoring, with the minus)."""
+    """theta'' = -(g / R) sin(theta) (rad/s**2) (XXV.vi): restoring, with the minus
+    the notes leave out."""
     return -np.asarray(g, dtype=float) / np.asarray(radius) * np.sin(theta)
 
 
 def turning_angle(u, g, radius) -> np.ndarray:
     """theta_m = arccos(1 - u**2 / (2 g R)) = 2 asin(u / (2 sqrt(g R))) (rad), where v = 0, for u <= 2 sqrt(g R)
-    (ERRATA #102: the notes write arccos(u**2 / (2 g R))); the asin form keeps small angles' digits."""
+    (the notes print arccos(u**2 / (2 g R))); the asin form keeps small angles' digits."""
     ratio = np.asarray(u, dtype=float) / (2.0 * np.sqrt(np.asarray(g) * np.asarray(radius)))
     return 2.0 * np.arcsin(np.minimum(ratio, 1.0))
 
 
 def leaving_angle(u, g, radius) -> np.ndarray:
     """theta with cos(theta) = (2 g R - u**2) / (3 g R) (rad): where N = 0 and a string slackens or a bead on the
-    outside of a track leaves it, between pi/2 and pi for sqrt(2 g R) < u < sqrt(5 g R) (ERRATA #104: beyond the
-    horizontal diameter, not on it); NaN outside that range."""
+    outside of a track leaves it, between pi/2 and pi for sqrt(2 g R) < u < sqrt(5 g R) (beyond the
+    horizontal diameter, where the notes place it); NaN outside that range."""
     gr = np.asarray(g, dtype=float) * np.asarray(radius)
     cos_theta = (2.0 * gr - np.asarray(u) ** 2) / (3.0 * gr)
     inside = (cos_theta > -1) & (cos_theta < 0)
@@ -315,7 +321,7 @@ def leaving_angle(u, g, radius) -> np.ndarray:
 
 def loop_period(u, g, radius) -> np.ndarray:
     """T1 = R int_0^2pi d theta / v = 4 R K(4 g R / u**2) / u = 2 pi R / (u AGM(1, sqrt(1 - 4 g R / u**2))) (s) for
-    u > 2 sqrt(g R) (XXV.vi, ERRATA #99); the complement formed as (u - 2 sqrt(gR))(u + 2 sqrt(gR)) / u**2."""
+    u > 2 sqrt(g R) (XXV.vi); the complement formed as (u - 2 sqrt(gR))(u + 2 sqrt(gR)) / u**2."""
     u, g, radius = (np.asarray(x, dtype=float) for x in (u, g, radius))
     edge = 2.0 * np.sqrt(g * radius)
     complement = np.sqrt((u - edge) * (u + edge)) / u

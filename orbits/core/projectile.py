@@ -1,15 +1,16 @@
 """Section XX of the notes: motion under uniform effective gravity, on float64 arrays.
 
-SI units throughout: g in m/s**2, speeds in m/s, lengths in m, times in s, angles in rad, the linear-drag rate b
-in 1/s (drag force -m b v), the quadratic-drag terminal speed v_t in m/s (drag force -m g |v| v / v_t**2, that is
--(1/2) C rho A |v| v with v_t = sqrt(2 m g / (C rho A)), ERRATA #32). The frame has x along the ground and y up,
-launch from (0, h) at velocity (v_x, v_y).
+SI units throughout: g in m/s**2, speeds in m/s, lengths in m, times in s, angles in rad, the linear-drag rate b in
+1/s (drag force -m b v), the quadratic-drag terminal speed v_t in m/s (drag force -m g |v| v / v_t**2, that is
+-(1/2) C rho A |v| v with v_t = sqrt(2 m g / (C rho A)); the notes' v_t leaves out the mass). The frame has x along
+the ground and y up, launch from (0, h) at velocity (v_x, v_y).
 
-- Effective gravity on a rotating Earth (XX.i, corrected as ERRATA #28) and the conical pendulum (XX.ii).
+- Effective gravity on a rotating Earth (XX.i; the horizontal part points toward the equator, the opposite of the
+  notes' sign) and the conical pendulum (XX.ii).
 - No drag (XX.iii): closed forms; the flight time 2 h / (s - v_y) when thrown downward avoids cancellation.
-- Linear drag (XX.v, corrected as ERRATA #33-#35): closed forms written with (1 - e^-z) / z and
-  (z - 1 + e^-z) / z**2, z = b t, so that b -> 0 reproduces the drag-free motion digit for digit; the apex by
-  log1p; the landing time by safeguarded Newton on the closed form.
+- Linear drag (XX.v; the notes' y(t) and y'(t) have wrong signs, corrected at each function): closed forms written
+  with (1 - e^-z) / z and (z - 1 + e^-z) / z**2, z = b t, so that b -> 0 reproduces the drag-free motion digit for
+  digit; the apex by log1p; the landing time by safeguarded Newton on the closed form.
 - Quadratic drag (XX.iv): no closed form for x(t), but along the trajectory the horizontal velocity u is a closed
   function of p = tan(velocity angle): 1 / u**2 = 1 / u0**2 + (G(p0) - G(p)) / v_t**2 with
   G(p) = p sqrt(1 + p**2) + asinh(p), and t, x, y are integrals of u, u**2, u**2 p over p (times v_t / g ...),
@@ -35,8 +36,8 @@ def effective_gravity(a_g: ArrayLike, omega: ArrayLike, radius: ArrayLike, latit
     away from the axis, at latitude phi on a sphere of radius R spinning at omega (rad/s) (XX.i).
 
     Components (omega**2 R sin(2 phi) / 2, a_g - omega**2 R cos**2 phi): the horizontal part points toward the
-    equator (ERRATA #28: the notes' x toward the pole needs the opposite sign); the vertical part is least at the
-    equator, a_g - omega**2 R, and a_g at the poles.
+    equator (the notes take x toward the pole with this sign, which points the wrong way); the vertical part is
+    least at the equator, a_g - omega**2 R, and a_g at the poles.
     """
     phi = np.asarray(latitude, dtype=float)
     spin = np.asarray(omega, dtype=float) ** 2 * np.asarray(radius, dtype=float)
@@ -46,7 +47,7 @@ def effective_gravity(a_g: ArrayLike, omega: ArrayLike, radius: ArrayLike, latit
 
 def conical_pendulum_rate(g: ArrayLike, length: ArrayLike, angle: ArrayLike) -> np.ndarray:
     """omega = sqrt(g sec(theta) / L) (rad/s): the angular speed of a conical pendulum of string length L (m) at
-    angle theta (rad) from the vertical (XX.ii, ERRATA #29: g tan(theta) = omega**2 L sin(theta))."""
+    angle theta (rad) from the vertical (XX.ii: g tan(theta) = omega**2 L sin(theta))."""
     return np.sqrt(np.asarray(g, dtype=float) / (np.asarray(length, dtype=float) * np.cos(angle)))
 
 
@@ -72,7 +73,7 @@ def conical_pendulum_angle(g: ArrayLike, length: ArrayLike, omega: ArrayLike) ->
 
 
 def free_position(v_x, v_y, h, g, t):
-    """(x, y) = (v_x t, h + v_y t - g t**2 / 2) (m) (XX.iii, ERRATA #30)."""
+    """(x, y) = (v_x t, h + v_y t - g t**2 / 2) (m) (XX.iii)."""
     t = np.asarray(t, dtype=float)
     return np.asarray(v_x) * t, h + (np.asarray(v_y) - 0.5 * np.asarray(g) * t) * t
 
@@ -151,9 +152,10 @@ def _log_excess(z):
 
 
 def linear_drag_position(v_x, v_y, h, g, b, t):
-    """(x, y) (m) under drag -m b v (XX.v, ERRATA #34): x = (v_x / b)(1 - e^-bt),
-    y = h - g t / b + (v_y / b + g / b**2)(1 - e^-bt), evaluated as x = v_x t F1, y = h + v_y t F1 - g t**2 F2 with
-    F1 = (1 - e^-z) / z, F2 = (z - 1 + e^-z) / z**2, z = b t (b = 0 is the drag-free motion)."""
+    """(x, y) (m) under drag -m b v (XX.v): x = (v_x / b)(1 - e^-bt),
+    y = h - g t / b + (v_y / b + g / b**2)(1 - e^-bt) (the notes flip both signs of y, which gives y'(0) = -v_y),
+    evaluated as x = v_x t F1, y = h + v_y t F1 - g t**2 F2 with F1 = (1 - e^-z) / z, F2 = (z - 1 + e^-z) / z**2,
+    z = b t (b = 0 is the drag-free motion)."""
     t = np.asarray(t, dtype=float)
     z = np.asarray(b, dtype=float) * t
     f1 = _relaxation(z)
@@ -161,8 +163,8 @@ def linear_drag_position(v_x, v_y, h, g, b, t):
 
 
 def linear_drag_velocity(v_x, v_y, g, b, t):
-    """(v_x e^-bt, -g / b + (v_y + g / b) e^-bt) (m/s) (XX.v, ERRATA #35: the notes' +g / b breaks v(0) = v_y),
-    evaluated as v_y e^-bt - g t (1 - e^-bt) / (b t)."""
+    """(v_x e^-bt, -g / b + (v_y + g / b) e^-bt) (m/s) (XX.v; the notes' +g / b breaks v(0) = v_y), evaluated as
+    v_y e^-bt - g t (1 - e^-bt) / (b t)."""
     t = np.asarray(t, dtype=float)
     z = np.asarray(b, dtype=float) * t
     decay = np.exp(-z)
@@ -170,7 +172,7 @@ def linear_drag_velocity(v_x, v_y, g, b, t):
 
 
 def linear_drag_terminal_speed(g, b):
-    """g / b (m/s): the terminal velocity is (0, -g / b) (XX.v, ERRATA #36)."""
+    """g / b (m/s): the terminal velocity is (0, -g / b) (XX.v)."""
     return np.asarray(g, dtype=float) / np.asarray(b, dtype=float)
 
 
@@ -231,7 +233,7 @@ def _newton_descending(t, lo, hi, function, what):
 
 
 def quadratic_drag_terminal_speed(mass, g, drag_coefficient, density, area):
-    """v_t = sqrt(2 m g / (C rho A)) (m/s): where drag (1/2) C rho A v**2 balances m g (XX.iv, ERRATA #32: the
+    """v_t = sqrt(2 m g / (C rho A)) (m/s): where drag (1/2) C rho A v**2 balances m g (XX.iv; the
     notes drop the mass, which leaves a formula of the wrong dimension)."""
     return np.sqrt(2.0 * np.asarray(mass) * np.asarray(g) / (np.asarray(drag_coefficient) * np.asarray(density)
                                                                * np.asarray(area)))

@@ -2,7 +2,7 @@
 (Maxwell's ring), turning rigidly about the barycentre.
 
 Each ring body moves as if it circled a point mass GM_eff = G m S_n / 4 + G M at the centre, where
-S_n = sum_{k=1}^{n-1} csc(pi k / n) (the notes' csc sum, ERRATA #81: correct). Every quantity of the notes is
+S_n = sum_{k=1}^{n-1} csc(pi k / n) (the notes' csc sum, correct as printed). Every quantity of the notes is
 then a circular-orbit formula in GM_eff: omega = sqrt(GM_eff / r**3), v = omega r, U = -n m GM_eff / r
 (ring pairs -n G m**2 S_n / (4 r) plus the central mass -n G M m / r), K = -U / 2, E = U / 2, L = n m v r.
 

@@ -1,4 +1,4 @@
-"""Section X of the notes: variable mass and the rocket equation, with the sign corrected (ERRATA #15-20).
+"""Section X of the notes: variable mass and the rocket equation, with the sign of its rocket case corrected.
 
 Float64 arrays in SI units (masses in kg, speeds in m/s, thrust in N, times in s); everything broadcasts, and
 the multi-stage functions take the stages along the last axis (bottom stage first).
@@ -6,7 +6,7 @@ the multi-stage functions take the stages along the last axis (bottom stage firs
 One law covers both cases of the notes: a body of mass m that takes in (X.i) or throws out (X.ii) mass moving at
 v_rel relative to itself changes its velocity by
 
-    v2 - v1 = v_rel ln(m2 / m1)                                          (ERRATA #16, #20)
+    v2 - v1 = v_rel ln(m2 / m1)
 
 Gaining mass (m2 > m1) moves it along v_rel; ejecting mass (m2 < m1) moves it against the exhaust. The notes'
 X.ii prints -v_rel ln(M2 / M1), which would push a rocket along its exhaust. For a rocket with exhaust speed
@@ -32,7 +32,8 @@ def velocity_change(v_rel: ArrayLike, m1: ArrayLike, m2: ArrayLike) -> float | n
     """v2 - v1 = v_rel ln(m2 / m1) (m/s): mass gain (X.i, m2 > m1) and ejection (X.ii, m2 < m1) alike.
 
     v_rel (m/s) is the velocity of the mass taken in or thrown out relative to the body (a component along any
-    axis); m1, m2 (kg) the masses before and after. ERRATA #16 and #20 (the notes' X.ii sign is wrong).
+    axis); m1, m2 (kg) the masses before and after. The notes' rocket case (X.ii) prints the opposite sign, which
+    would push a rocket along its exhaust.
     """
     return v_rel * log_mass_ratio(m1, m2)
 

@@ -1,4 +1,4 @@
-"""Section XXIV of the notes: the Newtonian expanding sphere (Einstein-de Sitter, ERRATA #82-84).
+"""Section XXIV of the notes: the Newtonian expanding sphere (Einstein-de Sitter).
 
 Float64 arrays in SI units (t in s, r in m, gm = G M in m**3/s**2, H in 1/s) that broadcast. A shell enclosing
 the mass M of a uniform, pressureless sphere moves outward at the zero-energy speed v = sqrt(2 G M / r), so

@@ -3,7 +3,7 @@
 Float64 arrays in SI units (p, a, r in m; mu in m**3/s**2; m in kg; times in s; angles in rad).
 The orbit is described by its semi-latus rectum p and eccentricity e, which stay finite and well
 conditioned for every conic; a = p / (1 - e**2) is derived (the notes' r1 = a - c, r2 = a + c,
-c = a e, with the ERRATA's correction e = c / a). Functions that only make sense on an ellipse say so.
+c = a e; e = c / a, where XXI.iv prints the inverse a / c). Functions that only make sense on an ellipse say so.
 """
 
 import numpy as np

@@ -10,7 +10,7 @@
     >>> saturn.delta_v.to(u.km / u.s).round(2)
     <Quantity 12.46 km / s>
 
-One law serves both cases of X (ERRATA #15-20): a body whose mass goes from m1 to m2 by taking in or throwing
+One law serves both cases of X (mass gain and rocket): a body whose mass goes from m1 to m2 by taking in or throwing
 out matter at velocity v_rel relative to itself changes its velocity by v_rel ln(m2 / m1). The notes' X.ii
 prints -v_rel ln(M2 / M1), which would speed a rocket up along its own exhaust. For a rocket, v_rel points
 backwards with the exhaust speed v_e = Isp g0, and the gain is Tsiolkovsky's v_e ln(m0 / mf). The burns at
@@ -44,8 +44,8 @@ def velocity_change(v_rel: u.Quantity, m1: u.Quantity, m2: u.Quantity) -> u.Quan
     """v2 - v1 = v_rel ln(m2 / m1) (m/s) when the mass goes from m1 to m2 (kg) by matter moving at v_rel (speed,
     any sign or a vector) relative to the body: gained (X.i, m2 > m1) or ejected (X.ii, m2 < m1).
 
-    ERRATA #16 and #20: the same law for both, with the notes' X.ii sign corrected; <= 2 ulp against mpmath
-    (tests/core/test_rocket.py).
+    The same law for both; the notes' rocket case (X.ii) prints the opposite sign, which would push a rocket along
+    its exhaust. <= 2 ulp against mpmath (tests/core/test_rocket.py).
     """
     v = units.to_si(v_rel, units.M_PER_S, "relative velocity v_rel")
     check_finite(v, "relative velocity v_rel", "m / s")
@@ -149,7 +149,7 @@ class Rocket(display.Displayed):
 
     @cached_property
     def stage_delta_v(self) -> u.Quantity:
-        """v_e ln(m0 / mf) (m/s) of each stage (X.ii with ERRATA #20)."""
+        """v_e ln(m0 / mf) (m/s) of each stage (Tsiolkovsky; X.ii of the notes prints the opposite sign)."""
         return rocket_core.ideal_delta_v(self.exhaust, self.ignition, self.burnout) << units.M_PER_S
 
     @cached_property

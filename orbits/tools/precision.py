@@ -141,7 +141,8 @@ def l4_problem(mu: float = EARTH_MOON_MU, periods: float = 100) -> Problem:
 
 
 def problems(long: bool = True) -> list[Problem]:
-    """The problem set of the issue; long=False leaves out the 1e4-period runs."""
+    """The problem set: Kepler orbits at e = 0.0167, 0.5, 0.9, 0.999 over 100 and 10**4 periods, a flyby, a binary
+    and the Earth-Moon L4 point; long=False leaves out the 1e4-period runs."""
     eccentricities = (0.0167, 0.5, 0.9, 0.999)
     chosen = [kepler_problem(e, 100) for e in eccentricities]
     if long:
