@@ -175,22 +175,6 @@ def test_reprs_read_in_natural_units():
         "SynchronousOrbit(r = 42164.17 km, altitude = 35786.07 km, T = 23.93447 h, about Earth)")
 
 
-def test_the_readme_shows_what_the_calculator_prints():
-    """The README's sample table is the command's output, line for line (trailing blanks aside)."""
-    from pathlib import Path
-
-    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text().splitlines()
-    start = next(k for k, line in enumerate(readme) if line.strip().startswith("$ orbits orbit --primary Earth"))
-    command = readme[start].strip().removeprefix("$ orbits ")
-    shown_lines = []
-    for line in readme[start + 1:]:
-        if line and not line.startswith("    "):
-            break
-        shown_lines.append(line[4:].rstrip())
-    printed = [line.rstrip() for line in run(command).splitlines()]
-    assert [x for x in printed if x] == [x for x in shown_lines if x]
-
-
 def test_the_validation_report_fits_80_columns_and_leads_with_the_verdicts():
     report = run("validate circular lagrange_L4_L5")
     lines = report.splitlines()
