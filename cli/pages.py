@@ -223,6 +223,8 @@ EXAMPLES = {
     "perturb kozai": [
         'orbits perturb kozai --m0 Sun --m3 Jupiter --a "1 AU" --a-out "5.2 AU" --inc 65',
         'orbits perturb kozai --m0 Earth --m3 Sun --a "50000 km" --a-out "1 AU" --inc 80',
+        'orbits perturb kozai --m0 "1 solMass" --m3 "1 solMass" --a "1 AU" --a-out "12 AU" --inc 65 --e 0.01 '
+        '--plot kozai.png',
     ],
     "perturb relativity": [
         "orbits perturb relativity Mercury  # 42.98 arcsec per century",

@@ -97,8 +97,8 @@ def kozai_cycles(history: Any, figure: Any = None) -> tuple[Any, np.ndarray]:
     """The eccentricity, the inclination and sqrt(1 - e**2) cos i against time (units of the Kozai timescale tau)
     as each backend integrates a hierarchical triple, with the quadrupole theory's marks: e_max, the inclination
     at e_max that the conserved sqrt(1 - e**2) cos i gives, that conserved value, and the times of e_max (half a
-    period, then every period, from a start at e_min). `history` is a KozaiHistory (orbits.validate.perturbed).
-    Returns (figure, array of the three panels)."""
+    period, then every period, from a start at e_min; none marked from a start between e_min and e_max).
+    `history` is a KozaiHistory (orbits.validate.perturbed). Returns (figure, array of the three panels)."""
     figure = frame.figure(figure, (9.6, 8.6))
     panels = figure.subplots(3, 1, sharex=True)
     times = np.asarray(history.times, dtype=float)
@@ -117,7 +117,8 @@ def kozai_cycles(history: Any, figure: Any = None) -> tuple[Any, np.ndarray]:
     c_ax.axhline(history.start, color=THEORY_COLOR, ls="-.", lw=1.0,
                  label=f"quadrupole: $\\sqrt{{1-e^2}}\\,\\cos i$ conserved at its start, "
                        f"{display.number(history.start, 4)}")
-    peaks = np.arange(0.5, times[-1] / history.period + 0.5) * history.period
+    first = history.first_peak
+    peaks = np.empty(0) if first is None else np.arange(first, times[-1] + history.period, history.period)
     for j, peak in enumerate(peaks[peaks <= times[-1]]):
         for ax in panels:
             ax.axvline(peak, color="0.5", ls=":", lw=1.0,

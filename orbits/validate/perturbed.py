@@ -311,18 +311,20 @@ def _drag_decay(revolutions=30):
 KOZAI_TOLERANCE_IN_EPS = {"e_max": 0.25, "constant": 5.0, "time": 2.5}
 
 
-def kozai_problem(inc_deg=65.0, e0=0.01, a_out=12.0, mass_ratio=1.0, cycles=0.5, outputs_per_tau=40):
-    """(NBodyProblem, e_max, period, tau): a test particle at a = 1 (e0, i0, omega = 90 deg) about a unit mass,
-    perturbed by mass_ratio on a circular orbit of radius a_out in the xy plane, for `cycles` oscillations of e."""
+def kozai_problem(inc_deg=65.0, e0=0.01, a_out=12.0, mass_ratio=1.0, cycles=0.5, outputs_per_tau=40, argp=0.5 * math.pi,
+                  e_out=0.0):
+    """(NBodyProblem, e_max, period, tau): a test particle at a = 1 (e0, i0, omega = argp rad) about a unit mass,
+    perturbed by mass_ratio on an orbit of size a_out and eccentricity e_out in the xy plane (starting at its
+    periapsis on the x axis), for `cycles` oscillations of e."""
     inc = math.radians(inc_deg)
-    tau = float(third_body.timescale(1.0, 1.0, mass_ratio, a_out, 0.0))
-    _, e_max = third_body.eccentricity_range(e0, inc, 0.5 * math.pi)
-    period = float(third_body.oscillation_period(e0, inc, 0.5 * math.pi, tau))
-    r, v = _particle(1.0, e0, inc, 0.0, 0.5 * math.pi, 0.0)
-    speed = math.sqrt((1.0 + mass_ratio) / a_out)
+    tau = float(third_body.timescale(1.0, 1.0, mass_ratio, a_out, e_out))
+    _, e_max = third_body.eccentricity_range(e0, inc, argp)
+    period = float(third_body.oscillation_period(e0, inc, argp, tau))
+    r, v = _particle(1.0, e0, inc, 0.0, argp, 0.0)
+    speed = math.sqrt((1.0 + mass_ratio) * (1.0 + e_out) / (a_out * (1.0 - e_out)))
     span = cycles * period
     times = np.linspace(0.0, span, int(outputs_per_tau * span / tau) + 1)[1:]
-    problem = NBodyProblem([1.0, mass_ratio, 0.0], [np.zeros(3), [a_out, 0.0, 0.0], r],
+    problem = NBodyProblem([1.0, mass_ratio, 0.0], [np.zeros(3), [a_out * (1.0 - e_out), 0.0, 0.0], r],
                            [np.zeros(3), [0.0, speed, 0.0], v], 2, times)
     return problem, float(e_max), period, tau
 
@@ -402,6 +404,9 @@ MAX_DECAY_REVOLUTIONS = 500
 HISTORY_SAMPLES = 64
 #: outputs per orbit of the perturber in the picture's Kozai-Lidov run (9.3 such orbits a Kozai timescale)
 KOZAI_SAMPLES = 20
+#: the longest Kozai-Lidov run a picture integrates (revolutions of the inner orbit): 2 cycles of the scene's triple
+#: are 3,900
+MAX_KOZAI_REVOLUTIONS = 20_000
 
 
 def _picture_backends(backends, forces: bool) -> list[str]:
@@ -556,8 +561,9 @@ class KozaiHistory:
     and `constant` sqrt(1 - e**2) cos i, and that constant averaged over each orbit of the perturber
     (`mean_constant`, at `mean_times`), which removes the outer orbit's short-period terms; the theory's `e_max`,
     `inclination_at_e_max` (deg), the `start` value of sqrt(1 - e**2) cos i (which it conserves), the
-    oscillation's `period` (tau) and `accuracy` eps_sa (the relative size of the terms it drops); `title` names
-    the triple and the span.
+    oscillation's `period` (tau) and `accuracy` eps_sa (the relative size of the terms it drops), the time of the
+    `first_peak` of e (tau; None where the start is not a turning point of e); `title` names the triple and the
+    span.
     """
 
     title: str
@@ -572,17 +578,52 @@ class KozaiHistory:
     start: float
     period: float
     accuracy: float
+    first_peak: float | None = None
 
 
-def kozai_history(inc_deg: float = 65.0, cycles: float = 2.0, backends=None) -> KozaiHistory:
-    """Integrate the kozai_lidov scene's triple (a test particle at a = 1, e0 = 0.01, omega = 90 deg, inclined
-    inc_deg (45 to 80) to an equal mass's circular orbit at 12) for `cycles` (0.1 to 4) oscillations of e with
-    rebound and heyoka, output KOZAI_SAMPLES times an outer orbit: a KozaiHistory."""
-    inc_deg = _checked(models._positive(80.0, "deg", low=45.0), inc_deg, "inc_deg")
+def _first_peak(e0: float, argp: float, e_range: tuple[float, float], period: float) -> float | None:
+    """The time of the first e_max when the start is a turning point of e (sin 2 omega = 0, where de/dt vanishes):
+    half a period from e_min, none from e_max (it is the start); None when the start is between the two, whose
+    phase the picture does not mark."""
+    e_min, e_max = e_range
+    if abs(math.sin(2.0 * argp)) > 1e-12:
+        return None
+    if abs(e0 - e_min) <= 1e-9 * max(e0, 1e-300):
+        return 0.5 * period
+    return period if abs(e0 - e_max) <= 1e-9 * max(e0, 1e-300) else None
+
+
+def kozai_history(inc_deg: float = 65.0, cycles: float = 2.0, backends=None, triple=None) -> KozaiHistory:
+    """Integrate a hierarchical triple for `cycles` (0.1 to 4) oscillations of e with rebound and heyoka, output
+    KOZAI_SAMPLES times an orbit of the perturber: a KozaiHistory. The triple is the kozai_lidov scene's (a test
+    particle at a = 1, e0 = 0.01, omega = 90 deg, inclined inc_deg (45 to 80) to an equal mass's circular orbit
+    at 12) or `triple`, an orbits.perturbations.KozaiLidov, in units of its inner a and G m0. A triple whose run
+    would exceed MAX_KOZAI_REVOLUTIONS inner revolutions, or last less than one orbit of the perturber, is a
+    one-line OrbitDomainError."""
+    from orbits.core.errors import OrbitDomainError
+
     cycles = _checked(models._positive(4.0, "cycles", low=0.1), cycles, "cycles")
-    e0, a_out, mass_ratio = 0.01, 12.0, 1.0
-    problem, e_max, period, tau = kozai_problem(inc_deg, e0=e0, a_out=a_out, mass_ratio=mass_ratio, cycles=cycles)
+    if triple is None:
+        inc_deg = _checked(models._positive(80.0, "deg", low=45.0), inc_deg, "inc_deg")
+        e0, argp, a_out, mass_ratio, e_out = 0.01, 0.5 * math.pi, 12.0, 1.0, 0.0
+        title = (f"a test particle at a = 1, e0 = {e0:g}, i0 = {inc_deg:g} deg, and an equal mass at {a_out:g} "
+                 f"(circular), for {cycles:g} cycles")
+    else:
+        e0, inc_deg, argp = triple.e, math.degrees(triple.inc), triple.argp
+        a_out, mass_ratio, e_out = triple.a_out / triple.a, triple.mass_ratio, triple.e_out
+        title = (f"e0 = {e0:.4g}, i0 = {inc_deg:.4g} deg, omega0 = {math.degrees(argp):.4g} deg; m3 / m0 = "
+                 f"{mass_ratio:.4g} at a_out / a = {a_out:.4g}, e_out = {e_out:.4g}; {cycles:g} cycles")
+    problem, e_max, period, tau = kozai_problem(inc_deg, e0=e0, a_out=a_out, mass_ratio=mass_ratio, cycles=cycles,
+                                                argp=argp, e_out=e_out)
+    revolutions = cycles * period / (2.0 * math.pi)
     outer = 2.0 * math.pi * math.sqrt(a_out**3 / (1.0 + mass_ratio))
+    if not revolutions <= MAX_KOZAI_REVOLUTIONS:
+        raise OrbitDomainError(f"{cycles:g} Kozai-Lidov cycles last {revolutions:.4g} revolutions of the inner "
+                               f"orbit, more than the {MAX_KOZAI_REVOLUTIONS} a picture integrates: a nearer or "
+                               f"heavier perturber, or fewer cycles")
+    if not cycles * period >= outer:
+        raise OrbitDomainError(f"{cycles:g} Kozai-Lidov cycles last less than one orbit of the perturber, where "
+                               f"the doubly averaged theory does not hold: more cycles or a farther perturber")
     times = _grid(math.floor(cycles * period / outer), outer, KOZAI_SAMPLES)
     problem = NBodyProblem(problem.gm, problem.positions, problem.velocities, problem.n_active, times)
     runs = _integrate(_picture_backends(backends, forces=False), problem)
@@ -592,13 +633,14 @@ def kozai_history(inc_deg: float = 65.0, cycles: float = 2.0, backends=None) -> 
         _, e, i, *_ = osculating(run.positions, run.velocities, 2, 1.0)
         eccentricity[name], inclination[name] = e, np.degrees(i)
         constant[name] = np.sqrt((1 - e) * (1 + e)) * np.cos(i)
-    title = (f"a test particle at a = 1, e0 = {e0:g}, i0 = {inc_deg:g} deg, and an equal mass at {a_out:g} "
-             f"(circular), for {cycles:g} cycles")
+    e_range = tuple(float(x) for x in third_body.eccentricity_range(e0, math.radians(inc_deg), argp))
+    peak = _first_peak(e0, argp, e_range, period)
     return KozaiHistory(title, times / tau, eccentricity, inclination, constant,
                         block_averages(times / tau, KOZAI_SAMPLES),
                         {name: block_averages(values, KOZAI_SAMPLES) for name, values in constant.items()}, e_max,
                         math.degrees(math.acos(start / math.sqrt((1 - e_max) * (1 + e_max)))), start,
-                        period / tau, float(third_body.averaging_parameter(1.0, a_out, 0.0, mass_ratio)))
+                        period / tau, float(third_body.averaging_parameter(1.0, a_out, e_out, mass_ratio)),
+                        None if peak is None else peak / tau)
 
 
 SCENES: dict[str, Callable[..., models.ModelScene]] = {

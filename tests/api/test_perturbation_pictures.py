@@ -79,7 +79,7 @@ def kozai_like(cycles=2.0):
     return KozaiHistory("a test particle at a = 1, e0 = 0.01, i0 = 65 deg, and an equal mass at 12 (circular), "
                         f"for {cycles:g} cycles", times, dict.fromkeys(runs, e), dict.fromkeys(runs, inc),
                         dict.fromkeys(runs, constant), mean_times, dict.fromkeys(runs, 0.4226 + 0 * mean_times),
-                        0.8380, 39.23, 0.4226, period, 0.017)
+                        0.8380, 39.23, 0.4226, period, 0.017, 0.5 * period)
 
 
 def test_kozai_cycles_mark_the_quadrupole_prediction(tmp_path):

@@ -42,20 +42,28 @@ def test_verbs(args, shown):
     ("decay", "--altitude", "160 km", "--ballistic", "0.1 m2/kg"),
     ("rates", "--altitude", "400 km", "--plot", "rates.png", "--revolutions", "0"),
     ("rates", "--altitude", "400 km", "--plot", "rates.txt"),
+    ("kozai", "--plot", "kozai.png"),  # 2 cycles of Jupiter's pull on a 1 AU orbit: 472,500 revolutions
+    ("kozai", "--m0", "1 solMass", "--m3", "1 solMass", "--a-out", "12 AU", "--cycles", "5", "--plot", "k.png"),
+    ("kozai", "--m0", "1 solMass", "--m3", "1e-9 solMass", "--a-out", "1.5 AU", "--cycles", "0.1", "--plot",
+     "k.png"),
 ])
-def test_bad_inputs_exit_2_with_one_line(args):
+def test_bad_inputs_exit_2_with_one_line(args, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
     result = run("perturb", *args)
     assert result.exit_code == 2
     assert result.stderr.count("\n") == 1 and result.stderr.startswith("orbits: error: ")
+    assert result.stdout == "" and not list(tmp_path.iterdir())
 
 
 def test_plots_are_written_where_a_picture_exists(tmp_path):
-    """rates and sun-synchronous integrate the orbit (rebound and heyoka) for their picture; decay draws the closed
-    form. Each writes its PNG, and the table is printed as without --plot."""
+    """rates and sun-synchronous integrate the orbit (rebound and heyoka) for their picture, kozai the triple; decay
+    draws the closed form. Each writes its PNG, and the table is printed as without --plot."""
     molniya = ("rates", "--a", "26554 km", "--e", "0.74", "--inc", "63.43", "--argp", "270", "--revolutions", "3")
     for args, name in ((molniya, "rates.png"), (("sun-synchronous", "--altitude", "700 km", "--revolutions", "2"),
                                                  "sso.png"),
-                       (("decay", "--altitude", "280 km", "--ballistic", "0.022 m2/kg"), "decay.png")):
+                       (("decay", "--altitude", "280 km", "--ballistic", "0.022 m2/kg"), "decay.png"),
+                       (("kozai", "--m0", "1 solMass", "--m3", "1 solMass", "--a-out", "12 AU", "--e", "0.01",
+                         "--cycles", "0.6"), "kozai.png")):
         path = tmp_path / name
         result = run("perturb", *args, "--plot", str(path))
         assert result.exit_code == 0, result.output

@@ -104,3 +104,24 @@ def test_kozai_history_reaches_the_quadrupole_e_max_and_keeps_the_averaged_const
         assert abs(averaged[0] / history.start - 1) < 2.0 * eps
     # the critical inclination arccos(sqrt(3/5)) = 39.2315 deg from e0 -> 0; 39.2350 from e0 = 0.01
     assert history.inclination_at_e_max == pytest.approx(39.2315, abs=0.01)
+
+
+def test_kozai_history_of_a_users_triple_follows_its_own_quadrupole_marks():
+    """A triple of the user's (m3 / m0 = 0.5 at a_out / a = 10, e0 = 0.05, omega0 = 90 deg, i0 = 70 deg) integrated
+    for 0.6 cycles: e starts at its e_min, so the first e_max is marked half a period on, and both backends reach
+    the quadrupole e_max within eps_sa (measured 0.36 eps_sa); a start with omega0 = 45 deg (between e_min and
+    e_max) marks none."""
+    import astropy.units as u
+
+    from orbits.perturbations import KozaiLidov
+
+    triple = KozaiLidov.of(1.0 * u.solMass, 0.5 * u.solMass, a=1 * u.AU, a_out=10 * u.AU, inc=70 * u.deg, e=0.05)
+    history = perturbed.kozai_history(cycles=0.6, triple=triple)
+    assert history.first_peak == pytest.approx(0.5 * history.period, rel=1e-12)
+    assert history.e_max == pytest.approx(triple.eccentricity_range[1].value, rel=1e-15)
+    for backend, e in history.eccentricity.items():
+        assert abs(e.max() / history.e_max - 1) < 1.0 * history.accuracy, backend
+    assert "m3 / m0 = 0.5 at a_out / a = 10" in history.title
+    tilted = KozaiLidov.of(1.0 * u.solMass, 0.5 * u.solMass, a=1 * u.AU, a_out=10 * u.AU, inc=70 * u.deg, e=0.05,
+                           argp=45 * u.deg)
+    assert perturbed._first_peak(tilted.e, tilted.argp, (0.01, 0.8), 1.0) is None
