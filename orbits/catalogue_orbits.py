@@ -2,10 +2,13 @@
 
 Each set is a MeanElements (orbits.constants) with its source, epoch, reference frame and accuracy:
 
-- **Dwarf planets and asteroids**: JPL's osculating heliocentric elements at their epoch (ecliptic and equinox of
-  J2000, about the Sun alone), as the Small-Body Database and Horizons publish them. Propagated as a two-body
-  orbit they drift from the true path as the planets pull: for Ceres, measured against JPL's own states, by
-  CERES_DRIFT_KM per year of distance from the epoch (tests/api/test_catalogue_orbits.py).
+- **Dwarf planets and asteroids**: osculating heliocentric elements at their epoch (ecliptic and equinox of J2000,
+  about the Sun alone), as JPL's Horizons and Small-Body Database or the Minor Planet Center publish them.
+  Propagated as a two-body orbit they drift from the true path as the planets pull, by up to DRIFT_KM_PER_YEAR[name]
+  km per year of distance from the epoch: the worst measured from 0.1 to 25 years before and after it (farther
+  away it is not measured) against an integration of the body with the Sun and the eight planets (JPL DE421
+  states at the epoch, rebound IAS15), which carries JPL's Ceres of 2020 to within 35 km of Horizons' Ceres
+  of 2025 (tests/api/test_catalogue_orbits.py).
 - **Moons**: JPL's planetary satellite mean elements, the elements of a precessing ellipse fitted to JPL's
   numerically integrated orbits, referred to each moon's Laplace plane (pole right ascension and declination in
   the ICRF; the node counted from that plane's ascending node on the ICRF equator), or Charon's two-body orbit of
@@ -33,11 +36,15 @@ _JD_1950 = 2433282.5  # 1950 Jan 1.00
 _JD_1997 = 2450464.5  # 1997 Jan 16.00
 _JD_2002 = 2452600.5  # 2002 Nov 22.00
 _JD_2025 = 2460787.0  # 2025 Apr 21.50
+_JD_2014 = 2457000.5  # 2014 Dec 9.00
+_JD_2025_NOV = 2461000.5  # 2025 Nov 21.00
+_JD_2006 = 2453800.5  # 2006 Mar 6.00
 
-#: how far (km per year from the epoch) Ceres's two-body orbit strays from JPL's positions, the worst measured:
-#: 4.9e5 km after 5.3 yr (JPL#48's elements of 2020-01-01), 7.6e6 km after 18.5 yr (JPL#46's of 2006-10-25),
-#: 81 km after 13.5 d (the Minor Planet Center's of 2025-05-05) (tests/api/test_catalogue_orbits.py)
-CERES_DRIFT_KM = 4.2e5
+#: how far (km per year from the epoch) each small body's two-body orbit strays from an integration with the planets,
+#: the worst over 0.1 to 25 years each way at outputs half a month apart (measured 8.57e5 for Ceres, 7.85 years
+#: before its epoch; 5.62e5 Vesta; 7.86e5 Pallas; 2.42e6 Hygiea, whose epoch finds it near Jupiter's longitude;
+#: 5.25e5 Eris). Against JPL's other solutions Ceres strays 4.9e5 km after 5.3 yr and 7.6e6 km after 18.5 yr
+DRIFT_KM_PER_YEAR = {"Ceres": 8.6e5, "Vesta": 5.7e5, "Pallas": 7.9e5, "Hygiea": 2.5e6, "Eris": 5.3e5}
 
 
 def _deg(x: float) -> float:
@@ -54,6 +61,17 @@ def _from_icrf_state(r_au, v_au_per_day, epoch, source, accuracy):
                         source, epoch, None, accuracy)
 
 
+def _from_elements(a_au, e, inc, node, argp, mean_anomaly, epoch, source, accuracy):
+    """Published osculating heliocentric elements (a in au, angles in deg; ecliptic J2000, about JPL_SUN_GM)."""
+    return MeanElements("Sun", a_au * AU, e, _deg(inc), _deg(node), _deg(argp), _deg(mean_anomaly), source, epoch,
+                        None, accuracy)
+
+
+def _small_body_accuracy(name: str, epoch: str, at_epoch: str = "exact") -> str:
+    """How well the two-body orbit of `name` holds: `at_epoch` (what the published digits allow) and its drift."""
+    return _SMALL_BODY_ACCURACY.format(at_epoch=at_epoch, epoch=epoch, drift=DRIFT_KM_PER_YEAR[name])
+
+
 def _laplace(primary, a_km, e, argp, mean_anomaly, inc, node, pole_ra, pole_dec, epoch, source, accuracy):
     """JPL satellite mean elements (a in km, angles in deg) on the Laplace plane whose pole is (pole_ra, pole_dec)
     (deg, ICRF) at `epoch` (JD)."""
@@ -61,8 +79,8 @@ def _laplace(primary, a_km, e, argp, mean_anomaly, inc, node, pole_ra, pole_dec,
                         (_deg(pole_ra), _deg(pole_dec)), accuracy)
 
 
-_SMALL_BODY_ACCURACY = ("exact at 2025-04-21 12:00 TDB; away from it off by up to {drift:,.0f} km per year (the "
-                        "planets' pull, measured for Ceres)")
+_SMALL_BODY_ACCURACY = ("{at_epoch} at {epoch}; away from it off by up to {drift:,.0f} km more per year (the "
+                        "planets' pull, measured against an integration with them over 25 years each way)")
 _MARS_SATS = "JPL satellite mean elements on the Laplace plane, solution MAR080, epoch 1950-01-01 TT"
 _JUPITER_SATS = "JPL satellite mean elements on the Laplace plane, epoch 1997-01-16 TT"
 _MOON_ACCURACY = ("Kepler period from a and the GMs within {error} of the published {period} d (the planet's "
@@ -73,12 +91,23 @@ _ORBITS = {
     "Ceres": _from_icrf_state([2.727955368904768, -7.824235389148068e-1, -9.244287343918847e-1],
                               [3.404362861965615e-3, 8.322702821554456e-3, 3.232500291084344e-3], _JD_2025,
                               "the osculating orbit of JPL Horizons' state of 2025-04-21 12:00 TDB (JPL#48)",
-                              _SMALL_BODY_ACCURACY.format(drift=CERES_DRIFT_KM)),
+                              _small_body_accuracy("Ceres", "2025-04-21 12:00 TDB")),
     # Horizons' heliocentric ICRF state of 4 Vesta at 2025-04-21 12:00 TDB (solution JPL#36), au and au/d
     "Vesta": _from_icrf_state([-1.70317472297052, -1.333843040283118, -3.086709149679688e-1],
                               [7.882762615954012e-3, -8.079478592200335e-3, -4.254433056153772e-3], _JD_2025,
                               "the osculating orbit of JPL Horizons' state of 2025-04-21 12:00 TDB (JPL#36)",
-                              _SMALL_BODY_ACCURACY.format(drift=CERES_DRIFT_KM)),
+                              _small_body_accuracy("Vesta", "2025-04-21 12:00 TDB")),
+    # osculating heliocentric elements (ecliptic J2000): a (au), e, i, node, argument of perihelion, M (deg)
+    "Pallas": _from_elements(2.77160611, 0.23127363, 34.840998, 173.096248, 309.930328, 78.228704, _JD_2014,
+                             "JPL Small-Body Database osculating elements of 2 Pallas at 2014-12-09.0 TDB",
+                             _small_body_accuracy("Pallas", "2014-12-09.0 TDB", "within 10 km (the digits given)")),
+    "Hygiea": _from_elements(3.1475914, 0.1082238, 3.83294, 283.12164, 312.60583, 216.69031, _JD_2025_NOV,
+                             "Minor Planet Center osculating elements of (10) Hygiea at 2025-11-21.0 TT",
+                             _small_body_accuracy("Hygiea", "2025-11-21.0 TT", "within 100 km (the digits given)")),
+    "Eris": _from_elements(67.67, 0.44177, 44.187, 35.8696, 151.4305, 197.63427, _JD_2006,
+                           "JPL Small-Body Database osculating elements of 136199 Eris at 2006-03-06.0 TDB (a "
+                           "to 4 digits)", _small_body_accuracy("Eris", "2006-03-06.0 TDB",
+                                                                 "within 1.1 million km (a rounded to 0.01 au)")),
     "Phobos": _laplace("Mars", 9376.0, 0.0151, 150.057, 91.059, 1.075, 207.784, 317.671, 52.893, _JD_1950,
                        _MARS_SATS, _MOON_ACCURACY.format(error="0.05 %", period=0.3189)),
     "Deimos": _laplace("Mars", 23458.0, 0.0002, 260.729, 325.329, 1.788, 24.525, 316.657, 53.529, _JD_1950,
@@ -106,7 +135,7 @@ _ORBITS = {
 def mean_elements(name: str) -> MeanElements:
     """The published orbit of the catalogue body `name` (any case) about its parent: the planets', Pluto's and the
     Moon's J2000 mean elements (orbits.constants), or the osculating and satellite mean elements above.
-    OrbitDomainError for a body without one (Titan, Triton, Pallas, Hygiea, Eris; the Sun)."""
+    OrbitDomainError for a body without one (Titan, Triton; the Sun)."""
     named = body(name)
     if named.orbit is not None:
         return named.orbit

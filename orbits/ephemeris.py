@@ -76,7 +76,7 @@ _CHAINS = {
 SYSTEM_BARYCENTRES = ("Jupiter", "Saturn", "Uranus", "Neptune", "Pluto")
 #: bodies outside DE421 whose heliocentric state is their published osculating orbit (orbits.catalogue_orbits)
 #: carried to the epoch by two-body propagation about the Sun, the accuracy its MeanElements states
-PROPAGATED = ("Ceres", "Vesta")
+PROPAGATED = ("Ceres", "Vesta", "Pallas", "Hygiea", "Eris")
 _ALIASES = {"ssb": "solar system barycentre", "solar system barycenter": "solar system barycentre",
             "barycentre": "solar system barycentre", "barycenter": "solar system barycentre",
             "emb": "Earth-Moon barycentre", "earth-moon barycenter": "Earth-Moon barycentre"}
@@ -497,7 +497,8 @@ def state(body: str, when: Any, center: str = "Sun", *, source: str = "auto", sc
     Parameters
     ----------
     body, center : a planet, "Sun", "Moon", "Earth-Moon barycentre" or "solar system barycentre" (any case), or
-        Ceres or Vesta (PROPAGATED: their published osculating orbit carried to the epoch, with its accuracy).
+        Ceres, Vesta, Pallas, Hygiea or Eris (PROPAGATED: the published osculating orbit carried to the epoch,
+        with its accuracy).
     when : astropy Time (any scale, any shape) or ISO string(s) in `scale` (default UTC).
     source : "auto" (DE421 when installed, else the built-in), "de421" or "builtin".
 

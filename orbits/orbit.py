@@ -137,9 +137,9 @@ class Orbit(display.Displayed):
         """The catalogue body's orbit about its parent, with the body's mass, in the ecliptic frame of J2000.
 
         Without `epoch`: the published orbit of orbits.catalogue_orbits.mean_elements at its own epoch (Standish's
-        J2000 mean elements for the planets, JPL's osculating elements for Ceres and Vesta, JPL's satellite mean
-        elements for the moons, turned to the ecliptic of J2000), its mean anomaly turned into the true anomaly
-        with Kepler's equation. With `epoch` (astropy
+        J2000 mean elements for the planets, published osculating elements for the asteroids and Eris, JPL's
+        satellite mean elements for the moons, turned to the ecliptic of J2000), its mean anomaly turned into the
+        true anomaly with Kepler's equation. With `epoch` (astropy
         Time or ISO string, see orbits.ephemeris): the osculating two-body orbit through the ephemeris state
         relative to the parent (the Sun for a planet, the Earth for the Moon), mu = G (M_parent + M_body).
         DE421 gives Jupiter-Pluto as system barycentres, and Standish's mean elements are those of the

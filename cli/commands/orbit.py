@@ -56,8 +56,8 @@ def command(
 ) -> None:
     """Every section XXI quantity of an orbit, from elements, a state vector, or a named body; with --at-r the speed,
     U and K at a distance, with --area-between the area swept between two times. A body without an ephemeris
-    (Ceres, Vesta) is carried to --epoch from its published orbit by two-body propagation, and the title says how
-    well."""
+    (Ceres, Vesta, Pallas, Hygiea, Eris) is carried to --epoch from its published orbit by two-body propagation,
+    and the title says how well."""
     from orbits import inputs
     from orbits_cli import render
 

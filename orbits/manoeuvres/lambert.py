@@ -292,7 +292,7 @@ def _between_bodies(departure, target, tof, primary, revolutions, branch, progra
     for name in names:
         if name in ("Sun", "solar system barycentre"):
             raise OrbitDomainError(f"lambert: {name} cannot be an end of a transfer about the Sun; give planets, "
-                                   f"Pluto, the Moon, Ceres or Vesta")
+                                   f"Pluto, the Moon, Ceres, Vesta, Pallas, Hygiea or Eris")
     if names[0] == names[1]:
         raise OrbitDomainError(f"lambert: both ends are {names[0]}")
     start = ephemeris.state(names[0], depart, "Sun", source=source)
