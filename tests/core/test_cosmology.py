@@ -145,8 +145,8 @@ EDS_SUBNORMAL_FAILURES = {1e-309: "27 ulp", 1e-310: "431 ulp", 1e-315: "2.8e7 ul
             marks=pytest.mark.xfail(
                 strict=True,
                 raises=AssertionError,
-                reason=f"a limit orbits.core.friedmann states: below the smallest normal z the EdS lookback and distance "
-                f"lose bits (z = {z:g}: {ulps})",
+                reason=f"a limit orbits.core.friedmann states: below the smallest normal z the EdS lookback and "
+                f"distance lose bits (z = {z:g}: {ulps})",
             ),
         )
         for z, ulps in EDS_SUBNORMAL_FAILURES.items()
