@@ -1,10 +1,12 @@
 """Pictures of perturbed orbits: an oblate body's secular motion (secular_elements: the node and the argument of
-periapsis of integrations over the closed form's secular lines), the Kozai-Lidov cycles (kozai_cycles: e, i and
-the conserved sqrt(1 - e**2) cos i of integrations with the quadrupole theory's marks) and drag decay (drag_decay:
-altitude against time, the closed form's curve, where it stops holding, and integrations over it).
+periapsis of integrations over the closed form's secular lines), a frozen orbit (frozen_eccentricity: the mean
+eccentricity vectors of a frozen and a circular start circling the frozen point), the Kozai-Lidov cycles
+(kozai_cycles: e, i and the conserved sqrt(1 - e**2) cos i of integrations with the quadrupole theory's marks) and
+drag decay (drag_decay: altitude against time, the closed form's curve, where it stops holding, and integrations
+over it).
 
-Each reads what it is given: a record of integrations (orbits.validate.perturbed's SecularHistory, KozaiHistory
-or DecayHistory) or a DragDecay, through their attributes; nothing here integrates.
+Each reads what it is given: a record of integrations (orbits.validate.perturbed's SecularHistory, FrozenHistory,
+KozaiHistory or DecayHistory) or a DragDecay, through their attributes; nothing here integrates.
 """
 
 from typing import Any
@@ -135,6 +137,43 @@ def kozai_cycles(history: Any, figure: Any = None) -> tuple[Any, np.ndarray]:
                     f"{display.number_math(history.accuracy, 2)})")
     _legend_below(figure, panels, columns=2)
     return figure, panels
+
+
+# ---- a frozen orbit ----------------------------------------------------------------------------------------------
+def frozen_eccentricity(history: Any, figure: Any = None) -> tuple[Any, Any]:
+    """The mean eccentricity vector (e cos omega, e sin omega), averaged over each revolution, of a frozen design
+    and of a circular orbit of the same size and inclination as each backend integrates them under J2, J3 and J4:
+    both circle the frozen point (the closed form's e at its omega, a star) at the apsidal rate, the circular start
+    on the closed form's circle through the origin. `history` is a FrozenHistory (orbits.validate.perturbed).
+    Returns (figure, axes)."""
+    figure = frame.figure(figure, (7.6, 8.2))
+    ax = figure.subplots()
+    scale = 1e3  # the vector's components in units of 1e-3
+    centre = history.e * np.array([np.cos(np.radians(history.argp)), np.sin(np.radians(history.argp))]) * scale
+    angle = np.linspace(0.0, 2.0 * np.pi, 361)
+    ax.plot(centre[0] + np.hypot(*centre) * np.cos(angle), centre[1] + np.hypot(*centre) * np.sin(angle),
+            color=THEORY_COLOR, ls="--", lw=1.0, label="closed form: a circular start circles the frozen point")
+    for k, backend in enumerate(history.frozen):
+        color, dashes, marker = _style(backend, k)
+        for start, shade, what in ((history.frozen, 1.0, r"at the frozen e and $\omega$"),
+                                   (history.circular, 0.45, "circular")):
+            xi, eta = start[backend]
+            ax.plot(xi * scale, eta * scale, color=color, ls=dashes, lw=1.2, alpha=shade,
+                    label=f"{backend}, started {what} (osculating)")
+    ax.plot(*centre, marker="*", ms=15, color=THEORY_COLOR, ls="none",
+            label=f"frozen point: e = {display.number(history.e, 4)} at $\\omega$ = "
+                  f"{display.number(history.argp, 4)}$\\degree$")
+    ax.plot(0.0, 0.0, marker="+", ms=10, color="0.5", ls="none")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(r"$e\,\cos\omega$ [$10^{-3}$], revolution means")
+    ax.set_ylabel(r"$e\,\sin\omega$ [$10^{-3}$], revolution means")
+    ax.grid(alpha=0.3)
+    figure.suptitle(f"A frozen orbit under J2, J3 and J4: rebound and heyoka\n{history.title}\n(each mean "
+                    f"eccentricity vector circles the frozen point once in {display.number(history.period, 4)} d; "
+                    f"osculating starts\nstand off the closed form by J2's short-period terms, of order J2 R / a = "
+                    f"{display.number_math(history.short_period, 2)})")
+    _legend_below(figure, np.array([ax]), columns=1)
+    return figure, ax
 
 
 # ---- drag decay ----------------------------------------------------------------------------------------------

@@ -514,6 +514,71 @@ def secular_history(orbit, revolutions: int = 30, backends=None) -> SecularHisto
 
 
 @dataclass(frozen=True, eq=False)
+class FrozenHistory:
+    """The mean eccentricity vector (e cos omega, e sin omega), averaged over each revolution, of two orbits of a
+    frozen design as each backend integrates them under J2, J3 and J4: one started at the frozen e and omega
+    (`frozen`), one started circular (`circular`), each {backend: (xi, eta)}; the design's `e` and `argp` (deg),
+    the apsidal `period` (days) in which the circular start's vector circles the frozen point, `revolutions`
+    integrated, `title`, and `short_period` J2 R / a, the order of J2's short-period terms by which the mean
+    vector of an osculating start stands off the closed form's."""
+
+    title: str
+    frozen: dict
+    circular: dict
+    e: float
+    argp: float
+    period: float
+    revolutions: int
+    short_period: float
+
+
+#: the longest frozen-orbit run a picture integrates (revolutions)
+MAX_FROZEN_REVOLUTIONS = 4000
+
+
+def frozen_revolutions(design) -> int:
+    """Revolutions of one apsidal period 2 pi / (domega/dt) of a frozen design (orbits.perturbations.Design): what
+    the circular start's eccentricity vector takes to circle the frozen point once."""
+    primary, a_m = design.primary, design.semi_major_axis.to_value("m")
+    e, inc = float(design.eccentricity.value), design.inclination.to_value("rad")
+    rate = float(oblateness.periapsis_rate(1.0, e, inc, 1.0, primary.j2, primary.j2_radius / a_m))
+    return math.ceil(2.0 * math.pi / abs(rate) / (2.0 * math.pi)) if rate != 0.0 else MAX_FROZEN_REVOLUTIONS + 1
+
+
+def frozen_history(design, revolutions: int | None = None, backends=None) -> FrozenHistory:
+    """Integrate a frozen design (orbits.perturbations.frozen) and a circular orbit of the same size and inclination
+    under the body's J2, J3 and J4 with rebound and heyoka for `revolutions` (default: one apsidal period; at most
+    MAX_FROZEN_REVOLUTIONS), and average their eccentricity vectors over each revolution: a FrozenHistory."""
+    from orbits.core.errors import OrbitDomainError
+
+    primary, a_m = design.primary, design.semi_major_axis.to_value("m")
+    e, inc = float(design.eccentricity.value), design.inclination.to_value("rad")
+    argp = design.extra["argument_of_periapsis"].to_value("rad")
+    needed = frozen_revolutions(design)
+    revolutions = needed if revolutions is None else _checked(models._count(1, MAX_FROZEN_REVOLUTIONS), revolutions,
+                                                              "revolutions")
+    if revolutions > MAX_FROZEN_REVOLUTIONS:
+        raise OrbitDomainError(f"one apsidal period is {needed} revolutions, more than the "
+                               f"{MAX_FROZEN_REVOLUTIONS} a picture integrates: ask for at most that many revolutions")
+    starts = [_particle(1.0, x, inc, 0.0, argp, -argp) for x in (e, 0.0)]
+    harmonics = ZonalHarmonics(primary.j2, primary.j2_radius / a_m, primary.j4 or 0.0, 0, primary.j3)
+    problem = NBodyProblem([1.0, 0.0, 0.0], [np.zeros(3)] + [x[0] for x in starts],
+                           [np.zeros(3)] + [x[1] for x in starts], 1, _grid(revolutions), forces=(harmonics,))
+    runs = _integrate(_picture_backends(backends, forces=True), problem)
+    vectors = {index: {} for index in (1, 2)}
+    for name, run in runs.items():
+        for index in (1, 2):
+            series = mean_series(run.times, run.positions, run.velocities, index)
+            vectors[index][name] = (series.xi, series.eta)
+    rate = float(oblateness.periapsis_rate(1.0, e, inc, 1.0, primary.j2, primary.j2_radius / a_m))
+    day = math.sqrt(a_m**3 / primary.gm) / DAY
+    title = (f"{design.altitude.to_value('km'):.6g} km at i = {math.degrees(inc):.6g} deg about "
+             f"{primary.name}, {revolutions} revolutions ({revolutions * 2.0 * math.pi * day:.4g} d)")
+    return FrozenHistory(title, vectors[1], vectors[2], e, math.degrees(argp), 2.0 * math.pi / abs(rate) * day,
+                         revolutions, primary.j2 * primary.j2_radius / a_m)
+
+
+@dataclass(frozen=True, eq=False)
 class DecayHistory:
     """A circular orbit decaying by drag as each backend integrates it, until the closed form's end (the band's
     base or the breakdown altitude): what orbits.plot.drag_decay draws over the closed form. `decay` is the

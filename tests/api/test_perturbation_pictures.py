@@ -10,8 +10,8 @@ import pytest
 from picture_checks import legend_labels, problems
 
 from orbits.perturbations import DragDecay
-from orbits.plot import drag_decay, kozai_cycles, save, secular_elements
-from orbits.validate.perturbed import DecayHistory, KozaiHistory, SecularHistory
+from orbits.plot import drag_decay, frozen_eccentricity, kozai_cycles, save, secular_elements
+from orbits.validate.perturbed import DecayHistory, FrozenHistory, KozaiHistory, SecularHistory
 
 matplotlib.use("Agg")
 
@@ -140,3 +140,28 @@ def test_drag_decay_draws_the_integrations_and_their_difference(tmp_path):
     assert len(labels) == len(set(labels)) == 7
     assert problems(fig) == []
     save(fig, tmp_path / "decay.png")
+
+
+def test_frozen_eccentricity_circles_the_frozen_point(tmp_path):
+    """Mean eccentricity vectors on circles about e = 1.043e-3 at omega = 90 deg (radii 0.46e-3 and 1.14e-3, as
+    frozen_history gives them at 700 km): the star on the frozen point, the closed form's circle through the
+    origin, both backends' curves in units of 1e-3, each legend entry once."""
+    e, angle = 1.043e-3, np.linspace(0.0, 2.0 * np.pi, 200)
+
+    def circle(radius):
+        return radius * np.cos(angle), e + radius * np.sin(angle)
+
+    runs = ("rebound", "heyoka")
+    history = FrozenHistory("700 km at i = 98.19 deg about Earth, 1688 revolutions (115.8 d)",
+                            dict.fromkeys(runs, circle(0.46e-3)), dict.fromkeys(runs, circle(1.14e-3)), e, 90.0,
+                            115.8, 1688, 9.8e-4)
+    fig, ax = frozen_eccentricity(history)
+    star = [line for line in ax.get_lines() if line.get_marker() == "*"][0].get_xydata()[0]
+    assert star == pytest.approx([0.0, 1.043], abs=1e-12)
+    theory = [line for line in ax.get_lines() if line.get_linestyle() == "--" and line.get_color() == "0.15"][0]
+    assert np.min(np.hypot(*theory.get_xydata().T)) == pytest.approx(0.0, abs=1e-3)  # through the origin
+    assert len([line for line in ax.get_lines() if len(line.get_xdata()) == 200]) == 4
+    labels = legend_labels(fig)
+    assert len(labels) == len(set(labels)) and any(r"$\omega$" in label for label in labels)
+    assert "115.8 d" in fig.get_suptitle() and problems(fig) == []
+    save(fig, tmp_path / "frozen.png")

@@ -125,3 +125,29 @@ def test_kozai_history_of_a_users_triple_follows_its_own_quadrupole_marks():
     tilted = KozaiLidov.of(1.0 * u.solMass, 0.5 * u.solMass, a=1 * u.AU, a_out=10 * u.AU, inc=70 * u.deg, e=0.05,
                            argp=45 * u.deg)
     assert perturbed._first_peak(tilted.e, tilted.argp, (0.01, 0.8), 1.0) is None
+
+
+def test_frozen_history_circles_the_closed_forms_frozen_point():
+    """300 revolutions of the 700 km, 98.19 deg design and of a circular start under J2, J3 and J4: the circle
+    through each mean eccentricity vector's first, middle and last points is centred on the frozen point within
+    2 % of e (measured 0.69 % from the frozen start, 0.39 % from the circular one: the theory is first order and
+    the arc a sixth of the circle); both backends agree to 1.2e-14; one apsidal period is 1688 revolutions."""
+    import astropy.units as u
+    import numpy as np
+
+    from orbits.perturbations import frozen
+
+    design = frozen("Earth", altitude=700 * u.km, inc=98.19 * u.deg)
+    assert perturbed.frozen_revolutions(design) == 1688
+    history = perturbed.frozen_history(design, 300)
+
+    def centre(xi, eta):
+        (x1, y1), (x2, y2), (x3, y3) = ((xi[k], eta[k]) for k in (0, len(xi) // 2, -1))
+        matrix = np.array([[x2 - x1, y2 - y1], [x3 - x1, y3 - y1]])
+        return np.linalg.solve(matrix, 0.5 * np.array([x2**2 - x1**2 + y2**2 - y1**2, x3**2 - x1**2 + y3**2 - y1**2]))
+
+    for start in (history.frozen, history.circular):
+        for backend, (xi, eta) in start.items():
+            assert np.hypot(*(centre(xi, eta) - [0.0, history.e])) < 0.02 * history.e, backend
+        first, second = start.values()
+        assert np.max(np.abs(np.subtract(first, second))) < 1e-13
