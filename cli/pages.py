@@ -213,6 +213,7 @@ EXAMPLES = {
     "perturb repeat": [
         "orbits perturb repeat --revolutions 127 --days 10 --inc 66.04  # TOPEX/Jason",
         "orbits perturb repeat --revolutions 15 --days 1 --inc 98",
+        "orbits perturb repeat --revolutions 29 --days 2 --inc 98 --plot track.png",
     ],
     "perturb decay": [
         'orbits perturb decay --altitude "280 km" --ballistic "0.022 m2/kg"',

@@ -91,9 +91,9 @@ def rates(
 
 
 def _plot_secular(orbit, revolutions, path):
-    """The orbit integrated under J2 and J4 (orbits.validate.perturbed.secular_history), drawn to `path`."""
+    """The orbit integrated under J2 and J4 (orbits.validate.histories.secular_history), drawn to `path`."""
     from orbits.plot import secular_elements
-    from orbits.validate.perturbed import secular_history
+    from orbits.validate.histories import secular_history
 
     history = secular_history(orbit, revolutions)
     save_plot(lambda: secular_elements(history), path)
@@ -158,7 +158,7 @@ def frozen(
     result = design(primary, a=_length(a, "--a"), altitude=_length(altitude, "--altitude"), inc=_angle(inc, "--inc"),
                     argp=_angle(argp, "--argp"))
     if plot:  # integrated first: a run too long for a picture is refused before anything is printed
-        from orbits.validate.perturbed import frozen_history
+        from orbits.validate.histories import frozen_history
 
         history = frozen_history(result, revolutions)
     emit(f"Frozen orbit about {result.primary.name} (J2 with J3, first order)", result.quantities(inputs.names(only)),
@@ -177,14 +177,26 @@ def repeat(
     e: Annotated[float, typer.Option("--e", help="eccentricity")] = 0.0,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
+    plot: PlotOption = None,
 ) -> None:
-    """The repeat-ground-track orbit: k revolutions in d days, J2 included."""
+    """The repeat-ground-track orbit: k revolutions in d days, J2 included.
+
+    --plot integrates one cycle under the body's J2 and J4 with rebound and heyoka and draws the track over the
+    turning body, with each ascending node against the closed form's place for it (at most 2000 revolutions)."""
     from orbits import inputs
     from orbits.perturbations import repeat_ground_track
 
     result = repeat_ground_track(primary, revolutions=revolutions, days=days, inc=_angle(inc, "--inc"), e=e)
+    if plot:  # integrated first: a run too long for a picture is refused before anything is printed
+        from orbits.validate.histories import ground_track
+
+        track = ground_track(result)
     emit(f"Repeat ground track about {result.primary.name}: {revolutions} revolutions in {days} days",
          result.quantities(inputs.names(only)), fmt)
+    if plot:
+        from orbits.plot import ground_track as draw
+
+        save_plot(lambda: draw(track), plot)
 
 
 def decay(
@@ -245,7 +257,7 @@ def kozai(
                            a_out=_length(a_out, "--a-out"), inc=_angle(inc, "--inc"), e=e, argp=_angle(argp, "--argp"),
                            e_out=e_out)
     if plot:  # integrated first: a run too long for a picture is refused before anything is printed
-        from orbits.validate.perturbed import kozai_history
+        from orbits.validate.histories import kozai_history
 
         history = kozai_history(cycles=cycles, triple=result)
     emit("Kozai-Lidov oscillation (quadrupole, test particle; octupole and averaging parameters give its error)",

@@ -18,7 +18,8 @@ labels carry units. `save(fig, path)` writes PNG, SVG or PDF atomically. Every p
 - validation: the cross-checks (validation_residuals, validation_tracks, validation_overview, work_precision);
 - manoeuvres: launch windows (porkchop);
 - mechanics: collisions, projectiles, pendulums, damped motion, the vertical circle, rolling;
-- perturbations: perturbed orbits (secular_elements, frozen_eccentricity, kozai_cycles, drag_decay).
+- perturbations: perturbed orbits (secular_elements, frozen_eccentricity, ground_track, kozai_cycles,
+  drag_decay).
 
 A picture takes what it draws (arrays, numbers, or the object to draw, read through its properties) and never
 imports the classes that draw themselves with it; a new picture goes into the module of its subject. Every picture
@@ -41,7 +42,7 @@ from orbits.plot.mechanics import (
     vertical_circle_forces,
 )
 from orbits.plot.periodic import periodic_family, periodic_orbit, stability_diagram
-from orbits.plot.perturbations import drag_decay, frozen_eccentricity, kozai_cycles, secular_elements
+from orbits.plot.perturbations import drag_decay, frozen_eccentricity, ground_track, kozai_cycles, secular_elements
 from orbits.plot.planets import SOLAR_SYSTEM, solar_system, solar_system_part, solar_system_points
 from orbits.plot.threebody import coorbital_plane, lagrange_departure, lagrange_plane, ring_breakup, ring_snapshots
 from orbits.plot.validation import (
@@ -64,5 +65,5 @@ __all__ = [
     "porkchop",
     "collision_velocities", "projectile_paths", "pendulum_periods", "damped_motion", "vertical_circle_forces",
     "rolling_race",
-    "secular_elements", "frozen_eccentricity", "kozai_cycles", "drag_decay",
+    "secular_elements", "frozen_eccentricity", "ground_track", "kozai_cycles", "drag_decay",
 ]

@@ -5,7 +5,7 @@ eccentricity vectors of a frozen and a circular start circling the frozen point)
 drag decay (drag_decay: altitude against time, the closed form's curve, where it stops holding, and integrations
 over it).
 
-Each reads what it is given: a record of integrations (orbits.validate.perturbed's SecularHistory, FrozenHistory,
+Each reads what it is given: a record of integrations (orbits.validate.histories' SecularHistory, FrozenHistory,
 KozaiHistory or DecayHistory) or a DragDecay, through their attributes; nothing here integrates.
 """
 
@@ -47,7 +47,7 @@ def secular_elements(history: Any, figure: Any = None) -> tuple[Any, np.ndarray]
     """The node Omega (and the argument of periapsis omega, where the history has it) against time, as each backend
     integrates the orbit (thin: osculating; markers: the average over each revolution), over the straight line of
     the first-order closed form; beside each, the revolution averages less that line (arcsec), which show the
-    theory's own error, O(J2 (R/p)**2) of the rate. `history` is a SecularHistory (orbits.validate.perturbed).
+    theory's own error, O(J2 (R/p)**2) of the rate. `history` is a SecularHistory (orbits.validate.histories).
     Returns (figure, (rows, 2) array of panels)."""
     names = list(history.lines)
     figure = frame.figure(figure, (11.0, 2.9 * len(names) + 1.9))
@@ -100,7 +100,7 @@ def kozai_cycles(history: Any, figure: Any = None) -> tuple[Any, np.ndarray]:
     as each backend integrates a hierarchical triple, with the quadrupole theory's marks: e_max, the inclination
     at e_max that the conserved sqrt(1 - e**2) cos i gives, that conserved value, and the times of e_max (half a
     period, then every period, from a start at e_min; none marked from a start between e_min and e_max).
-    `history` is a KozaiHistory (orbits.validate.perturbed). Returns (figure, array of the three panels)."""
+    `history` is a KozaiHistory (orbits.validate.histories). Returns (figure, array of the three panels)."""
     figure = frame.figure(figure, (9.6, 8.6))
     panels = figure.subplots(3, 1, sharex=True)
     times = np.asarray(history.times, dtype=float)
@@ -144,7 +144,7 @@ def frozen_eccentricity(history: Any, figure: Any = None) -> tuple[Any, Any]:
     """The mean eccentricity vector (e cos omega, e sin omega), averaged over each revolution, of a frozen design
     and of a circular orbit of the same size and inclination as each backend integrates them under J2, J3 and J4:
     both circle the frozen point (the closed form's e at its omega, a star) at the apsidal rate, the circular start
-    on the closed form's circle through the origin. `history` is a FrozenHistory (orbits.validate.perturbed).
+    on the closed form's circle through the origin. `history` is a FrozenHistory (orbits.validate.histories).
     Returns (figure, axes)."""
     figure = frame.figure(figure, (7.6, 8.2))
     ax = figure.subplots()
@@ -176,12 +176,67 @@ def frozen_eccentricity(history: Any, figure: Any = None) -> tuple[Any, Any]:
     return figure, ax
 
 
+# ---- a repeat ground track -----------------------------------------------------------------------------------------
+def _km(value: float) -> str:
+    return display.quantity_math(value * u.km, digits=3, unit=u.km)
+
+
+def _wrapped(longitude: np.ndarray) -> np.ndarray:
+    """Longitudes (deg) in [-180, 180)."""
+    return (np.asarray(longitude) + 180.0) % 360.0 - 180.0
+
+
+def _broken_at_the_date_line(longitude: np.ndarray, latitude: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The track with NaN where the longitude wraps from +180 to -180 deg (or back), so no line crosses the map."""
+    jumps = np.flatnonzero(np.abs(np.diff(longitude)) > 180.0) + 1
+    return np.insert(longitude, jumps, np.nan), np.insert(latitude, jumps, np.nan)
+
+
+def ground_track(track: Any, figure: Any = None) -> tuple[Any, np.ndarray]:
+    """A repeat-ground-track design's track over one cycle as each backend integrates it (longitude and latitude
+    over the turning body, spherical), with its ascending nodes and, beside it, each node's longitude less where
+    the closed form puts it (the cycle's nodes evenly spaced, each day's one revolution's shift apart), in km at
+    the equator: the track closes where that line ends at 0. `track` is a GroundTrack (orbits.validate.histories).
+    Returns (figure, array of the two panels)."""
+    figure = frame.figure(figure, (12.0, 6.4))
+    panels = figure.subplots(1, 2, width_ratios=(2.2, 1))
+    world, closing = panels
+    count = np.arange(track.revolutions + 1)
+    places = -360.0 * track.days / track.revolutions * count  # each node this far west of the one before
+    for k, backend in enumerate(track.longitude):
+        color, dashes, marker = _style(backend, k)
+        world.plot(*_broken_at_the_date_line(track.longitude[backend], track.latitude[backend]), color=color,
+                   ls=dashes, lw=0.6, label=f"{backend}: track")
+        nodes = track.nodes[backend][: track.revolutions + 1]
+        world.plot(_wrapped(nodes), np.zeros_like(nodes), marker=marker, ls="none", color=color, ms=5,
+                   label=f"{backend}: ascending nodes")
+        closing.plot(count, _wrapped(nodes - places) * track.equator_km_per_deg, color=color, ls=dashes,
+                     marker=marker, ms=4, label=f"{backend}: the cycle closes {_km(track.closure_km[backend])} off")
+    world.set_xlim(-180.0, 180.0)
+    world.set_ylim(-90.0, 90.0)
+    world.set_xticks(np.arange(-180, 181, 60))
+    world.set_yticks(np.arange(-90, 91, 30))
+    world.set_xlabel(r"longitude east of the first node [$\degree$]")
+    world.set_ylabel(r"latitude [$\degree$]")
+    world.grid(alpha=0.3)
+    closing.axhline(0.0, color=THEORY_COLOR, ls="--", lw=1.0, label="closed form: every node on its place")
+    closing.set_xlabel("revolution")
+    closing.set_ylabel("node less the closed form's place [km at the equator]")
+    closing.grid(alpha=0.3)
+    sweep = 360.0 * track.days * track.equator_km_per_deg  # the equator the nodes sweep over a cycle (km)
+    figure.suptitle(f"A repeat ground track under J2 and J4: rebound and heyoka\n{track.title}\n(the first-order "
+                    f"rates are good to J2 (R/p)$^2$ = {display.number_math(track.accuracy, 2)}: over the cycle's "
+                    f"{_km(sweep)} of equator, of order {_km(track.accuracy * sweep)})")
+    _legend_below(figure, panels)
+    return figure, panels
+
+
 # ---- drag decay ----------------------------------------------------------------------------------------------
 def drag_decay(decay: Any, history: Any = None, figure: Any = None) -> tuple[Any, np.ndarray]:
     """Altitude against time of a circular orbit decaying by drag: the closed form's curve (a DragDecay, read
     through its properties) to the end of its lifetime and the point where it stops holding (the band's base, or
     the breakdown altitude where the decay in one revolution reaches the scale height H). With a DecayHistory
-    (orbits.validate.perturbed), each backend's integrated altitude over it, and below, the integration less the
+    (orbits.validate.histories), each backend's integrated altitude over it, and below, the integration less the
     closed form (m). Returns (figure, array of the panels)."""
     table = decay.quantities()
     lifetime = decay.lifetime

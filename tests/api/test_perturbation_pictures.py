@@ -10,8 +10,8 @@ import pytest
 from picture_checks import legend_labels, problems
 
 from orbits.perturbations import DragDecay
-from orbits.plot import drag_decay, frozen_eccentricity, kozai_cycles, save, secular_elements
-from orbits.validate.perturbed import DecayHistory, FrozenHistory, KozaiHistory, SecularHistory
+from orbits.plot import drag_decay, frozen_eccentricity, ground_track, kozai_cycles, save, secular_elements
+from orbits.validate.histories import DecayHistory, FrozenHistory, GroundTrack, KozaiHistory, SecularHistory
 
 matplotlib.use("Agg")
 
@@ -165,3 +165,28 @@ def test_frozen_eccentricity_circles_the_frozen_point(tmp_path):
     assert len(labels) == len(set(labels)) and any(r"$\omega$" in label for label in labels)
     assert "115.8 d" in fig.get_suptitle() and problems(fig) == []
     save(fig, tmp_path / "frozen.png")
+
+
+def test_ground_track_breaks_at_the_date_line_and_measures_each_node(tmp_path):
+    """Three revolutions in a day (nodes 120 deg apart), the second backend's nodes drifting 1 km a revolution: no
+    track segment crosses the map, the nodes sit on the equator, the right panel shows 0, 1, 2, 3 km over the
+    closed form's zero line, and the legend names each cycle's closure once."""
+    revolutions, per, km_per_deg = 3, 200, 111.32
+    phase = np.linspace(0.0, 2.0 * np.pi * revolutions, revolutions * per + 1)
+    longitude = (np.degrees(phase) - 120.0 * phase / (2.0 * np.pi) + 180.0) % 360.0 - 180.0
+    latitude = np.degrees(np.arcsin(np.sin(np.radians(98.0)) * np.sin(phase)))
+    nodes = -480.0 * np.arange(revolutions + 1)
+    drifting = nodes + np.arange(revolutions + 1) / km_per_deg
+    track = GroundTrack("3 revolutions in 1 day", phase / (2 * np.pi), {"rebound": longitude, "heyoka": longitude},
+                        {"rebound": latitude, "heyoka": latitude}, {"rebound": nodes, "heyoka": drifting},
+                        {"rebound": 0.0, "heyoka": 3.0}, revolutions, 1, 8.7e-4, km_per_deg)
+    fig, (world, closing) = ground_track(track)
+    for line in (line for line in world.get_lines() if line.get_linestyle() != "None"):  # the tracks, not the nodes
+        steps = np.abs(np.diff(line.get_xdata()))
+        assert np.all(steps[np.isfinite(steps)] <= 180.0)
+    heyoka = [line for line in closing.get_lines() if line.get_label().startswith("heyoka")][0]
+    assert heyoka.get_ydata() == pytest.approx([0.0, 1.0, 2.0, 3.0], abs=1e-9)
+    labels = legend_labels(fig)
+    assert len(labels) == len(set(labels)) and any("3 km off" in label for label in labels)
+    assert problems(fig) == []
+    save(fig, tmp_path / "track.png")

@@ -43,6 +43,7 @@ def test_verbs(args, shown):
     ("rates", "--altitude", "400 km", "--plot", "rates.png", "--revolutions", "0"),
     ("rates", "--altitude", "400 km", "--plot", "rates.txt"),
     ("frozen", "--altitude", "700 km", "--inc", "98.19", "--plot", "f.png", "--revolutions", "4001"),
+    ("repeat", "--revolutions", "2001", "--days", "137", "--inc", "98", "--plot", "t.png"),
     ("kozai", "--plot", "kozai.png"),  # 2 cycles of Jupiter's pull on a 1 AU orbit: 472,500 revolutions
     ("kozai", "--m0", "1 solMass", "--m3", "1 solMass", "--a-out", "12 AU", "--cycles", "5", "--plot", "k.png"),
     ("kozai", "--m0", "1 solMass", "--m3", "1e-9 solMass", "--a-out", "1.5 AU", "--cycles", "0.1", "--plot",
@@ -65,7 +66,8 @@ def test_plots_are_written_where_a_picture_exists(tmp_path):
                        (("decay", "--altitude", "280 km", "--ballistic", "0.022 m2/kg"), "decay.png"),
                        (("kozai", "--m0", "1 solMass", "--m3", "1 solMass", "--a-out", "12 AU", "--e", "0.01",
                          "--cycles", "0.6"), "kozai.png"),
-                       (("frozen", "--altitude", "700 km", "--inc", "98.19", "--revolutions", "20"), "frozen.png")):
+                       (("frozen", "--altitude", "700 km", "--inc", "98.19", "--revolutions", "20"), "frozen.png"),
+                       (("repeat", "--revolutions", "15", "--days", "1", "--inc", "98"), "track.png")):
         path = tmp_path / name
         result = run("perturb", *args, "--plot", str(path))
         assert result.exit_code == 0, result.output
