@@ -181,6 +181,11 @@ def _km(value: float) -> str:
     return display.quantity_math(value * u.km, digits=3, unit=u.km)
 
 
+def _closure(km: float) -> str:
+    """E.g. "0.545 km west of its start" for a last node 0.545 km west of the first."""
+    return f"{_km(abs(km))} {'east' if km > 0 else 'west'} of its start" if km else "on its start"
+
+
 def _wrapped(longitude: np.ndarray) -> np.ndarray:
     """Longitudes (deg) in [-180, 180)."""
     return (np.asarray(longitude) + 180.0) % 360.0 - 180.0
@@ -211,7 +216,7 @@ def ground_track(track: Any, figure: Any = None) -> tuple[Any, np.ndarray]:
         world.plot(_wrapped(nodes), np.zeros_like(nodes), marker=marker, ls="none", color=color, ms=5,
                    label=f"{backend}: ascending nodes")
         closing.plot(count, _wrapped(nodes - places) * track.equator_km_per_deg, color=color, ls=dashes,
-                     marker=marker, ms=4, label=f"{backend}: the cycle closes {_km(track.closure_km[backend])} off")
+                     marker=marker, ms=4, label=f"{backend}: the cycle closes {_closure(track.closure_km[backend])}")
     world.set_xlim(-180.0, 180.0)
     world.set_ylim(-90.0, 90.0)
     world.set_xticks(np.arange(-180, 181, 60))
@@ -223,10 +228,9 @@ def ground_track(track: Any, figure: Any = None) -> tuple[Any, np.ndarray]:
     closing.set_xlabel("revolution")
     closing.set_ylabel("node less the closed form's place [km at the equator]")
     closing.grid(alpha=0.3)
-    sweep = 360.0 * track.days * track.equator_km_per_deg  # the equator the nodes sweep over a cycle (km)
-    figure.suptitle(f"A repeat ground track under J2 and J4: rebound and heyoka\n{track.title}\n(the first-order "
-                    f"rates are good to J2 (R/p)$^2$ = {display.number_math(track.accuracy, 2)}: over the cycle's "
-                    f"{_km(sweep)} of equator, of order {_km(track.accuracy * sweep)})")
+    figure.suptitle(f"A repeat ground track under J2 and J4: rebound and heyoka\n{track.title}\n(started on the "
+                    f"mean orbit; the first-order rates leave terms of order J2 (R/p)$^2$ = "
+                    f"{display.number_math(track.accuracy, 2)} of themselves)")
     _legend_below(figure, panels)
     return figure, panels
 

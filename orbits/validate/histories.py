@@ -249,8 +249,9 @@ def _ascending_nodes(times: np.ndarray, z: np.ndarray, longitude_unwrapped: np.n
 
 def ground_track(design, backends=None) -> GroundTrack:
     """Integrate a repeat-ground-track design (orbits.perturbations.repeat_ground_track), started at its ascending
-    node, under the body's J2 and J4 with rebound and heyoka for its cycle (k nodal periods, at most
-    MAX_TRACK_REVOLUTIONS) and follow it over the turning body: a GroundTrack."""
+    node on its mean orbit (oblateness.osculating_semi_major_axis), under the body's J2 and J4 with rebound and
+    heyoka for its cycle (k nodal periods, at most MAX_TRACK_REVOLUTIONS), and follow it over the turning body: a
+    GroundTrack."""
     from orbits.core.errors import OrbitDomainError
 
     primary, a_m = design.primary, design.semi_major_axis.to_value("m")
@@ -261,7 +262,9 @@ def ground_track(design, backends=None) -> GroundTrack:
                                f"picture integrates")
     time_unit = math.sqrt(a_m**3 / primary.gm)
     nodal = design.secular.nodal_period.to_value("s") / time_unit
-    start_r, start_v = particle(1.0, e, inc, 0.0, 0.0, 0.0)
+    # started on the mean orbit: its osculating a at the node carries Brouwer's short-period term
+    start = float(oblateness.osculating_semi_major_axis(1.0, e, inc, 0.0, 0.0, primary.j2, primary.j2_radius / a_m))
+    start_r, start_v = particle(start, e, inc, 0.0, 0.0, 0.0)
     harmonics = ZonalHarmonics(primary.j2, primary.j2_radius / a_m, primary.j4 or 0.0)
     times = np.arange(1, revolutions * TRACK_SAMPLES + TRACK_SAMPLES // 4 + 1) * nodal / TRACK_SAMPLES
     problem = NBodyProblem([1.0, 0.0], [np.zeros(3), start_r], [np.zeros(3), start_v], 1, times,

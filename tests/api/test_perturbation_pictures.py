@@ -187,6 +187,6 @@ def test_ground_track_breaks_at_the_date_line_and_measures_each_node(tmp_path):
     heyoka = [line for line in closing.get_lines() if line.get_label().startswith("heyoka")][0]
     assert heyoka.get_ydata() == pytest.approx([0.0, 1.0, 2.0, 3.0], abs=1e-9)
     labels = legend_labels(fig)
-    assert len(labels) == len(set(labels)) and any("3 km off" in label for label in labels)
+    assert len(labels) == len(set(labels)) and any("3 km east of its start" in label for label in labels)
     assert problems(fig) == []
     save(fig, tmp_path / "track.png")

@@ -153,12 +153,12 @@ def test_frozen_history_circles_the_closed_forms_frozen_point():
         assert np.max(np.abs(np.subtract(first, second))) < 1e-13
 
 
-def test_ground_track_closes_within_the_first_order_theorys_error():
-    """29 revolutions in 2 days at 98 deg (a = 7097.6 km) integrated under J2 and J4: each ascending node lands
-    24.83 deg west of the one before, as the closed form puts it, to 5.3 km a revolution, and the cycle closes
-    154.9 km off (both backends alike to 1e-8 km): 2.2 times k = J2 (R/p)**2 of the 80,150 km of equator the nodes
-    sweep, the first-order theory's own error (its osculating start stands off the mean orbit by O(k) in a). A
-    sign or factor error in J2's node rate moves the nodes by thousands of km."""
+def test_ground_track_closes_within_a_kilometre():
+    """29 revolutions in 2 days at 98 deg (a = 7097.6 km) integrated under J2 and J4 from the mean orbit's
+    osculating a: each ascending node lands 24.83 deg west of the one before, as the closed form puts it, and the
+    cycle closes 0.54 km off (both backends alike to 1e-8 km; 154.9 km from the mean a taken as osculating, 2.2
+    times k = J2 (R/p)**2 of the 80,150 km of equator the nodes sweep). A sign or factor error in J2's node rate
+    moves the nodes by thousands of km."""
     import astropy.units as u
     import numpy as np
 
@@ -166,10 +166,38 @@ def test_ground_track_closes_within_the_first_order_theorys_error():
 
     design = repeat_ground_track("Earth", revolutions=29, days=2, inc=98 * u.deg)
     track = histories.ground_track(design)
-    sweep_km = 360.0 * 2 * track.equator_km_per_deg
     closures = list(track.closure_km.values())
     assert abs(closures[0] - closures[1]) < 1e-6
-    assert 0.0 < abs(closures[0]) < 3.0 * track.accuracy * sweep_km
+    assert abs(closures[0]) < 2.0  # 0.54 km measured; 155 km from the mean a taken as osculating
     for nodes in track.nodes.values():
         spacing = (np.diff(nodes[:30]) + 180.0) % 360.0 - 180.0
-        assert np.allclose(spacing, -360.0 * 2 / 29, atol=3.0 * track.accuracy * 360.0 * 2 / 29)
+        assert np.allclose(spacing, -360.0 * 2 / 29, atol=1e-3)  # measured 2.0e-4 deg
+
+
+@pytest.mark.parametrize("e, inc_deg, argp, nu", [(0.0, 98.0, 0.0, 0.0), (0.05, 40.0, 1.0, 2.0), (0.3, 63.4, 4.0, 0.5)])
+def test_brouwers_osculating_a_keeps_the_mean_a_an_integration_shows(e, inc_deg, argp, nu):
+    """An orbit started at oblateness.osculating_semi_major_axis of mean a = 1 (J2 alone, R / a = 0.911), its
+    osculating a averaged over each of 4 revolutions (256 outputs each) by rebound and heyoka: within 50 k**2 of 1
+    (measured 1.7, 4.2 and 17 k**2, the second order), where the mean a taken as osculating is off by 0.13 %, 0.048 %
+    and 0.29 %; the term averages to zero over the mean anomaly (to 1e-15)."""
+    import numpy as np
+
+    from orbits.core import anomalies, oblateness
+    from orbits.validate.backends import integrate
+
+    j2, radius, inc = 1.08262668e-3, 6378.1363 / 7000.0, math.radians(inc_deg)
+    mean_anomalies = np.linspace(0.0, 2.0 * math.pi, 4097)[:-1]
+    over_m = oblateness.osculating_semi_major_axis(1.0, e, inc, argp, anomalies.true_from_mean(mean_anomalies, e),
+                                                   j2, radius)
+    assert abs(np.mean(over_m) - 1.0) < 1e-15
+    start = float(oblateness.osculating_semi_major_axis(1.0, e, inc, argp, nu, j2, radius))
+    r, v = perturbed.particle(start, e, inc, 0.3, argp, nu)
+    problem = NBodyProblem([1.0, 0.0], [np.zeros(3), r], [np.zeros(3), v], 1, perturbed.grid(4, samples=256),
+                           forces=(ZonalHarmonics(j2, radius),))
+    k = float(oblateness.oblateness_factor((1 - e) * (1 + e), j2, radius))
+    for backend in ("rebound", "heyoka"):
+        if not available(backend):
+            continue
+        run = integrate(backend, problem)
+        means = perturbed.mean_series(run.times, run.positions, run.velocities, samples=256).a
+        assert np.max(np.abs(means - 1.0)) < 50.0 * k * k, (backend, np.max(np.abs(means - 1.0)) / k**2)
