@@ -261,7 +261,10 @@ def frozen(primary: Body | str = "Earth", *, a: u.Quantity | None = None, altitu
 
 def repeat_ground_track(primary: Body | str = "Earth", *, revolutions: int, days: int, inc: u.Quantity,
                         e: float = 0.0) -> Design:
-    """The orbit making `revolutions` nodal periods in `days` turns of the body under its node, J2 included."""
+    """The orbit making `revolutions` nodal periods in `days` turns of the body under its node, J2 included. Its
+    semi_major_axis is the mean a the rates are solved for; osculating_semi_major_axis_at_node is the a to start
+    from at the ascending node with periapsis there (Brouwer's short-period term), without which an integrated
+    orbit misses the repeat by O(J2 (R/p)**2) of the equator it sweeps."""
     named = oblate_body(primary)
     for value, name in ((revolutions, "revolutions"), (days, "days")):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
@@ -272,8 +275,10 @@ def repeat_ground_track(primary: Body | str = "Earth", *, revolutions: int, days
     size = oblateness.repeat_ground_track_semi_major_axis(revolutions, days, ecc, angle, named.gm, named.j2,
                                                           named.j2_radius, spin)
     _eccentricity(e, named, size)
+    osculating = oblateness.osculating_semi_major_axis(size, ecc, angle, 0.0, 0.0, named.j2, named.j2_radius)
     return Design("RepeatGroundTrack", named, size << units.M, ecc << u.one, angle << units.RAD,
-                  {"revolutions": revolutions << u.one, "days": days << u.one})
+                  {"revolutions": revolutions << u.one, "days": days << u.one,
+                   "osculating_semi_major_axis_at_node": osculating << units.M})
 
 
 # ---- drag -----------------------------------------------------------------------------------------------------

@@ -27,7 +27,8 @@ RevolutionsOption = Annotated[int, typer.Option("--revolutions", min=1, max=2000
 #: the units tables use for these quantities unless --units si or --unit NAME=UNIT says otherwise
 NATURAL = {
     "node_rate": "deg / d", "periapsis_rate": "deg / d", "mean_anomaly_rate": "deg / d", "node_rate_target": "deg / d",
-    "nodal_period": "min", "semi_major_axis": "km", "altitude": "km", "base_altitude": "km", "scale_height": "km",
+    "nodal_period": "min", "semi_major_axis": "km", "osculating_semi_major_axis_at_node": "km", "altitude": "km",
+    "base_altitude": "km", "scale_height": "km",
     "decay_rate": "km / d", "decay_per_revolution": "km", "lifetime": "d", "breakdown_altitude": "km",
     "timescale": "yr", "period": "yr", "advance_per_orbit": "arcsec", "advance_per_century": "arcsec",
     "density_at_base": "kg / m3",

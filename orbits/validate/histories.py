@@ -263,7 +263,7 @@ def ground_track(design, backends=None) -> GroundTrack:
     time_unit = math.sqrt(a_m**3 / primary.gm)
     nodal = design.secular.nodal_period.to_value("s") / time_unit
     # started on the mean orbit: its osculating a at the node carries Brouwer's short-period term
-    start = float(oblateness.osculating_semi_major_axis(1.0, e, inc, 0.0, 0.0, primary.j2, primary.j2_radius / a_m))
+    start = design.extra["osculating_semi_major_axis_at_node"].to_value("m") / a_m
     start_r, start_v = particle(start, e, inc, 0.0, 0.0, 0.0)
     harmonics = ZonalHarmonics(primary.j2, primary.j2_radius / a_m, primary.j4 or 0.0)
     times = np.arange(1, revolutions * TRACK_SAMPLES + TRACK_SAMPLES // 4 + 1) * nodal / TRACK_SAMPLES
