@@ -236,7 +236,9 @@ _CATALOGUE = [
          "Prospector field LP150Q, Konopliv et al. (2001), Icarus 150; PDS LP-L-RSS-5-GRAVITY-V1 file JGL150Q1 "
          "(normalised C20 = -9.09010949481e-5 at the 1738 km reference radius; J2 = -sqrt(5) C20)",
          MeanElements("Earth", 3.84399e8, 0.0549, _deg(5.145), 0.0, 0.0, 0.0,
-                      "NASA Moon fact sheet mean orbit (node and periapsis precess; set to 0)"),
+                      "NASA Moon fact sheet mean orbit (node and periapsis precess; set to 0)",
+                     accuracy="Kepler period from a and the two GMs 0.14 % short of the sidereal month, 27.3217 "
+                              "d (the Sun's pull lengthens it)"),
          # J2 = -sqrt(5) C20 from the normalised C20 = -.9090109494810000E-04 of JGL150Q1, at its 1738 km
          "Earth", "moon", math.sqrt(5.0) * 9.09010949481e-5, 1_738e3),
     _moon("Phobos", "Mars", 7.087546066894452e-4, 11.08, 0.31891023),
@@ -279,6 +281,20 @@ def body_with_gm(gm: Any, tolerance: float = 0.0) -> Body | None:
     misses = {name: abs(value / known.gm - 1.0) for name, known in BODIES.items()}
     name = min(misses, key=misses.get)
     return BODIES[name] if misses[name] <= tolerance else None
+
+
+def pair_with_gm(gm: Any) -> tuple[Body, Body] | None:
+    """(parent, body) of the catalogue pair whose two GMs sum to `gm` exactly (every element the same): the mu of a
+    moon's two-body orbit about its planet, G (M_parent + M_body); else None."""
+    import numpy as np
+
+    values = np.unique(np.asarray(gm, dtype=float))
+    if values.size != 1:
+        return None
+    for known in BODIES.values():
+        if known.parent is not None and BODIES[known.parent].gm + known.gm == values[0]:
+            return BODIES[known.parent], known
+    return None
 
 
 def _by_lower(lower: str) -> str:

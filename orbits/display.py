@@ -402,12 +402,16 @@ def summary(q: u.Quantity, name: str = "", digits: int = 7, unit: u.UnitBase | N
 
 
 def body_name(gm: Any) -> str:
-    """The catalogue body whose GM this is exactly (every element the same), else "GM = ... km3 / s2"."""
-    from orbits.constants import body_with_gm
+    """The catalogue body whose GM this is exactly (every element the same), "Jupiter + Io" for the two GMs of a
+    catalogue pair, else "GM = ... km3 / s2"."""
+    from orbits.constants import body_with_gm, pair_with_gm
 
     known = body_with_gm(gm)
     if known is not None:
         return known.name
+    pair = pair_with_gm(gm)
+    if pair is not None:
+        return f"{pair[0].name} + {pair[1].name}"
     return "GM = " + summary(u.Quantity(np.unique(np.asarray(gm, dtype=float)), u.m**3 / u.s**2))
 
 

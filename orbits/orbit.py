@@ -152,7 +152,7 @@ class Orbit(display.Displayed):
         el = catalogue_orbits.mean_elements(target.name)
         mass = target.barycentre_gm / G << units.KG
         nu = anomalies.true_from_mean(el.mean_anomaly, el.e)
-        if el.pole is None:
+        if el.pole is None and el.primary == "Sun":
             return cls.from_elements(el.primary, a=el.a << units.M, e=el.e, inc=el.inc << units.RAD,
                                      raan=el.raan << units.RAD, argp=el.argp << units.RAD, nu=nu << units.RAD,
                                      mass=mass)
