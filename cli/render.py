@@ -186,9 +186,10 @@ def element_tables(index: str, quantities: "Mapping[str, Quantity]") -> list[Tab
     return tables
 
 
-def grouped_tables(quantities: "Mapping[str, Quantity]", groups: Sequence[tuple[str, str]]) -> list[Table]:
-    """One table per group of quantities: `groups` lists (name prefix, heading); the prefix is dropped from the
-    names; quantities matching no prefix come first."""
+def grouped_tables(quantities: "Mapping[str, Quantity]", groups: Sequence[tuple[str, str]]) -> list[Table | str]:
+    """One table per group of quantities, each after its heading (a line print_tables wraps to the console's
+    width, not the table's): `groups` lists (name prefix, heading); the prefix is dropped from the names;
+    quantities matching no prefix come first."""
     title = ""
     sections: dict[str, tuple[str, dict]] = {title: ("", {})}
     for prefix, heading in groups:
@@ -199,18 +200,23 @@ def grouped_tables(quantities: "Mapping[str, Quantity]", groups: Sequence[tuple[
             sections[title][1][name] = q
         else:
             sections[match[1]][1][name.removeprefix(match[0])] = q
-    return [quantity_table(heading, table, prefix) for heading, (prefix, table) in sections.items() if table]
+    shown: list[Table | str] = []
+    for heading, (prefix, table) in sections.items():
+        if table:
+            shown += [heading, quantity_table("", table, prefix)] if heading else [quantity_table("", table, prefix)]
+    return shown
 
 
-def print_tables(tables: Sequence[Table], title: str = "") -> None:
-    """Print the title wrapped to the console's width, then the tables."""
+def print_tables(tables: Sequence[Table | str], title: str = "") -> None:
+    """Print the title wrapped to the console's width, then the tables (a string among them is a heading, wrapped
+    the same way)."""
     from orbits.display import filled
 
     out = console()
     if title:
         out.print(escape(filled(title, out.width)))
     for grid in tables:
-        out.print(grid)
+        out.print(escape(filled(grid, out.width)) if isinstance(grid, str) else grid)
 
 
 def emit(title: str, quantities: "Mapping[str, Quantity]", fmt: str, *, index: str | None = None,

@@ -11,6 +11,7 @@ A quantity is shown in the natural unit for its kind and size, the largest finit
               energy in km2 / s2; h and dA/dt in km2 / s
     rate      km / s / Mpc for a Hubble parameter; otherwise 1 / (the natural time unit of 1 / rate)
     mass      kg below 1e20 kg, Earth masses below 0.1 M_jup, Jupiter masses below 0.05 M_sun, solar masses beyond
+    area      m2 below 1 km2, km2 below 1 AU2, AU2 beyond (the area an orbit sweeps)
     volume    m3 below 1e9 m3, km3 below (1e5 pc)**3, Mpc3 below (1 Gpc)**3, Gpc3 beyond
 
 with DIGITS significant digits, in plain decimals from 1e-3 up to 10**DIGITS (10**4 at least: 7700 km shows as
@@ -43,6 +44,7 @@ _HUBBLE = u.km / u.s / u.Mpc
 #: units shown by their astronomers' names rather than astropy's (solMass)
 _NAMED = {u.M_sun: "M_sun", u.M_jup: "M_jup", u.M_earth: "M_earth"}
 _MASSES = [(1e20, u.kg), (0.1 * u.M_jup.to(u.kg), u.M_earth), (0.05 * u.M_sun.to(u.kg), u.M_jup), (math.inf, u.M_sun)]
+_AREAS = [(1e6, u.m**2), (u.AU.to(u.m) ** 2, u.km**2), (math.inf, u.AU**2)]
 _VOLUMES = [(1e9, u.m**3), ((1e5 * u.pc.to(u.m)) ** 3, u.km**3), ((1e3 * u.Mpc.to(u.m)) ** 3, u.Mpc**3),
             (math.inf, u.Gpc**3)]
 _FIXED = [  # (SI unit, natural unit), tried in order after lengths, times, angles, rates and speeds
@@ -87,6 +89,8 @@ def natural_unit(q: u.Quantity, name: str = "") -> u.UnitBase:
         return u.km / u.s if _size(q, u.m / u.s) >= 1e3 else u.m / u.s
     if unit.is_equivalent(u.kg):
         return _rung(_size(q, u.kg), _MASSES)
+    if unit.is_equivalent(u.m**2):
+        return _rung(_size(q, u.m**2), _AREAS)
     if unit.is_equivalent(u.m**3):
         return _rung(_size(q, u.m**3), _VOLUMES)
     for si, natural in _FIXED:

@@ -122,9 +122,10 @@ def point_name(name: str) -> str:
         if known.lower() == key:
             return known
     catalogued = " (it is in the catalogue, but not in the ephemeris)" if key in (b.lower() for b in BODIES) else ""
-    close = difflib.get_close_matches(key, [k.lower() for k in _CHAINS], n=2, cutoff=0.6)
-    hint = "; did you mean " + " or ".join(k for k in _CHAINS if k.lower() in close) + "?" if close else ""
-    raise UnknownNameError(f"no ephemeris for {name!r}{catalogued}{hint} (points known: {', '.join(_CHAINS)})")
+    known = [*_CHAINS, *PROPAGATED]
+    close = difflib.get_close_matches(key, [k.lower() for k in known], n=2, cutoff=0.6)
+    hint = "; did you mean " + " or ".join(k for k in known if k.lower() in close) + "?" if close else ""
+    raise UnknownNameError(f"no ephemeris for {name!r}{catalogued}{hint} (points known: {', '.join(known)})")
 
 
 def epoch(value: Any, scale: str = "utc") -> Time:

@@ -317,10 +317,8 @@ def _check_semi_major_axis(value, e):
         i = tuple(np.argwhere(np.broadcast_to(wrong, np.broadcast_shapes(value.shape, e.shape)))[0])
         bad_a, bad_e = np.broadcast_to(value, wrong.shape)[i], np.broadcast_to(e, wrong.shape)[i]
         rule = "a > 0 for a bound orbit (e < 1)" if bad_e < 1 else "a < 0 for a hyperbola (e > 1)"
-        raise OrbitDomainError(
-            f"semi-major axis a = {float(bad_a)!r} m with e = {float(bad_e)!r}: need {rule} "
-            f"(need a > 0 for e < 1 and a < 0 for e > 1)"
-        )
+        raise OrbitDomainError(f"semi-major axis a = {float(bad_a) / 1e3:.10g} km with e = {float(bad_e)!r}: need "
+                               f"{rule}")
 
 
 def eccentricity(e: float | np.ndarray | u.Quantity) -> np.ndarray:

@@ -193,7 +193,8 @@ class Orbit(display.Displayed):
 
     def _require_mass(self, quantity):
         if self.mass is None:
-            raise OrbitDomainError(f"{quantity} needs the orbiting body's mass: build the orbit with mass=... kg")
+            raise OrbitDomainError(f"{quantity} needs the orbiting body's mass: give it (mass=... in Python, --mass "
+                                   f"in the calculator)")
         return self.mass
 
     # ---- elements -------------------------------------------------------------------------------

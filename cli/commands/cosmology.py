@@ -53,11 +53,13 @@ def command(
 
     cosmology = build(h0, om, ol, orad, ok, model)
     table = cosmology.quantities(**epoch(z, t), only=inputs.names(only))
+    course = model == "notes" or all(x is None for x in (model, h0, om, ol, orad, ok))
+    heading = title(cosmology) + ("; the course's universe (--model planck18 for ours)" if course else "")
     if plot:
         from orbits.plot import cosmology_overview
 
         save_plot(lambda: cosmology_overview(cosmology, title(cosmology)), plot)
-    render.emit(title(cosmology), table, fmt.value, index="redshift")
+    render.emit(heading, table, fmt.value, index="redshift")
 
 
 def build(

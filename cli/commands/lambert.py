@@ -51,8 +51,8 @@ def command(
         from orbits.ephemeris import tdb_iso
 
         title = (f"Lambert transfer from {start.point} ({tdb_iso(start.epoch)} TDB) to {end.point} "
-                 f"({tdb_iso(end.epoch)} TDB) about the Sun{shown}; elements in the ecliptic of J2000; positions: "
-                 f"{start.source}")
+                 f"({tdb_iso(end.epoch)} TDB) about the Sun{shown}; vectors in the ICRF (equatorial), elements in "
+                 f"the ecliptic of J2000; positions: {start.source}")
         about = {"from": start.point, "to": end.point, "depart_tdb": tdb_iso(start.epoch),
                  "arrive_tdb": tdb_iso(end.epoch), "source": start.source, "accuracy": start.accuracy,
                  "frame": "ICRF vectors, elements in the ecliptic of J2000"}

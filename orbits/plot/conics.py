@@ -365,7 +365,7 @@ def _size_text(conic):
     """"a = 7000 km, e = 0.1" (q for an open orbit): what tells one orbit of an array from the others."""
     e = conic.e
     size = twobody.semi_major_axis(conic.p, e) if e < 1 else twobody.periapsis_distance(conic.p, e)
-    return f"{'a' if e < 1 else 'q'} = {display.quantity_math(size << u.m, digits=4)}, e = {eccentricity_text(e)}"
+    return f"{'a' if e < 1 else 'q'} = {display.quantity_math(size << u.m, digits=7)}, e = {eccentricity_text(e)}"
 
 
 def _extent(entries, times_window):

@@ -188,7 +188,7 @@ def _mass(binary: Any, k: int) -> str:
 def _binary_text(binary: Any) -> str:
     """"1.1 M$_\\odot$ + 0.8 M$_\\odot$, a = 8.5 AU, e = 0.5, P = 20 yr": a binary as a title names it."""
     relative = binary.relative
-    return (f"{_mass(binary, 0)} + {_mass(binary, 1)}, a = {display.quantity_math(relative.semi_major_axis, digits=4)}"
+    return (f"{_mass(binary, 0)} + {_mass(binary, 1)}, a = {display.quantity_math(relative.semi_major_axis, digits=7)}"
             f", e = {display.number(float(relative.e), 4)}, P = {display.quantity_math(binary.period, digits=4)}")
 
 
