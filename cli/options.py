@@ -185,40 +185,87 @@ def _print_warnings(caught, ours):
             warnings.warn_explicit(item.message, item.category, item.filename, item.lineno)
 
 
+class _NotingInterrupts:
+    """While active, a SIGINT is noted before Python's handler raises KeyboardInterrupt, so that an interrupt a
+    library turned into another exception (an import cut short leaves a module half-loaded, and the next import
+    fails with AttributeError) is still reported as an interrupt. Only in the main thread, where signals land."""
+
+    def __init__(self) -> None:
+        self.seen = False
+        self.previous = None
+
+    def __enter__(self) -> "_NotingInterrupts":
+        import signal
+        import threading
+
+        if threading.current_thread() is threading.main_thread():
+            self.previous = signal.getsignal(signal.SIGINT)
+            signal.signal(signal.SIGINT, self._note)
+        return self
+
+    def _note(self, signum, frame) -> None:
+        self.seen = True
+        raise KeyboardInterrupt
+
+    def __exit__(self, *exc) -> None:
+        import signal
+
+        if self.previous is not None:
+            signal.signal(signal.SIGINT, self.previous)
+
+
 def reports_errors(command: Callable[_P, _R]) -> Callable[_P, _R]:
     """Turn the library's input errors into one line on stderr and exit status 2, and Ctrl-C into "orbits:
-    interrupted" and exit status 130."""
+    interrupted" and exit status 130 (whatever exception the interrupted code raised instead)."""
 
     @functools.wraps(command)
     def wrapper(*args, **kwargs):
         import warnings
 
-        import astropy.units as u
-
-        from orbits import OrbitsError, OrbitsWarning
+        from orbits import OrbitsWarning
 
         said = []
+        interrupts = _NotingInterrupts()
         try:
             try:
-                with warnings.catch_warnings(record=True) as said:
+                with interrupts, warnings.catch_warnings(record=True) as said:
                     warnings.simplefilter("error", RuntimeWarning)  # a float64 overflow is an error, never a warning
                     warnings.simplefilter("always", OrbitsWarning)
                     return command(*args, **kwargs)
             finally:  # outside the recording: a warning passed on goes to the caller's filters, not back to `said`
                 _print_warnings(said, OrbitsWarning)
         except KeyboardInterrupt:
-            print("orbits: interrupted", file=sys.stderr)
-            raise typer.Exit(130) from None
-        except RuntimeWarning as err:
-            print(f"orbits: error: the computation left float64 ({err}); the inputs are outside what orbits can "
-                  f"compute", file=sys.stderr)
-            raise typer.Exit(2) from None
-        except (OrbitsError, ValueError, TypeError, KeyError, u.UnitsError, typer.BadParameter) as err:
-            from orbits.display import printable
-
-            message = err.format_message() if isinstance(err, typer.BadParameter) else (
-                str(err.args[0]) if isinstance(err, KeyError) and err.args else str(err))
-            print(f"orbits: error: {printable(message)}", file=sys.stderr)  # one line, whatever a file held
-            raise typer.Exit(2) from None
+            _report_interrupt()
+        except Exception:
+            if interrupts.seen:  # whatever the interrupted code raised instead of KeyboardInterrupt
+                _report_interrupt()
+            return _report_error()
 
     return wrapper
+
+
+def _report_interrupt() -> None:
+    print("orbits: interrupted", file=sys.stderr)
+    raise typer.Exit(130) from None
+
+
+def _report_error() -> None:
+    """The exception being handled as one line on stderr and exit status 2, if it is an input or float64 error;
+    anything else (a bug) is raised again."""
+    import astropy.units as u
+
+    from orbits import OrbitsError
+
+    try:
+        raise
+    except RuntimeWarning as err:
+        print(f"orbits: error: the computation left float64 ({err}); the inputs are outside what orbits can "
+              f"compute", file=sys.stderr)
+        raise typer.Exit(2) from None
+    except (OrbitsError, ValueError, TypeError, KeyError, u.UnitsError, typer.BadParameter) as err:
+        from orbits.display import printable
+
+        message = err.format_message() if isinstance(err, typer.BadParameter) else (
+            str(err.args[0]) if isinstance(err, KeyError) and err.args else str(err))
+        print(f"orbits: error: {printable(message)}", file=sys.stderr)  # one line, whatever a file held
+        raise typer.Exit(2) from None

@@ -206,9 +206,31 @@ class Design(display.Displayed):
 def _size(primary, a, altitude):
     if (a is None) == (altitude is None):
         raise TypeError("give exactly one of a= and altitude=")
-    if a is not None:
-        return inputs.positive(a, units.M, "semi-major axis a")
-    return primary.radius + inputs.positive(altitude, units.M, "altitude")
+    size = (inputs.positive(a, units.M, "semi-major axis a") if a is not None
+            else primary.radius + inputs.positive(altitude, units.M, "altitude"))
+    if np.any(size <= primary.radius):
+        raise OrbitDomainError(f"a = {float(np.min(size)) / 1e3:.6g} km lies inside {primary.name} (radius "
+                               f"{primary.radius / 1e3:g} km)")
+    _within_reach(primary, size)
+    return size
+
+
+def _within_reach(named: Body, size) -> None:
+    """Refuse a design whose a lies beyond the body's Hill sphere, r_H = a_body (m / (3 M_parent))**(1/3): there
+    the parent pulls harder than the body, and no J2 design holds."""
+    from orbits.catalogue_orbits import mean_elements
+
+    if named.parent is None:
+        return
+    try:
+        own = mean_elements(named.name)
+    except OrbitDomainError:
+        return
+    hill = own.a * (named.gm / (3.0 * body(named.parent).gm)) ** (1.0 / 3.0)
+    if np.any(np.asarray(size) > hill):
+        parent = "the Sun" if named.parent == "Sun" else named.parent
+        raise OrbitDomainError(f"a = {float(np.max(size)) / 1e3:.6g} km lies beyond {named.name}'s Hill sphere "
+                               f"(radius {hill / 1e3:.4g} km), where {parent} pulls harder: no J2 design holds")
 
 
 def _eccentricity(e, primary, a):
@@ -233,6 +255,7 @@ def sun_synchronous(primary: Body | str = "Earth", *, a: u.Quantity | None = Non
         ecc = _eccentricity(e, named, None)
         size = oblateness.sun_synchronous_semi_major_axis(inputs.angle(inc, "inclination i"), ecc, named.gm,
                                                           named.j2, named.j2_radius, node)
+        _within_reach(named, size)
         _eccentricity(e, named, size)
         angle = inputs.angle(inc, "inclination i")
     else:
@@ -252,8 +275,15 @@ def frozen(primary: Body | str = "Earth", *, a: u.Quantity | None = None, altitu
                                f"has one)")
     size = _size(named, a, altitude)
     omega = inputs.angle(argp, "argument of periapsis omega")
-    e = oblateness.frozen_eccentricity(size, inputs.angle(inc, "inclination i"), named.j2, named.j3,
-                                       named.j2_radius, omega)
+    from orbits.core.errors import ConvergenceError
+
+    try:
+        e = oblateness.frozen_eccentricity(size, inputs.angle(inc, "inclination i"), named.j2, named.j3,
+                                           named.j2_radius, omega)
+    except ConvergenceError:
+        raise OrbitDomainError(f"no frozen e found at i = {float(np.degrees(inputs.angle(inc, 'inclination i'))):.10g}"
+                               f" deg: this close to the critical inclination (63.43 or 116.57 deg) J2 barely turns "
+                               f"the periapsis and the frozen e is no longer small") from None
     _eccentricity(e, named, size)
     return Design("FrozenOrbit", named, size << units.M, e << u.one, inputs.angle(inc, "inclination i") << units.RAD,
                   {"argument_of_periapsis": omega << units.RAD})
@@ -271,10 +301,14 @@ def repeat_ground_track(primary: Body | str = "Earth", *, revolutions: int, days
             raise OrbitDomainError(f"{name} = {value!r} must be a whole number >= 1")
     ecc = _eccentricity(e, named, None)
     angle = inputs.angle(inc, "inclination i")
+    if not abs(math.sin(angle)) > 1e-9:
+        raise OrbitDomainError(f"i = {math.degrees(angle):g} deg: an equatorial orbit has no node for its ground "
+                               f"track to repeat over; give an inclined orbit")
     spin = 2.0 * math.pi / named.rotation_period * (-1.0 if named.retrograde else 1.0)
     size = oblateness.repeat_ground_track_semi_major_axis(revolutions, days, ecc, angle, named.gm, named.j2,
                                                           named.j2_radius, spin)
     _eccentricity(e, named, size)
+    _within_reach(named, size)
     osculating = oblateness.osculating_semi_major_axis(size, ecc, angle, 0.0, 0.0, named.j2, named.j2_radius)
     return Design("RepeatGroundTrack", named, size << units.M, ecc << u.one, angle << units.RAD,
                   {"revolutions": revolutions << u.one, "days": days << u.one,
@@ -447,6 +481,19 @@ class DragDecay(display.Displayed):
 
 
 # ---- a distant third body ---------------------------------------------------------------------------------------
+#: the smallest initial e a Kozai-Lidov table takes: below it e**2 is lost beside 1 in float64, and the period,
+#: which grows as ln(1 / e), stops changing; and the least 1 - e_max**2 (a nearly radial orbit)
+KOZAI_SMALLEST_E = 1e-6
+KOZAI_RADIAL = 1e-8
+
+
+def _kozai_eccentricity(value: float, name: str, smallest: float) -> float:
+    e = float(units.to_number(value, f"eccentricity {name}"))
+    if not smallest <= e < 1.0:
+        raise OrbitDomainError(f"eccentricity {name} = {e!r} is outside [{smallest:g}, 1)")
+    return e
+
+
 @dataclass(frozen=True, eq=False, repr=False)
 class KozaiLidov(display.Displayed):
     """The quadrupole Kozai-Lidov oscillation of a test particle about m0 perturbed by m3 on a wide orbit.
@@ -476,13 +523,31 @@ class KozaiLidov(display.Displayed):
         if not outer > size:
             raise OrbitDomainError(f"a_out = {outer / 1e3:.6g} km must exceed a = {size / 1e3:.6g} km: the "
                                    f"perturber is distant")
-        ecc = float(inputs.eccentricity(e))
-        ecc_out = float(inputs.eccentricity(e_out))
-        for value, name in ((ecc, "e"), (ecc_out, "e_out")):
-            if not 0.0 < value < 1.0 if name == "e" else not 0.0 <= value < 1.0:
-                raise OrbitDomainError(f"{name} = {value!r} is outside {'(0' if name == 'e' else '[0'}, 1)")
-        return cls(size, ecc, float(inputs.angle(inc, "inclination i")),
-                   float(inputs.angle(argp, "argument of periapsis omega")), mu0, mu3 / mu0, outer, ecc_out)
+        ecc, ecc_out = _kozai_eccentricity(e, "e", KOZAI_SMALLEST_E), _kozai_eccentricity(e_out, "e_out", 0.0)
+        angle = float(inputs.angle(inc, "inclination i"))
+        triple = cls(size, ecc, angle, float(inputs.angle(argp, "argument of periapsis omega")), mu0, mu3 / mu0,
+                     outer, ecc_out)
+        triple._require_hierarchical_stability()
+        triple._require_non_radial()
+        return triple
+
+    def _require_hierarchical_stability(self) -> None:
+        """Mardling and Aarseth's (2001) stability limit for the outer orbit, a_out / a > 2.8 (1 + q)**(2/5)
+        (1 + e_out)**(2/5) (1 - e_out)**(-6/5) (1 - 0.3 i / 180 deg), q = m3 / m0: closer, the triple is not
+        hierarchical and no secular theory applies."""
+        limit = (2.8 * (1.0 + self.mass_ratio) ** 0.4 * (1.0 + self.e_out) ** 0.4 * (1.0 - self.e_out) ** -1.2
+                 * (1.0 - 0.3 * abs(math.remainder(self.inc, 2.0 * math.pi)) / math.pi))
+        if not self.a_out / self.a > limit:
+            raise OrbitDomainError(f"a_out / a = {self.a_out / self.a:.4g} is below {limit:.4g}, Mardling and "
+                                   f"Aarseth's stability limit for these masses and e_out: the triple is not "
+                                   f"hierarchical, and the secular theory does not apply")
+
+    def _require_non_radial(self) -> None:
+        """1 - e_max**2 of at least KOZAI_RADIAL, where e**2 near 1 is still resolved in float64."""
+        _, high = third_body.eccentricity_range(self.e, self.inc, self.argp)
+        if not (1.0 - float(high)) * (1.0 + float(high)) >= KOZAI_RADIAL:
+            raise OrbitDomainError(f"e would reach {float(high):.10g}, a radial orbit (1 - e_max**2 below "
+                                   f"{KOZAI_RADIAL:g}, as at i = 90 deg): choose i farther from 90 deg")
 
     @cached_property
     def timescale(self) -> u.Quantity:

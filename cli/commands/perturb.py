@@ -21,8 +21,15 @@ SizeOption = Annotated[str | None, typer.Option("--a", help="semi-major axis, e.
 AltitudeOption = Annotated[str | None, typer.Option("--altitude", help="a - R_eq, e.g. '700 km'")]
 InclinationOption = Annotated[str | None, typer.Option("--inc", help="inclination ('98 deg'; bare numbers are "
                                                                      "degrees)")]
-RevolutionsOption = Annotated[int, typer.Option("--revolutions", min=1, max=2000,
-                                                help="revolutions the --plot integrates")]
+RevolutionsOption = Annotated[int | None, typer.Option("--revolutions", min=1, max=2000,
+                                                       help="revolutions the --plot integrates (default 30)")]
+
+
+def _plot_only(plot, **given) -> None:
+    """Refuse an option that only --plot reads, given without --plot (it would be ignored)."""
+    for option, value in given.items():
+        if value is not None and not plot:
+            raise typer.BadParameter(f"--{option} sets what --plot integrates; give --plot FILE with it")
 
 #: the units tables use for these quantities unless --units si or --unit NAME=UNIT says otherwise
 NATURAL = {
@@ -71,7 +78,7 @@ def rates(
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
-    revolutions: RevolutionsOption = 30,
+    revolutions: RevolutionsOption = None,
 ) -> None:
     """J2's secular rates of the node, periapsis and mean anomaly (first order: good to J2 (R/p)**2 relative).
 
@@ -81,6 +88,7 @@ def rates(
     from orbits import Orbit, inputs
     from orbits.perturbations import SecularOrbit, oblate_body
 
+    _plot_only(plot, revolutions=revolutions)
     named = oblate_body(primary)
     size = _size(named, a, altitude)
     orbit = Orbit.from_elements(named, a=size, e=e, inc=_angle(inc, "--inc"), argp=_angle(argp, "--argp"))
@@ -91,12 +99,12 @@ def rates(
         _plot_secular(orbit, revolutions, plot)
 
 
-def _plot_secular(orbit, revolutions, path):
+def _plot_secular(orbit, revolutions: int | None, path):
     """The orbit integrated under J2 and J4 (orbits.validate.histories.secular_history), drawn to `path`."""
     from orbits.plot import secular_elements
     from orbits.validate.histories import secular_history
 
-    history = secular_history(orbit, revolutions)
+    history = secular_history(orbit, 30 if revolutions is None else revolutions)
     save_plot(lambda: secular_elements(history), path)
 
 
@@ -117,7 +125,7 @@ def sun_synchronous(
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
-    revolutions: RevolutionsOption = 30,
+    revolutions: RevolutionsOption = None,
 ) -> None:
     """The sun-synchronous orbit: its inclination for a size (or its size for an inclination).
 
@@ -127,6 +135,7 @@ def sun_synchronous(
     from orbits import inputs
     from orbits.perturbations import sun_synchronous as design
 
+    _plot_only(plot, revolutions=revolutions)
     result = design(primary, a=_length(a, "--a"), altitude=_length(altitude, "--altitude"), e=e,
                     inc=_angle(inc, "--inc"))
     emit(f"Sun-synchronous orbit about {result.primary.name} (node follows the mean Sun)",
@@ -156,6 +165,7 @@ def frozen(
     from orbits import inputs
     from orbits.perturbations import frozen as design
 
+    _plot_only(plot, revolutions=revolutions)
     result = design(primary, a=_length(a, "--a"), altitude=_length(altitude, "--altitude"), inc=_angle(inc, "--inc"),
                     argp=_angle(argp, "--argp"))
     if plot:  # integrated first: a run too long for a picture is refused before anything is printed
@@ -240,8 +250,8 @@ def kozai(
     e: Annotated[float, typer.Option("--e", help="initial eccentricity (> 0)")] = 0.001,
     argp: Annotated[str, typer.Option("--argp", help="initial argument of periapsis")] = "90",
     e_out: Annotated[float, typer.Option("--e-out", help="the perturber's eccentricity")] = 0.0,
-    cycles: Annotated[float, typer.Option("--cycles", min=0.1, max=4.0,
-                                          help="oscillations of e the --plot integrates")] = 2.0,
+    cycles: Annotated[float | None, typer.Option("--cycles", min=0.1, max=4.0,
+                                                 help="oscillations of e the --plot integrates (default 2)")] = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
@@ -254,13 +264,14 @@ def kozai(
     from orbits import inputs
     from orbits.perturbations import KozaiLidov
 
+    _plot_only(plot, cycles=cycles)
     result = KozaiLidov.of(mass_or_body(m0, "--m0"), mass_or_body(m3, "--m3"), a=_length(a, "--a"),
                            a_out=_length(a_out, "--a-out"), inc=_angle(inc, "--inc"), e=e, argp=_angle(argp, "--argp"),
                            e_out=e_out)
     if plot:  # integrated first: a run too long for a picture is refused before anything is printed
         from orbits.validate.histories import kozai_history
 
-        history = kozai_history(cycles=cycles, triple=result)
+        history = kozai_history(cycles=2.0 if cycles is None else cycles, triple=result)
     emit("Kozai-Lidov oscillation (quadrupole, test particle; octupole and averaging parameters give its error)",
          result.quantities(inputs.names(only)), fmt)
     if plot:

@@ -171,18 +171,23 @@ def repeat_ground_track_semi_major_axis(revolutions: ArrayLike, days: ArrayLike,
                                         mu: ArrayLike, j2: ArrayLike, radius: ArrayLike,
                                         rotation_rate: ArrayLike) -> np.ndarray:
     """a (m) of an orbit that makes `revolutions` nodal periods while the body turns `days` times under its node:
-    revolutions (Omega_body - dOmega/dt) = days (dM/dt + domega/dt), rotation_rate Omega_body (rad/s) the body's
-    sidereal spin. Solved by fixed-point iteration on n from the Kepler value (contraction O(J2 (R / p)**2))."""
+    revolutions |Omega_body - dOmega/dt| = days (dM/dt + domega/dt), rotation_rate Omega_body (rad/s) the body's
+    sidereal spin (negative for a body turning backwards, Venus or Uranus). Solved by fixed-point iteration on n
+    from the Kepler value (contraction O(J2 (R / p)**2))."""
     ratio = np.asarray(revolutions, dtype=float) / np.asarray(days, dtype=float)
     spin = np.asarray(rotation_rate, dtype=float)
     mu = np.asarray(mu, dtype=float)
-    a = np.cbrt(mu / (ratio * spin) ** 2)
+    a = np.cbrt(mu / (ratio * np.abs(spin)) ** 2)
+    if np.any(~(a > np.asarray(radius, dtype=float))):
+        raise OrbitDomainError("no repeat-ground-track orbit outside the body: that many revolutions a day need a "
+                               "below its radius")
     for _ in range(100):
         perturbation = (mean_anomaly_rate(a, e, inc, mu, j2, radius) - _mean_motion(a, mu)
                         + periapsis_rate(a, e, inc, mu, j2, radius))
-        n = ratio * (spin - node_rate(a, e, inc, mu, j2, radius)) - perturbation
+        n = ratio * np.abs(spin - node_rate(a, e, inc, mu, j2, radius)) - perturbation
         if np.any(~(n > 0.0)):
-            raise OrbitDomainError("no repeat-ground-track orbit: the required mean motion is not positive")
+            raise OrbitDomainError("no repeat-ground-track orbit: the required mean motion is not positive (J2's "
+                                   "terms outrun it: the orbit would lie deep inside the body)")
         updated = np.cbrt(mu / n**2)
         if np.all(np.abs(updated - a) <= 4e-16 * updated):
             return updated

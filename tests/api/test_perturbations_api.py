@@ -77,8 +77,31 @@ def test_drag_decay_runs_through_the_band_below_its_altitude():
     (lambda: DragDecay.of("Earth", altitude=100 * u.km, ballistic=0.01 * u.m**2 / u.kg),
      r"outside the table, \(100, 1500\] km"),
     (lambda: frozen("Earth", altitude=700 * u.km, inc=63.43494882292201 * u.deg), "critical inclination"),
+    (lambda: frozen("Earth", altitude=700 * u.km, inc=63.4349 * u.deg), "close to the critical inclination"),
+    (lambda: frozen("Earth", a=1 * u.km, inc=98 * u.deg), "a = 1 km lies inside Earth"),
+    (lambda: repeat_ground_track("Earth", revolutions=1, days=1_000_000, inc=98 * u.deg), "beyond Earth's Hill sphere"),
+    (lambda: repeat_ground_track("Moon", revolutions=1, days=1, inc=90 * u.deg), "beyond Moon's Hill sphere"),
+    (lambda: repeat_ground_track("Earth", revolutions=15, days=1, inc=0 * u.deg), "equatorial orbit has no node"),
+    (lambda: repeat_ground_track("Earth", revolutions=1_000_000, days=1, inc=98 * u.deg), "outside the body"),
+    (lambda: KozaiLidov.of("Sun", "Jupiter", a=1 * u.AU, a_out=5.2 * u.AU, inc=90 * u.deg), "a radial orbit"),
+    (lambda: KozaiLidov.of("Sun", "Jupiter", a=1 * u.AU, a_out=5.2 * u.AU, inc=89.999999 * u.deg), "a radial orbit"),
+    (lambda: KozaiLidov.of("Sun", "Jupiter", a=1 * u.AU, a_out=5.2 * u.AU, inc=65 * u.deg, e=1e-9),
+     r"outside \[1e-06, 1\)"),
+    (lambda: KozaiLidov.of(1 * u.solMass, 1 * u.solMass, a=1 * u.AU, a_out=12 * u.AU, inc=65 * u.deg, e_out=0.8),
+     "below 28.75, Mardling and Aarseth's stability limit"),
+    (lambda: KozaiLidov.of("Sun", "Jupiter", a=1 * u.AU, a_out=1.0000001 * u.AU, inc=65 * u.deg),
+     "not hierarchical"),
 ])
 def test_bad_inputs_are_one_line_errors(call, message):
     with pytest.raises(OrbitDomainError, match=message) as err:
         call()
     assert "\n" not in str(err.value)
+
+
+def test_a_backwards_turning_body_has_repeat_ground_tracks():
+    """Venus turns backwards once in 243 d: 15 revolutions a Venus day want n = 15 |Omega_Venus - dOmega/dt|, a
+    Kepler a of 252,631 km (the J2 of a slow rotator changes it in the sixth digit); it was refused as 'not
+    positive'."""
+    venus = repeat_ground_track("Venus", revolutions=15, days=1, inc=98 * u.deg)
+    kepler = np.cbrt(venus.primary.gm / (15 * 2 * np.pi / venus.primary.rotation_period) ** 2)
+    assert venus.semi_major_axis.to_value(u.m) == pytest.approx(kepler, rel=1e-4)

@@ -72,4 +72,10 @@ def test_plots_are_written_where_a_picture_exists(tmp_path):
         result = run("perturb", *args, "--plot", str(path))
         assert result.exit_code == 0, result.output
         assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-        assert result.stdout == run("perturb", *args).stdout
+        table_only = [x for k, x in enumerate(args) if x not in ("--revolutions", "--cycles")
+                      and (k == 0 or args[k - 1] not in ("--revolutions", "--cycles"))]
+        if args[0] == "repeat":  # its --revolutions is the design's, not the picture's
+            table_only = list(args)
+        assert result.stdout == run("perturb", *table_only).stdout
+        if table_only != list(args):  # the options only --plot reads are refused without it
+            assert run("perturb", *args).exit_code == 2

@@ -135,3 +135,40 @@ def test_ctrl_c_stops_bench_precision_after_its_rebound_runs_and_writes_nothing(
     with process.stderr:
         assert process.returncode == 130 and process.stderr.read().decode().strip().endswith("orbits: interrupted")
     assert not output.exists()
+
+
+def test_an_interrupt_a_library_turned_into_another_exception_is_still_an_interrupt(capsys):
+    """Ctrl-C while heyoka imports sympy left sympy half-loaded, and the run ended in AttributeError's traceback:
+    a SIGINT seen during the command makes whatever it raises an interrupt (exit 130), while the same exception
+    without one still surfaces as the bug it is, and input errors stay one line with exit 2."""
+    import os
+    import signal
+
+    import typer
+
+    from orbits import OrbitDomainError
+    from orbits_cli.options import reports_errors
+
+    def interrupted_import():
+        try:
+            os.kill(os.getpid(), signal.SIGINT)
+            time.sleep(1.0)  # the handler runs here
+        except KeyboardInterrupt:
+            pass  # swallowed, as an import cut short leaves it
+        raise AttributeError("module 'sympy' has no attribute 'core'")
+
+    def plain_bug():
+        raise AttributeError("a bug")
+
+    def bad_input():
+        raise OrbitDomainError("e = 2 is outside [0, 1)")
+
+    with pytest.raises(typer.Exit) as stop:
+        reports_errors(interrupted_import)()
+    assert stop.value.exit_code == 130 and capsys.readouterr().err == "orbits: interrupted\n"
+    with pytest.raises(AttributeError, match="a bug"):
+        reports_errors(plain_bug)()
+    with pytest.raises(typer.Exit) as stop:
+        reports_errors(bad_input)()
+    assert stop.value.exit_code == 2 and capsys.readouterr().err == "orbits: error: e = 2 is outside [0, 1)\n"
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
