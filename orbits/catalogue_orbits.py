@@ -44,6 +44,7 @@ _JD_2006 = 2453800.5  # 2006 Mar 6.00
 #: the worst over 0.1 to 25 years each way at outputs half a month apart (measured 8.57e5 for Ceres, 7.85 years
 #: before its epoch; 5.62e5 Vesta; 7.86e5 Pallas; 2.42e6 Hygiea, whose epoch finds it near Jupiter's longitude;
 #: 5.25e5 Eris). Against JPL's other solutions Ceres strays 4.9e5 km after 5.3 yr and 7.6e6 km after 18.5 yr
+DRIFT_MEASURED_YEARS = 25.0
 DRIFT_KM_PER_YEAR = {"Ceres": 8.6e5, "Vesta": 5.7e5, "Pallas": 7.9e5, "Hygiea": 2.5e6, "Eris": 5.3e5}
 
 
@@ -69,7 +70,8 @@ def _from_elements(a_au, e, inc, node, argp, mean_anomaly, epoch, source, accura
 
 def _small_body_accuracy(name: str, epoch: str, at_epoch: str = "exact") -> str:
     """How well the two-body orbit of `name` holds: `at_epoch` (what the published digits allow) and its drift."""
-    return _SMALL_BODY_ACCURACY.format(at_epoch=at_epoch, epoch=epoch, drift=DRIFT_KM_PER_YEAR[name])
+    return _SMALL_BODY_ACCURACY.format(at_epoch=at_epoch, epoch=epoch, drift=DRIFT_KM_PER_YEAR[name],
+                                       years=DRIFT_MEASURED_YEARS)
 
 
 def _laplace(primary, a_km, e, argp, mean_anomaly, inc, node, pole_ra, pole_dec, epoch, source, accuracy):
@@ -80,7 +82,7 @@ def _laplace(primary, a_km, e, argp, mean_anomaly, inc, node, pole_ra, pole_dec,
 
 
 _SMALL_BODY_ACCURACY = ("{at_epoch} at {epoch}; away from it off by up to {drift:,.0f} km more per year (the "
-                        "planets' pull, measured against an integration with them over 25 years each way)")
+                        "planets' pull, measured against an integration with them over {years:g} years each way)")
 _MARS_SATS = "JPL satellite mean elements on the Laplace plane, solution MAR080, epoch 1950-01-01 TT"
 _JUPITER_SATS = "JPL satellite mean elements on the Laplace plane, epoch 1997-01-16 TT"
 _MOON_ACCURACY = ("Kepler period from a and the GMs within {error} of the published {period} d (the planet's "

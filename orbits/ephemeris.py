@@ -347,6 +347,36 @@ def _propagated_heliocentric(name: str, when: Time) -> tuple[np.ndarray, np.ndar
     return frames.ecliptic_to_equatorial(r), frames.ecliptic_to_equatorial(v)
 
 
+_OTHERS = "; other bodies: "
+
+
+def _drift_here(name: str, epoch_jd: float, when: Time) -> str:
+    """'; here 1.1 yr from it: up to 2,750,000 km': the stated drift carried to the farthest of the epochs (and
+    whether that lies beyond the span the drift was measured over)."""
+    from orbits.catalogue_orbits import DRIFT_KM_PER_YEAR, DRIFT_MEASURED_YEARS
+
+    jd1, jd2 = tdb_julian_dates(when)
+    years = float(np.max(np.abs((np.asarray(jd1) - epoch_jd) + np.asarray(jd2)))) / 365.25
+    beyond = f", beyond the {DRIFT_MEASURED_YEARS:g} years measured" if years > DRIFT_MEASURED_YEARS else ""
+    return f"; here {years:.3g} yr from it: up to {float(f'{DRIFT_KM_PER_YEAR[name] * years:.2g}'):,.0f} km{beyond}"
+
+
+def provenance(*parts: "BodyState") -> tuple[str, str]:
+    """(source, stated accuracy) of what is built from several states (a transfer's two ends, a body seen from
+    another): each propagated body's published orbit and accuracy named once, then the ephemeris of the rest."""
+    propagated, ephemerides, stated = [], [], []
+    for part in parts:
+        head, _, rest = part.source.rpartition(_OTHERS)
+        if head and head not in propagated:
+            propagated.append(head)
+        if rest not in ephemerides:
+            ephemerides.append(rest)
+        if part.stated_accuracy and part.stated_accuracy not in stated:
+            stated.append(part.stated_accuracy)
+    named = "; ".join(ephemerides)
+    return ("; ".join(propagated) + _OTHERS + named if propagated else named), "; ".join(stated)
+
+
 def _relative(read: dict, target: str, origin: str, when: Time, source: str) -> "BodyState":
     """The BodyState of `target` about `origin` from barycentric states already read."""
     r, v = read[target]
@@ -360,8 +390,8 @@ def _relative(read: dict, target: str, origin: str, when: Time, source: str) -> 
 
     orbits_used = [mean_elements(p) for p in propagated]
     about = "; ".join(f"{p} by two-body propagation of {el.source}" for p, el in zip(propagated, orbits_used))
-    accuracy = "; ".join(f"{p} {el.accuracy}" for p, el in zip(propagated, orbits_used))
-    return BodyState(target, origin, when, r, v, f"{about}; other bodies: {named}", accuracy)
+    accuracy = "; ".join(f"{p} {el.accuracy}{_drift_here(p, el.epoch, when)}" for p, el in zip(propagated, orbits_used))
+    return BodyState(target, origin, when, r, v, f"{about}{_OTHERS}{named}", accuracy)
 
 
 def resolve_source(source: str) -> str:
@@ -652,7 +682,8 @@ def sighting(heliocentric: dict[str, BodyState], body: str, observer: str = "Ear
     body_state, seer_state = heliocentric[target], heliocentric[seer]
     if body_state.center != "Sun" or seer_state.center != "Sun":
         raise OrbitDomainError("sighting: the states must be about the Sun (ephemeris.states(..., center='Sun'))")
-    when, source, stated = body_state.epoch, body_state.source, body_state.stated_accuracy
+    when = body_state.epoch
+    source, stated = provenance(body_state, seer_state)
     return Sighting(body_state,
                     BodyState(target, seer, when, body_state.r_si - seer_state.r_si,
                               body_state.v_si - seer_state.v_si, source, stated),

@@ -48,13 +48,16 @@ def command(
         transfer = between_bodies(departure, target, depart, arrive, ephemeris.value, primary,
                                   {"--r1": r1, "--r2": r2, "--tof": tof}, common)
         start, end = transfer.departure, transfer.arrival
-        from orbits.ephemeris import tdb_iso
+        from orbits.ephemeris import provenance, tdb_iso
+
+        source, stated = provenance(start, end)
 
         title = (f"Lambert transfer from {start.point} ({tdb_iso(start.epoch)} TDB) to {end.point} "
                  f"({tdb_iso(end.epoch)} TDB) about the Sun{shown}; vectors in the ICRF (equatorial), elements in "
-                 f"the ecliptic of J2000; positions: {start.source}")
+                 f"the ecliptic of J2000; positions: {source}" + (f"; {stated}" if stated else ""))
         about = {"from": start.point, "to": end.point, "depart_tdb": tdb_iso(start.epoch),
-                 "arrive_tdb": tdb_iso(end.epoch), "source": start.source, "accuracy": start.accuracy,
+                 "arrive_tdb": tdb_iso(end.epoch), "source": source,
+                 "accuracy": stated or start.accuracy,
                  "frame": "ICRF vectors, elements in the ecliptic of J2000"}
         render.emit(title, transfer.quantities(inputs.names(only)), fmt.value, about=about)
         return

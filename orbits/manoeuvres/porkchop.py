@@ -264,7 +264,7 @@ class Porkchop(display.Displayed):
         v2 = np.full(valid.shape + (3,), np.nan)
         v1[valid], v2[valid] = transfer.v1_si, transfer.v2_si
         return cls(names[0], names[1], launches, arrivals, start.r_si, start.v_si, end.r_si, end.v_si, v1, v2,
-                   valid, SUN_GM, start.source)
+                   valid, SUN_GM, ephemeris.provenance(start, end)[0])
 
     @property
     def shape(self) -> tuple[int, int]:

@@ -241,3 +241,23 @@ def test_the_moons_orbit_carries_both_masses_like_every_moon():
     assert moon.period.to_value(u.day) == pytest.approx(27.321661, rel=2e-3)
     assert "about Earth + Moon" in repr(moon) and "about Jupiter + Io" in repr(Orbit.from_body("Io"))
     assert "0.14 % short of the sidereal month" in mean_elements("Moon").accuracy
+
+
+def test_every_propagated_end_names_its_orbit_and_the_error_at_the_date():
+    """A transfer to Hygiea, Earth seen from Pallas, a porkchop to Hygiea: each names the propagated body's
+    published orbit and its accuracy (only the departure's source was shown, and it said DE421); the accuracy
+    carries the stated drift to the date, and says when the date lies beyond the 25 years measured."""
+    from orbits import Porkchop, lambert
+
+    transfer = lambert("Earth", "Hygiea", depart="2030-01-01", arrive="2032-06-01")
+    source, stated = ephemeris.provenance(transfer.departure, transfer.arrival)
+    assert source.startswith("Hygiea by two-body propagation of Minor Planet Center") and "JPL DE421" in source
+    assert "Hygiea within 100 km" in stated and "here 6.53 yr from it: up to 16,000,000 km" in stated
+    seen = ephemeris.where("Earth", "2026-01-01", observer="Pallas")
+    assert "Pallas by two-body propagation" in seen.from_observer.source
+    assert "Pallas within 10 km" in seen.from_observer.accuracy
+    old = ephemeris.where("Hygiea", "1899-07-29")
+    assert "here 126 yr from it: up to 320,000,000 km, beyond the 25 years measured" in old.from_observer.accuracy
+    chart = Porkchop.between("Earth", "Hygiea", launch=("2030-01-01", "2030-01-21"),
+                             arrival=("2032-06-01", "2032-06-21"), step=10 * u.day)
+    assert chart.source.startswith("Hygiea by two-body propagation")
