@@ -30,7 +30,7 @@ import astropy.units as u
 import numpy as np
 
 from orbits import display, ephemeris, inputs, units
-from orbits.constants import Body
+from orbits.constants import SPEED_OF_LIGHT, Body
 from orbits.core import elements, frames
 from orbits.core import lambert as lambert_core
 from orbits.core.errors import OrbitDomainError
@@ -269,6 +269,10 @@ def lambert(
 
 def _solve(start, end, seconds, mu, revolutions, branch, prograde, direction, departure=None, arrival=None):
     solution = lambert_core.solve(start, end, seconds, mu, revolutions, branch, prograde, direction)
+    fastest = float(np.max(np.linalg.norm(np.stack([solution.v1, solution.v2]), axis=-1), initial=0.0))
+    if fastest >= 0.01 * SPEED_OF_LIGHT:  # (v / c)**2 = 1e-4: a relativistic, not a Newtonian, transfer
+        raise OrbitDomainError(f"the transfer needs {fastest / 1e3:.4g} km/s, {fastest / SPEED_OF_LIGHT:.3g} of the "
+                               f"speed of light, where two-body Newtonian gravity no longer holds: a longer flight")
     shape = solution.x.shape
     vector_shape = (*shape, 3)
     return LambertTransfer(

@@ -150,3 +150,12 @@ def test_between_bodies_errors_and_elements_without_bodies():
         _ = plain.c3
     assert plain.periapsis_distance.to_value(u.AU) == pytest.approx(
         plain.semi_major_axis.to_value(u.AU) * (1 - plain.eccentricity.value), rel=1e-14)
+
+
+def test_a_transfer_faster_than_a_hundredth_of_light_is_refused():
+    """One second from the Earth to Hygiea asked 6.5e8 km/s, answered without a word; the refusal starts at 1 % of
+    c, where (v / c)**2 = 1e-4 and the Newtonian transfer stops meaning anything. 3000 km/s passes just under it."""
+    with pytest.raises(OrbitDomainError, match="of the speed of light"):
+        lambert("Earth", "Hygiea", depart="2030-01-01", arrive="2030-01-01T00:00:01")
+    fast = lambert([1e9, 0, 0] * u.km, [0, 1e9, 0] * u.km, 1e9 / 2900.0 * np.sqrt(2) * u.s, "Sun")
+    assert np.linalg.norm(fast.v1.to_value(u.km / u.s)) < 2998.0
