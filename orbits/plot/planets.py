@@ -6,6 +6,7 @@ from typing import Any
 import numpy as np
 
 from orbits import ephemeris
+from orbits.constants import AU
 from orbits.core import frames
 from orbits.plot import frame
 from orbits.plot.conics import PROJECTIONS, Conic, draw_orbits
@@ -20,9 +21,14 @@ _DRAWN_AS = {"Moon": "Earth", "Earth-Moon barycentre": "Earth", "solar system ba
 
 
 def solar_system_part(body: str) -> str:
-    """The part of solar_system that shows `body` (a planet, Pluto, the Moon or a barycentre): "inner" for
-    Mercury-Mars and the Earth-Moon pair, "all" for Jupiter-Pluto (so the Earth is in the picture too)."""
+    """The part of solar_system that shows `body` (a planet, Pluto, the Moon, a barycentre or a body of
+    ephemeris.PROPAGATED): "inner" for Mercury-Mars, the Earth-Moon pair and the asteroids (drawn with them), "all"
+    for Jupiter-Pluto and Eris (so the Earth is in the picture too)."""
     name = _DRAWN_AS.get(ephemeris.point_name(body), ephemeris.point_name(body))
+    if name in ephemeris.PROPAGATED:
+        from orbits.catalogue_orbits import mean_elements
+
+        return "inner" if mean_elements(name).a < 5.0 * AU else "all"
     return "all" if name in SOLAR_SYSTEM["outer"] else "inner"
 
 
@@ -49,7 +55,7 @@ def solar_system(
         scale of Pluto's orbit)
     projection : "xy" (the ecliptic seen from its north pole), "xz", "yz" or "3d"
     highlight : a body drawn with a thick orbit and a bold label (the Moon and the Earth-Moon barycentre are
-        drawn as the Earth)
+        drawn as the Earth; an asteroid or dwarf planet of ephemeris.PROPAGATED is drawn beside the planets)
     observer : with `highlight`, a body from which a dashed line of sight is drawn to it
     source : the ephemeris, "auto", "de421" or "builtin" (astropy's, which has no Pluto: Pluto is then left out
         and the title says so)
@@ -68,6 +74,7 @@ def solar_system(
     names, missing = _drawn(which, resolved)
     target = None if highlight is None else _DRAWN_AS.get(ephemeris.point_name(highlight),
                                                           ephemeris.point_name(highlight))
+    names += [target] if target in ephemeris.PROPAGATED and target not in names else []
     if target is not None and target not in (*names, "Sun"):
         raise ValueError(f"{highlight} is not drawn in the {which} solar system ({', '.join(names)})")
     seer = None if target is None or observer is None else ephemeris.point_name(observer)
@@ -100,10 +107,10 @@ def solar_system(
             panel.get_legend().remove()
         inner.legend(*ax.get_legend_handles_labels(), loc="upper left", bbox_to_anchor=(1.02, 1.0),
                      fontsize="small", frameon=False)
-        frame.title(ax, "out to Pluto" if "Pluto" in names else "out to Neptune")
+        frame.title(ax, f"out to {next(n for n in ('Eris', 'Pluto', 'Neptune') if n in names)}")
         frame.title(inner, "the inner planets")
     lines = [f"The {'' if which == 'all' else which + ' '}solar system on {frame.date_text(when)} "
-             f"(ecliptic of J2000)", f"positions: {seen[names[0]].source}"]
+             f"(ecliptic of J2000)", f"positions: {ephemeris.provenance(*(seen[name] for name in names))[0]}"]
     systems = [name for name in names if seen[name].point != name]
     if systems:
         lines.append(f"{_names(systems)}: {'the' if len(systems) > 1 else 'its'} system "
@@ -167,6 +174,7 @@ def solar_system_points(which: str = "inner", *, highlight: str | None = None, o
     names, _ = _drawn(which, ephemeris.resolve_source(source))
     target = None if highlight is None else _DRAWN_AS.get(ephemeris.point_name(highlight),
                                                           ephemeris.point_name(highlight))
+    names += [target] if target in ephemeris.PROPAGATED and target not in names else []
     seer = None if target is None or observer is None else ephemeris.point_name(observer)
     if seer is not None and seer != target and seer not in (*names, "Sun"):
         names.append(seer)

@@ -406,3 +406,20 @@ def test_a_position_is_labelled_with_its_time():
     """'body now' labelled the orbit's own epoch: it is 'body at t0', or the date the elements hold at."""
     assert "body at t0" in legend_labels(pictures.orbits(_molniya())[0])
     assert "body at 2026-11-25 00:01 TDB" in legend_labels(pictures.orbits(_molniya(), epoch="2026-11-25")[0])
+
+
+@pytest.mark.parametrize("name, part", [("Ceres", "inner"), ("Eris", "all")])
+def test_an_asteroid_or_dwarf_planet_is_drawn_beside_the_planets(name, part, tmp_path):
+    """where Ceres --plot was refused ('not drawn in the inner solar system'): a body of ephemeris.PROPAGATED is
+    drawn with the part of the solar system its orbit fits (the inner planets for the asteroids, all of it for
+    Eris, whose panel then reaches out to it), its label in bold, and the title names its two-body orbit."""
+    from orbits.plot import solar_system, solar_system_part
+
+    assert solar_system_part(name) == part
+    fig, ax = solar_system("2026-01-01", which=part, highlight=name, observer="Earth")
+    assert any(text.get_text() == name and text.get_fontweight() == "bold" for text in ax.texts)
+    title = fig.get_suptitle() if part == "all" else ax.get_title()
+    assert f"{name} by two-body propagation" in " ".join(title.split())
+    if part == "all":
+        assert ax.get_title() == "out to Eris"
+    assert problems(fig) == []
