@@ -392,9 +392,9 @@ def kozai_history(inc_deg: float = 65.0, cycles: float = 2.0, backends=None, tri
         a_out, mass_ratio, e_out = triple.a_out / triple.a, triple.mass_ratio, triple.e_out
         title = (f"e0 = {e0:.4g}, i0 = {inc_deg:.4g} deg, omega0 = {math.degrees(argp):.4g} deg; m3 / m0 = "
                  f"{mass_ratio:.4g} at a_out / a = {a_out:.4g}, e_out = {e_out:.4g}; {cycles:g} cycles")
-    problem, e_max, period, tau = kozai_problem(inc_deg, e0=e0, a_out=a_out, mass_ratio=mass_ratio, cycles=cycles,
-                                                argp=argp, e_out=e_out)
-    revolutions = cycles * period / (2.0 * math.pi)
+    tau = float(third_body.timescale(1.0, 1.0, mass_ratio, a_out, e_out))
+    period = float(third_body.oscillation_period(e0, math.radians(inc_deg), argp, tau))
+    revolutions = cycles * period / (2.0 * math.pi)  # bounded before any problem is built
     outer = 2.0 * math.pi * math.sqrt(a_out**3 / (1.0 + mass_ratio))
     if not revolutions <= MAX_KOZAI_REVOLUTIONS:
         raise OrbitDomainError(f"{cycles:g} Kozai-Lidov cycles last {revolutions:.4g} revolutions of the inner "
@@ -403,6 +403,8 @@ def kozai_history(inc_deg: float = 65.0, cycles: float = 2.0, backends=None, tri
     if not cycles * period >= outer:
         raise OrbitDomainError(f"{cycles:g} Kozai-Lidov cycles last less than one orbit of the perturber, where "
                                f"the doubly averaged theory does not hold: more cycles or a farther perturber")
+    problem, e_max, _, _ = kozai_problem(inc_deg, e0=e0, a_out=a_out, mass_ratio=mass_ratio, cycles=cycles,
+                                         argp=argp, e_out=e_out)
     times = grid(math.floor(cycles * period / outer), outer, KOZAI_SAMPLES)
     problem = NBodyProblem(problem.gm, problem.positions, problem.velocities, problem.n_active, times)
     runs = _integrate(_picture_backends(backends, forces=False), problem)
