@@ -46,8 +46,8 @@ def oblate_body(primary: Body | str) -> Body:
         raise TypeError(f"{primary!r} is not a catalogue body; give J2 and its reference radius instead")
     if named.j2 is None:
         having = ", ".join(b.name for b in _bodies_with_j2())
-        raise OrbitDomainError(f"{named.name} has no J2 in the catalogue; bodies with J2: {having} (or give j2= "
-                               f"and radius=)")
+        raise OrbitDomainError(f"{named.name} has no J2 in the catalogue; bodies with J2: {having} (in Python, "
+                               f"SecularOrbit.of also takes j2= and radius=)")
     return named
 
 
