@@ -137,7 +137,7 @@ def test_period_and_closest_approach_measurements_recover_the_analytic_values():
         (dict(asks=["positions", "colour"]), "unknown ask 'colour'"),
         (dict(asks=[]), "ask for at least one"),
         (dict(bodies__1__orbit__a="8000 s"), "bodies[1].orbit.a"),
-        (dict(bodies__1__orbit__a="-8000 km"), "need a > 0 for e < 1"),
+        (dict(bodies__1__orbit__a="-8000 km"), "need a > 0 for a bound orbit (e < 1)"),
         (dict(bodies__1__orbit__primary="Moon"), "must name a body listed earlier"),
         (dict(bodies__1__position="1,0,0 km"), "either an orbit table or position/velocity"),
         (dict(bodies__1__mass="1 kg"), "a test particle is massless"),
