@@ -282,6 +282,20 @@ def _solve(start, end, seconds, mu, revolutions, branch, prograde, direction, de
     )
 
 
+def transfer_ends(departure: str, target: str, what: str) -> list[str]:
+    """The ephemeris names of the two ends of a transfer about the Sun (for `what`, "lambert" or "porkchop"): any
+    point of the ephemeris or a body of ephemeris.PROPAGATED, but not the Sun, the barycentre, or one body twice."""
+    names = [ephemeris.point_name(b) for b in (departure, target)]
+    for name in names:
+        if name in ("Sun", "solar system barycentre"):
+            raise OrbitDomainError(f"{what}: {name} cannot be an end of a transfer about the Sun; give planets, "
+                                   f"Pluto, the Moon, {', '.join(ephemeris.PROPAGATED[:-1])} or "
+                                   f"{ephemeris.PROPAGATED[-1]}")
+    if names[0] == names[1]:
+        raise OrbitDomainError(f"{what}: both ends are {names[0]}")
+    return names
+
+
 def _between_bodies(departure, target, tof, primary, revolutions, branch, prograde, normal, depart, arrive, source):
     """The transfer from body `departure` on the date `depart` to body `target` on `arrive`, about the Sun."""
     if not (isinstance(departure, str) and isinstance(target, str)):
@@ -292,13 +306,7 @@ def _between_bodies(departure, target, tof, primary, revolutions, branch, progra
         raise OrbitDomainError(f"a transfer from {departure} to {target} needs the dates depart=... and arrive=...")
     if not (isinstance(primary, str) and primary.strip().lower() == "sun"):
         raise OrbitDomainError("a transfer between bodies is about the Sun (their states are heliocentric)")
-    names = [ephemeris.point_name(b) for b in (departure, target)]
-    for name in names:
-        if name in ("Sun", "solar system barycentre"):
-            raise OrbitDomainError(f"lambert: {name} cannot be an end of a transfer about the Sun; give planets, "
-                                   f"Pluto, the Moon, Ceres, Vesta, Pallas, Hygiea or Eris")
-    if names[0] == names[1]:
-        raise OrbitDomainError(f"lambert: both ends are {names[0]}")
+    names = transfer_ends(departure, target, "lambert")
     start = ephemeris.state(names[0], depart, "Sun", source=source)
     end = ephemeris.state(names[1], arrive, "Sun", source=source)
     if not (start.epoch.isscalar and end.epoch.isscalar):

@@ -46,7 +46,7 @@ from astropy.utils.masked import Masked
 
 from orbits import display, ephemeris, inputs, units
 from orbits.core.errors import OrbitDomainError
-from orbits.manoeuvres.lambert import ECLIPTIC_POLE, SUN_GM, lambert
+from orbits.manoeuvres.lambert import ECLIPTIC_POLE, SUN_GM, lambert, transfer_ends
 from orbits.tables import quantity_table
 
 #: the largest grid computed (cells): 4 million cells take about 0.5 GB of float64 arrays
@@ -226,13 +226,7 @@ class Porkchop(display.Displayed):
         Raises OrbitDomainError when no arrival date follows a launch date, a date is outside the ephemeris, the
         grid exceeds MAX_CELLS, or a body is not a planet-like point (UnknownNameError for an unknown name).
         """
-        names = [ephemeris.point_name(b) for b in (departure, target)]
-        for name in names:
-            if name in ("Sun", "solar system barycentre"):
-                raise OrbitDomainError(f"porkchop: {name} cannot be a departure or target body (transfers are "
-                                       f"about the Sun); give planets, Pluto or the Moon")
-        if names[0] == names[1]:
-            raise OrbitDomainError(f"porkchop: the departure and target bodies are both {names[0]}")
+        names = transfer_ends(departure, target, "porkchop")
         step_days = float(inputs.positive(step, units.S, "date step")) / 86400.0
         launch_window, arrival_window = _window(launch, "launch"), _window(arrival, "arrival")
         if arrival_window[1] <= launch_window[0]:
