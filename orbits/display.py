@@ -6,7 +6,8 @@ A quantity is shown in the natural unit for its kind and size, the largest finit
     length    m below 1 km, km below 1e7 km (and for 0), AU below 1e5 AU, pc below 1e5 pc, Mpc beyond
     time      s below 2 min, min below 2 h, h below 2 d, d below 1000 d, yr below 1e6 yr, Myr below 1e9 yr, Gyr
               beyond
-    angle     deg; an angular rate in deg per the natural time unit of 1 rad / rate (deg / d for a planet)
+    angle     deg; an angular rate in deg per the natural time unit of 1 rad / rate (deg / d for a planet), an
+              angular frequency (a name with "frequency") in rad / s
     speed     km/s from 1 km/s, m/s below (a projectile, a radial-velocity curve); GM in km3 / s2; specific
               energy in km2 / s2; h and dA/dt in km2 / s
     rate      km / s / Mpc for a Hubble parameter; otherwise 1 / (the natural time unit of 1 / rate)
@@ -78,6 +79,8 @@ def natural_unit(q: u.Quantity, name: str = "") -> u.UnitBase:
     if unit.is_equivalent(u.rad):
         return u.deg
     if unit.is_equivalent(u.rad / u.s):
+        if "frequency" in name:  # an oscillator's angular frequency omega, which physics writes in rad / s
+            return u.rad / u.s
         rate = _size(q, u.rad / u.s)
         return u.deg / _rung(1.0 / rate if rate > 0 else 0.0, _TIMES)
     if unit.is_equivalent(1 / u.s):

@@ -86,3 +86,8 @@ def test_right_ascension_and_declination_in_hours_and_degrees_minutes_seconds():
     assert display._sexagesimal(359.9999999999, True, 2) == "00h00m00.00s"  # rounds round to 0h, not 24h
     data = json.loads(run("where Mars --epoch 2026-11-25 --format json"))
     assert data["right_ascension"]["unit"] == "rad"  # JSON keeps the exact radians
+
+
+def test_an_angular_frequency_reads_in_rad_per_second():
+    """The pendulum's small-angle omega0 = sqrt(g / L) = 3.131557 rad/s at 1 m read 179.425 deg / s."""
+    assert " small_angle_frequency   3.131557   rad / s" in run('pendulum --length "1 m" --amplitude "170 deg"')
