@@ -33,8 +33,6 @@ from orbits.orbit import Orbit
 from orbits.tables import quantity_table
 
 DAY = 86_400.0
-#: the mean Sun's motion (rad/s), 360 deg per tropical year of 365.2421897 d: what a sun-synchronous node follows
-SUN_RATE = 2.0 * math.pi / (365.2421897 * DAY)
 CRITICAL_INCLINATIONS = tuple(x * u.rad for x in oblateness.CRITICAL_INCLINATIONS)
 KOZAI_CRITICAL_INCLINATION = third_body.CRITICAL_INCLINATION * u.rad
 
@@ -248,7 +246,7 @@ def sun_synchronous(primary: Body | str = "Earth", *, a: u.Quantity | None = Non
     """The sun-synchronous orbit: given a size (a or altitude above the equator) and e, its inclination; given
     inc (and e), its semi-major axis. The node follows `rate` (default: the mean Sun, 360 deg per tropical year)."""
     named = oblate_body(primary)
-    node = SUN_RATE if rate is None else units.to_si(rate, units.RAD_PER_S, "node rate")
+    node = oblateness.SUN_RATE if rate is None else units.to_si(rate, units.RAD_PER_S, "node rate")
     if inc is not None:
         if a is not None or altitude is not None:
             raise TypeError("give a size (a= or altitude=) or inc=, not both")

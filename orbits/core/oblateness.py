@@ -28,6 +28,9 @@ from numpy.typing import ArrayLike
 
 from orbits.core.errors import ConvergenceError, OrbitDomainError
 
+#: the mean Sun's motion (rad/s), 360 deg per tropical year of 365.2421897 d (Vallado, Fundamentals of Astrodynamics
+#: and Applications, 4th ed., 2013): what a sun-synchronous node follows
+SUN_RATE = 2.0 * np.pi / (365.2421897 * 86_400.0)
 #: the two inclinations (rad) where the periapsis stands still under J2: arctan(2) and pi - arctan(2)
 CRITICAL_INCLINATIONS = (float(np.arctan(2.0)), float(np.pi - np.arctan(2.0)))
 

@@ -27,9 +27,6 @@ from orbits.validate.plan import Measurement
 SAMPLES = 16
 DAY = 86_400.0
 DEG_PER_DAY = 180.0 / math.pi * DAY
-#: the mean Sun's motion (rad/s): 360 deg per tropical year of 365.2421897 d (Vallado, Fundamentals of
-#: Astrodynamics and Applications, 4th ed., 2013)
-SUN_RATE = 2.0 * math.pi / (365.2421897 * DAY)
 ARCSEC_PER_CENTURY = 180.0 / math.pi * 3600.0 * 36525.0 * DAY
 
 
@@ -185,7 +182,7 @@ def _sun_synchronous(revolutions=30):
     start = time.perf_counter()
     a_m, e, inc, argp = orbit_elements(scene_orbit("j2_sun_synchronous"))
     problem = oblate_problem(a_m, e, inc, argp, revolutions)
-    sun = SUN_RATE / math.sqrt(earth.gm / a_m**3)
+    sun = oblateness.SUN_RATE / math.sqrt(earth.gm / a_m**3)
     return _scene("j2_sun_synchronous", f"A sun-synchronous test particle, 700 km circular at "
                   f"{math.degrees(inc):.2f} deg, about the Earth's J2 and J4 for {revolutions} revolutions: its "
                   f"node follows the mean Sun", problem, time.perf_counter() - start,
