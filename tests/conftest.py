@@ -34,3 +34,19 @@ def _close_figures():
 
     if "matplotlib.pyplot" in sys.modules:
         sys.modules["matplotlib.pyplot"].close("all")
+
+
+@pytest.fixture(scope="session")
+def em():
+    """The Earth-Moon restricted three-body problem, shared by the periodic-orbit tests."""
+    from orbits import RestrictedThreeBody
+
+    return RestrictedThreeBody.from_primaries("Earth", "Moon")
+
+
+@pytest.fixture(scope="session")
+def se():
+    """The Sun-Earth restricted three-body problem, shared by the periodic-orbit tests."""
+    from orbits import RestrictedThreeBody
+
+    return RestrictedThreeBody.from_primaries("Sun", "Earth")

@@ -1,5 +1,6 @@
 """`orbits periodic`: a periodic orbit of the restricted three-body problem, or a table of its family."""
 
+import contextlib
 from enum import StrEnum
 from typing import TYPE_CHECKING, Annotated
 
@@ -155,10 +156,8 @@ def _jacobi(text: str, option: str):
 
     from orbits import OrbitDomainError
 
-    try:
+    with contextlib.suppress(ValueError):  # a plain number, in units of (n r)**2
         return float(text) * u.one
-    except ValueError:
-        pass
     try:
         value = u.Quantity(text)
     except (TypeError, ValueError):

@@ -7,19 +7,9 @@ import astropy.units as u
 import numpy as np
 import pytest
 
-from orbits import OrbitDomainError, PeriodicFamily, PeriodicOrbit, RestrictedThreeBody
+from orbits import OrbitDomainError, PeriodicFamily, PeriodicOrbit
 from orbits.core import cr3bp, lagrange
 from orbits.periodic import QUANTITY_NAMES, resonance_period, synodic_period
-
-
-@pytest.fixture(scope="module")
-def em():
-    return RestrictedThreeBody.from_primaries("Earth", "Moon")
-
-
-@pytest.fixture(scope="module")
-def se():
-    return RestrictedThreeBody.from_primaries("Sun", "Earth")
 
 
 @pytest.fixture(scope="module")

@@ -6,7 +6,7 @@ import astropy.units as u
 import numpy as np
 import pytest
 
-from orbits import PeriodicOrbit, RestrictedThreeBody
+from orbits import PeriodicOrbit
 from orbits.validate import models, run
 from orbits.validate import periodic as scenes
 
@@ -16,16 +16,6 @@ SCENE_NAMES = ["periodic_dro", "periodic_halo", "periodic_lyapunov", "periodic_n
 def test_the_built_in_scenes_are_registered_and_summarised():
     assert set(SCENE_NAMES) <= set(models.builtin_names())
     assert models.summary("periodic_nrho").startswith("The Earth-Moon L2 southern 9:2 synodic-resonant")
-
-
-@pytest.fixture(scope="module")
-def em():
-    return RestrictedThreeBody.from_primaries("Earth", "Moon")
-
-
-@pytest.fixture(scope="module")
-def se():
-    return RestrictedThreeBody.from_primaries("Sun", "Earth")
 
 
 ORBITS = {
