@@ -106,27 +106,34 @@ def _exact_product(a, b):
 def _elliptic_setup(rx, ry, rz, vx, vy, vz, mu, dt):
     """propagate._elliptic_setup for one state: (A, ec, es, m, m_lo, n, back, eligible), in double-double
     arithmetic as there (quotients by reciprocals: _dd_over)."""
+    a_hi, a_lo, alpha_hi, n2_hi, n_hi, n_lo, m_hi, m_lo, es = _conic_terms(rx, ry, rz, vx, vy, vz, mu, dt, True)
+    eligible = alpha_hi > 0.0 and n2_hi >= SMALLEST_MEAN_MOTION_SQUARED and abs(m_hi) <= MAX_MEAN_ANOMALY
+    hi, lo = _reduce(m_hi if eligible else 0.0, m_lo if eligible else 0.0)
+    back = -1.0 if hi < 0.0 else 1.0
+    return a_hi + a_lo, (1.0 - a_hi) - a_lo, back * es, back * hi, back * lo, n_hi + n_lo, back, eligible
+
+
+@jit(inline=True)
+def _conic_terms(rx, ry, rz, vx, vy, vz, mu, dt, bound):
+    """propagate._conic_terms for one state: (A hi, lo, k hi, n**2 hi, n hi, lo, M hi, lo, s)."""
     inverse_mu = 1.0 / mu
     r2_hi, r2_lo = _dd_dot(rx, ry, rz, rx, ry, rz)
     r_hi, r_lo, inverse_r = _dd_root(r2_hi, r2_lo)
     v2_hi, v2_lo = _dd_dot(vx, vy, vz, vx, vy, vz)
     w_hi, w_lo = _dd_mul(r_hi, r_lo, v2_hi, v2_lo)
     w_hi, w_lo = _dd_over(w_hi, w_lo, mu, 0.0, inverse_mu)
-    a_hi, a_lo = _dd_add(2.0, 0.0, -w_hi, -w_lo)
-    alpha_hi, alpha_lo = _dd_over(a_hi, a_lo, r_hi, r_lo, inverse_r)
-    square_hi, square_lo = _dd_mul(alpha_hi, alpha_lo, alpha_hi, alpha_lo)
-    cube_hi, cube_lo = _dd_mul(square_hi, square_lo, alpha_hi, alpha_lo)
+    a_hi, a_lo = _dd_add(2.0, 0.0, -w_hi, -w_lo) if bound else _dd_add(w_hi, w_lo, -2.0, 0.0)
+    k_hi, k_lo = _dd_over(a_hi, a_lo, r_hi, r_lo, inverse_r)
+    square_hi, square_lo = _dd_mul(k_hi, k_lo, k_hi, k_lo)
+    cube_hi, cube_lo = _dd_mul(square_hi, square_lo, k_hi, k_lo)
     n2_hi, n2_lo = _dd_mul(cube_hi, cube_lo, mu, 0.0)
     n_hi, n_lo, _ = _dd_root(n2_hi, n2_lo)
     m_hi, m_lo = _dd_mul(n_hi, n_lo, dt, 0.0)
-    eligible = alpha_hi > 0.0 and n2_hi >= SMALLEST_MEAN_MOTION_SQUARED and abs(m_hi) <= MAX_MEAN_ANOMALY
-    hi, lo = _reduce(m_hi if eligible else 0.0, m_lo if eligible else 0.0)
-    back = -1.0 if hi < 0.0 else 1.0
     rv_hi, rv_lo = _dd_dot(rx, ry, rz, vx, vy, vz)
-    q_hi, q_lo = _dd_over(alpha_hi, alpha_lo, mu, 0.0, inverse_mu)
+    q_hi, q_lo = _dd_over(k_hi, k_lo, mu, 0.0, inverse_mu)
     q_hi, q_lo, _ = _dd_root(q_hi, q_lo)
     es_hi, es_lo = _dd_mul(rv_hi, rv_lo, q_hi, q_lo)
-    return a_hi + a_lo, (1.0 - a_hi) - a_lo, back * (es_hi + es_lo), back * hi, back * lo, n_hi + n_lo, back, eligible
+    return a_hi, a_lo, k_hi, n2_hi, n_hi, n_lo, m_hi, m_lo, es_hi + es_lo
 
 
 @jit(inline=True)
@@ -287,27 +294,11 @@ def _elliptic_velocities(n, scratch):
 def _hyperbolic_setup(rx, ry, rz, vx, vy, vz, mu, dt):
     """propagate._hyperbolic_setup for one state: (A, ec, es, m, m_lo, n, back, eligible), in double-double
     arithmetic as there (quotients by reciprocals: _dd_over)."""
-    inverse_mu = 1.0 / mu
-    r2_hi, r2_lo = _dd_dot(rx, ry, rz, rx, ry, rz)
-    r_hi, r_lo, inverse_r = _dd_root(r2_hi, r2_lo)
-    v2_hi, v2_lo = _dd_dot(vx, vy, vz, vx, vy, vz)
-    w_hi, w_lo = _dd_mul(r_hi, r_lo, v2_hi, v2_lo)
-    w_hi, w_lo = _dd_over(w_hi, w_lo, mu, 0.0, inverse_mu)
-    a_hi, a_lo = _dd_add(w_hi, w_lo, -2.0, 0.0)
-    beta_hi, beta_lo = _dd_over(a_hi, a_lo, r_hi, r_lo, inverse_r)
-    square_hi, square_lo = _dd_mul(beta_hi, beta_lo, beta_hi, beta_lo)
-    cube_hi, cube_lo = _dd_mul(square_hi, square_lo, beta_hi, beta_lo)
-    n2_hi, n2_lo = _dd_mul(cube_hi, cube_lo, mu, 0.0)
-    n_hi, n_lo, _ = _dd_root(n2_hi, n2_lo)
-    m_hi, m_lo = _dd_mul(n_hi, n_lo, dt, 0.0)
+    a_hi, a_lo, beta_hi, n2_hi, n_hi, n_lo, m_hi, m_lo, es = _conic_terms(rx, ry, rz, vx, vy, vz, mu, dt, False)
     eligible = beta_hi > 0.0 and n2_hi >= SMALLEST_MEAN_MOTION_SQUARED and abs(m_hi) < np.inf
     back = -1.0 if m_hi < 0.0 else 1.0
-    rv_hi, rv_lo = _dd_dot(rx, ry, rz, vx, vy, vz)
-    q_hi, q_lo = _dd_over(beta_hi, beta_lo, mu, 0.0, inverse_mu)
-    q_hi, q_lo, _ = _dd_root(q_hi, q_lo)
-    es_hi, es_lo = _dd_mul(rv_hi, rv_lo, q_hi, q_lo)
     ec = (1.0 + a_hi) + a_lo
-    return a_hi + a_lo, ec, back * (es_hi + es_lo), back * m_hi, back * m_lo, n_hi + n_lo, back, eligible
+    return a_hi + a_lo, ec, back * es, back * m_hi, back * m_lo, n_hi + n_lo, back, eligible
 
 
 @jit(inline=True)

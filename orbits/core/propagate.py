@@ -403,21 +403,29 @@ def _elliptic_setup(r0, v0, mu, dt):
     magnifies the rounding of es several times. eligible: a bound orbit whose n**2 is clear of the subnormal
     range and whose n dt is reduced exactly.
     """
-    zero = np.zeros_like(dt)
     with np.errstate(all="ignore"):  # open orbits: NaN mean motion, not eligible
-        r = _dd.sqrt(_dd.dot(r0, r0))
-        w = _dd.div(_dd.mul(r, _dd.dot(v0, v0)), (mu, zero))  # |r0| |v0|**2 / mu
-        A = _dd.add((2.0 + zero, zero), (-w[0], -w[1]))
-        alpha = _dd.div(A, r)  # 1 / a
-        n_squared = _dd.mul(_dd.mul(_dd.mul(alpha, alpha), alpha), (mu, zero))
-        n = _dd.sqrt(n_squared)
-        M = _dd.mul(n, (dt, zero))
+        A, alpha, n_squared, n, M, es = _conic_terms(r0, v0, mu, dt, bound=True)
         eligible = (alpha[0] > 0) & (n_squared[0] >= SMALLEST_MEAN_MOTION_SQUARED) & (np.abs(M[0]) <= MAX_MEAN_ANOMALY)
         hi, lo = reduce_two_pi(np.where(eligible, M[0], 0.0), np.where(eligible, M[1], 0.0))
         back = np.where(hi < 0, -1.0, 1.0)
-        es = _dd.mul(_dd.dot(r0, v0), _dd.sqrt(_dd.div(alpha, (mu, zero))))
-        es = back * (es[0] + es[1])
-    return A[0] + A[1], (1.0 - A[0]) - A[1], es, back * hi, back * lo, n[0] + n[1], back, eligible
+    return A[0] + A[1], (1.0 - A[0]) - A[1], back * es, back * hi, back * lo, n[0] + n[1], back, eligible
+
+
+def _conic_terms(r0, v0, mu, dt, bound):
+    """What the elliptic and hyperbolic passes both set up, in double-double arithmetic: (A, k, n**2, n, M, s) with
+    A = |r0| / |a| (2 - |r0| |v0|**2 / mu for a bound orbit, its negative for an open one), k = A / |r0| = 1 / |a|,
+    n**2 = mu k**3, M = n dt (double-double pairs) and s = (r0 . v0) sqrt(k / mu) (float64). NaN where the orbit
+    is of the other kind; call under np.errstate(all="ignore")."""
+    zero = np.zeros_like(dt)
+    r = _dd.sqrt(_dd.dot(r0, r0))
+    w = _dd.div(_dd.mul(r, _dd.dot(v0, v0)), (mu, zero))  # |r0| |v0|**2 / mu
+    A = _dd.add((2.0 + zero, zero), (-w[0], -w[1])) if bound else _dd.add(w, (-2.0 + zero, zero))
+    k = _dd.div(A, r)
+    n_squared = _dd.mul(_dd.mul(_dd.mul(k, k), k), (mu, zero))
+    n = _dd.sqrt(n_squared)
+    M = _dd.mul(n, (dt, zero))
+    s = _dd.mul(_dd.dot(r0, v0), _dd.sqrt(_dd.div(k, (mu, zero))))
+    return A, k, n_squared, n, M, s[0] + s[1]
 
 
 def _trig_terms(x):
@@ -542,20 +550,12 @@ def _hyperbolic_setup(r0, v0, mu, dt):
     A, beta, n and n dt are formed in double-double arithmetic (A cancels near e = 1). eligible: an open orbit
     whose n**2 is clear of the subnormal range (not an exact parabola) and whose n dt is finite.
     """
-    zero = np.zeros_like(dt)
     with np.errstate(all="ignore"):  # bound orbits: NaN mean motion, not eligible
-        r = _dd.sqrt(_dd.dot(r0, r0))
-        w = _dd.div(_dd.mul(r, _dd.dot(v0, v0)), (mu, zero))  # |r0| |v0|**2 / mu
-        A = _dd.add(w, (-2.0 + zero, zero))
-        beta = _dd.div(A, r)
-        n_squared = _dd.mul(_dd.mul(_dd.mul(beta, beta), beta), (mu, zero))
-        n = _dd.sqrt(n_squared)
-        M = _dd.mul(n, (dt, zero))
+        A, beta, n_squared, n, M, es = _conic_terms(r0, v0, mu, dt, bound=False)
         eligible = (beta[0] > 0) & (n_squared[0] >= SMALLEST_MEAN_MOTION_SQUARED) & np.isfinite(M[0])
         back = np.where(M[0] < 0, -1.0, 1.0)
-        es = _dd.mul(_dd.dot(r0, v0), _dd.sqrt(_dd.div(beta, (mu, zero))))
         ec = (1.0 + A[0]) + A[1]
-    return A[0] + A[1], ec, back * (es[0] + es[1]), back * M[0], back * M[1], n[0] + n[1], back, eligible
+    return A[0] + A[1], ec, back * es, back * M[0], back * M[1], n[0] + n[1], back, eligible
 
 
 def _hyperbolic_exponentials(r0, v0, mu, A, ec, es):
