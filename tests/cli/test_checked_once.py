@@ -40,26 +40,31 @@ KEYS = {
 NOT_RULES = {"<module>", "broadcast", "broadcast_shape", "first_where", "_spaced"}
 
 
-def _is_rule(code) -> bool:
-    module = code.co_filename.replace("\\", "/")
-    if code.co_name in NOT_RULES or code.co_name.startswith("<"):
+def _module(frame) -> str:
+    """The dotted name of the module a frame runs in: the module itself, never the folder it was loaded from (a
+    checkout named `orbits` with its virtual environment inside puts every file under some `/orbits/`)."""
+    return frame.f_globals.get("__name__", "")
+
+
+def _is_rule(frame) -> bool:
+    module, name = _module(frame), frame.f_code.co_name
+    if name in NOT_RULES or name.startswith("<"):
         return False
-    if module.endswith("orbits/core/checks.py"):
+    if module == "orbits.core.checks":
         return True
-    if module.endswith("orbits/inputs.py"):
-        return not code.co_name.startswith(("parse_", "_")) and code.co_name not in ("names", "find_body",
-                                                                                    "named_body")
-    return "/orbits/core/" in module and code.co_name.startswith(("check_", "require_"))
+    if module == "orbits.inputs":
+        return not name.startswith(("parse_", "_")) and name not in ("names", "find_body", "named_body")
+    return module.startswith("orbits.core.") and name.startswith(("check_", "require_"))
 
 
-def _is_text_parser(code) -> bool:
-    return code.co_filename.replace("\\", "/").endswith("orbits/inputs.py") and code.co_name.startswith("parse_")
+def _is_text_parser(frame) -> bool:
+    return _module(frame) == "orbits.inputs" and frame.f_code.co_name.startswith("parse_")
 
 
 def _importing(frame) -> bool:
     """Whether the call comes from a module of ours being imported (constants computed once, not an input)."""
     while frame is not None:
-        if frame.f_code.co_name == "<module>" and "/orbits/" in frame.f_code.co_filename.replace("\\", "/"):
+        if frame.f_code.co_name == "<module>" and _module(frame).partition(".")[0] in ("orbits", "orbits_cli"):
             return True
         frame = frame.f_back
     return False
@@ -72,10 +77,10 @@ def checks_during(call) -> Counter:
 
     def profile(frame, event, _arg):
         code = frame.f_code
-        if not (_is_rule(code) or _is_text_parser(code)):
+        if not (_is_rule(frame) or _is_text_parser(frame)):
             return
         if event == "call":
-            if depth[0] == 0 and _is_rule(code) and not _importing(frame.f_back):
+            if depth[0] == 0 and _is_rule(frame) and not _importing(frame.f_back):
                 named = frame.f_locals.get("name")
                 keys = (KEYS.get(named, named),) if isinstance(named, str) else IMPLIED.get(code.co_name,
                                                                                            (code.co_name,))
@@ -137,11 +142,11 @@ def ephemeris_work_during(call) -> Counter:
         if event != "call":
             return
         code = frame.f_code
-        path = code.co_filename.replace("\\", "/")
-        if code.co_name == "_set_scale" and "astropy/time" in path:
+        module = _module(frame)
+        if code.co_name == "_set_scale" and module.startswith("astropy.time"):
             if frame.f_locals.get("scale") == "tdb" and frame.f_locals["self"].scale != "tdb":
                 counts["to TDB"] += 1
-        elif path.endswith("orbits/ephemeris.py"):
+        elif module == "orbits.ephemeris":
             if code.co_name == "_require_de421_span":
                 counts["span check"] += 1
             elif code.co_name == "_de421_from_ssb":
