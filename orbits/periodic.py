@@ -573,8 +573,8 @@ class PeriodicFamily(display.Displayed):
            members: int = 20, spacing: str = "arclength", **until) -> "PeriodicFamily":
         """`members` (2 .. MAX_MEMBERS) orbits of `family` ("lyapunov", "halo", "vertical", "dro" or "nrho") about
         `point` (the family's usual one by default), spread evenly in `spacing`: "arclength" along the family
-        (pseudo-arclength continuation), or "period" or "jacobi" (natural-parameter continuation in that quantity,
-        which stops at a turning point). The last member is the one with the given target (one of TARGETS, as
+        (pseudo-arclength continuation), or "period" or "jacobi" (each member located between the followed members
+        that bracket its value; refused where the quantity turns back before the last member). The last member is the one with the given target (one of TARGETS, as
         PeriodicOrbit's constructors take them), or else the last before the family reaches a primary's surface or
         MAX_WALK continuation steps."""
         if not (isinstance(members, int) and not isinstance(members, bool) and 2 <= members <= MAX_MEMBERS):
@@ -643,32 +643,18 @@ def _spaced(finder, followed, last, count, spacing) -> list:
     """`count` crossings from the followed family's first member to `last`, evenly spaced in `spacing`."""
     if spacing == "arclength":
         return families.resample(finder.hmap, followed, last, count)
-    first = followed.members[0]
     mu = finder.binary.mu
-    if spacing == "period":
-        def measure(u):
-            return 2.0 * u[-1]
 
-        def hold(value):
-            return shooting.fixed_component(-1, 0.5 * value)
-    else:
-        def measure(u):
-            return float(cr3bp.jacobi_constant(finder.flow.barycentric(finder.hmap.state(u)), mu))
+    def measure(member):
+        if spacing == "period":
+            return member.period
+        return float(cr3bp.jacobi_constant(finder.flow.barycentric(member.state), mu))
 
-        def hold(value):
-            return shooting.fixed_jacobi(finder.hmap, value)
-    along = np.array([measure(m.u) for m in [*followed.members, last]])
-    steps = np.diff(along)
-    if np.any(steps * steps[0] < 0.0):
-        turn = int(np.flatnonzero(steps * steps[0] < 0.0)[0])
-        shown = display.number(along[turn]) if spacing == "jacobi" else display.summary(
-            along[turn] / finder.binary.n * u.s)
+    try:
+        return families.respace(finder.hmap, followed, last, count, measure)
+    except families.TurningPoint as turn:
+        shown = display.number(turn.value) if spacing == "jacobi" else display.summary(
+            turn.value / finder.binary.n * u.s)
         raise OrbitDomainError(f"the {finder.describe()} family cannot be spaced evenly in {spacing}: it turns back "
-                               f"in {spacing} near {shown} on its way to the last member (space it in arclength)")
-    values = np.linspace(along[0], along[-1], count)[1:]
-    neighbour = followed.members[1] if len(followed.members) > 1 else None
-    walked = continuation.natural_parameter(finder.hmap, first, values, measure, hold, finder.stop, neighbour)
-    if walked.stop is not None:
-        raise OrbitDomainError(f"the {finder.describe()} family cannot be spaced evenly in {spacing}: "
-                               f"{walked.stop}")
-    return walked.members
+                               f"in {spacing} near {shown} on its way to the last member (space it in arclength)"
+                               ) from None

@@ -4,13 +4,11 @@ A family is a curve of solutions u = (kept components, tau) of the half-period m
 measured in the scaled metric v = weights u (the state components in units of the flow's length scale), so that
 steps mean the same for a Sun-Earth halo (1e-3 r) as for an Earth-Moon one (0.1 r).
 
-Natural-parameter continuation steps one component of u through given values, predicting each member by linear
-extrapolation from the last two and correcting with that component held; it cannot pass a turning point of that
-component, and says so. Pseudo-arclength continuation follows the curve itself: from a member u_k with unit tangent
+Pseudo-arclength continuation follows the curve itself: from a member u_k with unit tangent
 t_k (the null vector of dF/du, oriented as the previous one), the prediction u_k + ds t_k is corrected with the
 condition t_k . (u - u_k - ds t_k) = 0. A step whose correction fails, moves the prediction by more than JUMP ds
 (a jump to another family) or turns the tangent by more than 60 degrees is halved, down to MIN_STEP; easy steps
-(at most EASY_ITERATIONS Newton iterations) grow by half, up to the largest step given. The continuation also
+(settled within EASY_ITERATIONS Newton iterations: orbits.core.shooting.Crossing) grow by half, up to the largest step given. The continuation also
 stops where the family closes on itself (a step passes its first member, or that member's mirror image in the
 binary's plane z = 0, which is a symmetry of the problem: a vertical family returns to its start that way).
 
@@ -35,8 +33,6 @@ MIN_STEP = 1e-5
 EASY_ITERATIONS = 4
 #: a correction that moves the prediction by more than this many steps has left the family: the step is retried
 JUMP = 0.5
-#: halvings of a natural-parameter step before a turning point is declared
-SUBSTEPS = 6
 #: iterations of the root search for a member with a given monitored value, and its relative tolerance
 SEARCH_ITERATIONS = 60
 SEARCH_TOLERANCE = 1e-13
@@ -142,7 +138,7 @@ def pseudo_arclength(hmap: shooting.HalfPeriodMap, first: shooting.Crossing, dir
         members.append(member)
         tangents.append(new_t)
         t = new_t
-        if member.iterations <= EASY_ITERATIONS:
+        if member.settled <= EASY_ITERATIONS:
             ds = min(1.5 * ds, max_step)
         if until is not None and until(members[-2], member):
             return Branch(members, tangents, None)
@@ -166,57 +162,6 @@ def _returns(hmap, first, previous, member) -> bool:
 def _stuck(member):
     return (f"the corrector cannot pass the member with half period {member.u[-1]:.6g} (a sharp turn or the end "
             f"of the family)")
-
-
-def natural_parameter(hmap: shooting.HalfPeriodMap, first: shooting.Crossing, values,
-                      measure: Callable[[np.ndarray], float], hold: Callable[[float], Callable],
-                      stop: Callable[[shooting.Crossing], str | None] | None = None,
-                      neighbour: shooting.Crossing | None = None) -> Branch:
-    """Members with the parameter measure(u) stepped through `values` from `first`, each predicted by extrapolation
-    from the last two (the first from `first` and a `neighbour` on the family, else from the family's tangent at
-    `first`) and corrected with hold(value), the condition keeping
-    the parameter at value (orbits.core.shooting.fixed_component, fixed_jacobi); a value the corrector cannot reach
-    is approached in halved steps (at most SUBSTEPS halvings). Stops where even those fail (a turning point of the
-    parameter, which this continuation cannot pass) or where stop(member) gives a reason."""
-    members, path = [first], [first] if neighbour is None else [neighbour, first]
-    eps = 1e-7
-    t = tangent(first.jacobian)
-    rate = (measure(first.u + eps * t) - measure(first.u - eps * t)) / (2.0 * eps)
-    for value in values:
-        pending = [value]
-        while pending:
-            goal = pending[-1]
-            member = _natural_step(hmap, path, goal, measure, hold, t, rate)
-            if member is None:
-                if len(pending) > SUBSTEPS:
-                    return Branch(members, [], f"no member with the parameter at {goal:.9g} near the last one: the "
-                                               f"family turns back in it (a turning point, which pseudo-arclength "
-                                               f"continuation passes)")
-                pending.append(0.5 * (measure(path[-1].u) + goal))
-                continue
-            reason = stop(member) if stop is not None else None
-            if reason is not None:
-                return Branch(members, [], reason)
-            path.append(member)
-            pending.pop()
-        members.append(path[-1])
-    return Branch(members, [], None)
-
-
-def _natural_step(hmap, members, value, measure, hold, t, rate):
-    """The member with the parameter at value predicted from the last members (None if the corrector fails)."""
-    last = members[-1]
-    if len(members) >= 2:
-        span = measure(last.u) - measure(members[-2].u)
-        slope = (last.u - members[-2].u) / span if span != 0.0 else None
-    else:
-        slope = t / rate if rate != 0.0 else None
-    if slope is None or not np.all(np.isfinite(slope)):
-        return None
-    try:
-        return hmap.correct(last.u + (value - measure(last.u)) * slope, hold(value))
-    except ConvergenceError:
-        return None
 
 
 def locate(hmap: shooting.HalfPeriodMap, member: shooting.Crossing, direction, span: float,

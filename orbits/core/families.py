@@ -283,6 +283,63 @@ def resample(hmap: shooting.HalfPeriodMap, branch: continuation.Branch, last: sh
     return chosen
 
 
+def respace(hmap: shooting.HalfPeriodMap, branch: continuation.Branch, last: shooting.Crossing, count: int,
+            measure: Callable[[shooting.Crossing], float]) -> list:
+    """`count` >= 2 members from the branch's first member to `last` evenly spaced in measure(member) (the period or
+    the Jacobi constant), each located on the family by regula falsi between the two followed members whose measures
+    bracket its value (continuation.locate), so that a member's value decides nothing but its own bracket: the same
+    members on every CPU, to the corrector's tolerance. TurningPoint if the measure turns back between the first
+    member and `last` (a step against the first one's sense by more than FLAT of the measure)."""
+    members = list(branch.members)
+    if members[-1] is not last:
+        members.append(last)
+    tangents = list(branch.tangents) + [None]
+    along = np.array([measure(m) for m in members])
+    turn = turning_point(along)
+    if turn is not None:
+        raise TurningPoint(float(along[turn]))
+    values = np.linspace(along[0], along[-1], count)
+    chosen = [members[0]]
+    for value in values[1:-1]:
+        k = int(np.flatnonzero((along[:-1] - value) * (along[1:] - value) <= 0.0)[0])
+        if along[k] == value or along[k + 1] == value:
+            chosen.append(members[k] if along[k] == value else members[k + 1])
+            continue
+        t = tangents[k]
+        span = float(t @ hmap.scaled(members[k + 1].u - members[k].u))
+        chosen.append(continuation.locate(hmap, members[k], t, span, measure, float(value),
+                                          (along[k], along[k + 1])))
+    return chosen + [members[-1]]
+
+
+#: a step of a followed family's measure against the sense of its first step counts as turning back only beyond
+#: this fraction of the measure: corrected members carry their measures to about 1e-13 of themselves (the residual
+#: TOLERANCE times the corrector's conditioning, at most 1e3 along the Earth-Moon and Sun-Earth families), and
+#: pseudo-arclength steps of at least continuation.MIN_STEP move a monotone measure by far more
+FLAT = 1e-9
+
+
+class TurningPoint(OrbitDomainError):
+    """The measure of a followed family turns back (at `value`) before the last member asked for."""
+
+    def __init__(self, value: float):
+        super().__init__(f"the family turns back in it near {value:.9g}")
+        self.value = value
+
+
+def turning_point(along) -> int | None:
+    """The index of the first member where the sequence `along` turns back against the sense of its first step by
+    more than FLAT of its size (None if it does not)."""
+    steps = np.diff(np.asarray(along, dtype=float))
+    noise = FLAT * np.maximum(np.abs(along[:-1]), np.abs(along[1:]))
+    real = np.flatnonzero(np.abs(steps) > noise)
+    if real.size == 0:
+        return None
+    sense = np.sign(steps[real[0]])
+    against = real[np.sign(steps[real]) != sense]
+    return int(against[0]) if against.size else None
+
+
 def monodromy(hmap: shooting.HalfPeriodMap, member: shooting.Crossing) -> np.ndarray:
     """The member's monodromy matrix from its half-period transition matrix."""
     return shooting.symmetric_monodromy(member.transition, hmap.symmetry.signs)

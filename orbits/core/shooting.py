@@ -9,10 +9,11 @@ reverses of phi(x0(u), tau), which must vanish. With Phi = Phi(tau) and f the ve
     dF/du = [Phi[reversed, kept], f[reversed]],
 
 one more column than rows: the solutions form a one-parameter family, and one more scalar equation g(u) = 0 (a
-fixed component, a fixed Jacobi constant, a period, or the pseudo-arclength condition of orbits.core.continuation)
+fixed component, a period, or the pseudo-arclength condition of orbits.core.continuation)
 picks a member. Newton's method on the square system converges quadratically; it stops when a step no longer
 shrinks the residual (or is below SMALL_STEP), and succeeds when max |F| is below TOLERANCE, both in units of the
-flow's length scale. The monodromy matrix follows from the half
+flow's length scale (or below NOISE_MARGIN times the integration's own noise, where the orbit's sensitivity puts
+that higher). The monodromy matrix follows from the half
 period without integrating the other half: M = R Phi^-1 R Phi (Phi^-1 by the symplectic identity), because
 R phi_t(x) = phi_-t(R x).
 
@@ -36,6 +37,12 @@ from orbits.core.errors import ConvergenceError
 #: length scale (orbits.core.cr3bp.Origin.scale: 1e-11 of 58,000 km about the Earth-Moon L1 point, of 1.5e6 km
 #: about the Sun-Earth L1 point)
 TOLERANCE = 1e-11
+#: where the orbit's sensitivity puts the integration's noise above TOLERANCE, the corrector accepts this many times
+#: that noise instead: RTOL of the flow's scale per step, amplified by |Phi(tau)| (measured: the residual of the
+#: Earth-Moon 9:2 NRHO, |Phi| = 1.1e3, stalls at 1e-11 of r, 2.5 times RTOL |Phi| scale)
+NOISE_MARGIN = 10.0
+#: a correction has "settled" (Crossing.settled) once its residual is within this fraction of the flow's scale
+SETTLED = 1e-8
 #: Newton iterations before a correction is given up, and the halvings of a multiple-shooting step that does not
 #: shrink the residual
 MAX_ITERATIONS = 15
@@ -169,7 +176,10 @@ class Crossing:
     """A solution of the symmetric shooting problem: unknowns `u` = (kept components, tau), the initial `state`
     (about the flow's origin),
     the state and transition matrix Phi at the half period (`end`, `transition`), dF/du there (`jacobian`), the
-    residual max |F| left and the Newton iterations it took."""
+    residual max |F| left, the Newton iterations it took, and `settled`: the first iteration whose residual was
+    within SETTLED of the flow's scale (how far the prediction was from the family, a count that rounding noise
+    cannot change: quadratic convergence passes that level by orders of magnitude, while the last iterations,
+    spent at the noise floor, vary from one CPU to another)."""
 
     u: np.ndarray
     state: np.ndarray
@@ -178,6 +188,7 @@ class Crossing:
     jacobian: np.ndarray
     residual: float
     iterations: int
+    settled: int
 
     @property
     def period(self) -> float:
@@ -221,8 +232,9 @@ class HalfPeriodMap:
     def correct(self, u, condition) -> Crossing:
         """Newton's method on F(u) = 0 and condition(u) = (g, dg/du) = 0 from u; ConvergenceError if it fails."""
         u = np.array(u, dtype=float)
-        accept, small = self.flow.origin.scale * TOLERANCE, self.flow.origin.scale * SMALL_STEP
-        best, least = None, math.inf
+        scale = self.flow.origin.scale
+        accept, small = scale * TOLERANCE, scale * SMALL_STEP
+        best, least, settled = None, math.inf, MAX_ITERATIONS + 1
         for iteration in range(1, MAX_ITERATIONS + 1):
             residual, jac, end, phi = self.evaluate(u)
             self.flow.iterations += 1
@@ -230,10 +242,12 @@ class HalfPeriodMap:
             size = float(np.max(np.abs(residual)))
             if not np.isfinite(size) or size > DIVERGED * least:
                 break
+            accept = max(scale * TOLERANCE, NOISE_MARGIN * dop853.RTOL * float(np.linalg.norm(phi, 2)) * scale)
             if best is not None and best.residual <= accept and size >= 0.5 * best.residual:
                 return best  # the residual no longer shrinks: the last solution is as good as float64 allows
             least = min(least, size)
-            best = Crossing(u.copy(), self.state(u), end, phi, jac, size, iteration)
+            settled = min(settled, iteration) if size <= scale * SETTLED else settled
+            best = Crossing(u.copy(), self.state(u), end, phi, jac, size, iteration, settled)
             step = np.linalg.solve(np.vstack([jac, dg]), -np.append(residual, g))
             if size <= accept and float(np.max(np.abs(step))) <= small:
                 return best
@@ -252,18 +266,6 @@ def fixed_component(index: int, value: float):
         gradient = np.zeros(u.size)
         gradient[index] = 1.0
         return u[index] - value, gradient
-
-    return condition
-
-
-def fixed_jacobi(hmap: HalfPeriodMap, value: float):
-    """condition(u) holding the Jacobi constant of x0(u) at value."""
-    kept = list(hmap.symmetry.kept)
-
-    def condition(u):
-        x0 = hmap.flow.barycentric(hmap.state(u))
-        gradient = np.append(cr3bp.jacobi_gradient(x0, hmap.mu)[kept], 0.0)
-        return float(cr3bp.jacobi_constant(x0, hmap.mu)) - value, gradient
 
     return condition
 

@@ -144,12 +144,12 @@ def test_small_lyapunov_orbits_tend_to_the_linearised_period_at_second_order(mu,
     assert errors[0] < 1e-4
 
 
-def test_richardsons_halo_predicts_the_period_to_fourth_order_in_the_amplitude():
+def test_richardsons_halo_is_within_its_stated_bounds_of_the_corrected_orbit():
     """Richardson's third order: his period (frequency lambda (1 + s1 Ax**2 + s2 Az**2)) differs from the corrected
     halo's through the same crossing by at most 4 A**4, A = sqrt(Ax**2 + Az**2) / gamma (measured ratio up to 3.78,
-    Earth-Moon and Sun-Earth, L1 and L2, Az = 0.01 .. 0.3 gamma). Near the bifurcation Ax stays near its smallest
-    value (0.10 to 0.18 gamma), so A cannot go to zero; there the state differs by at most 10 A**3 (measured 9.1):
-    the frequency lock fixes Ax, and so the first harmonic, to second order only."""
+    Earth-Moon and Sun-Earth, L1 and L2, Az = 0.01 .. 0.3 gamma), the state by at most 10 A**3 (measured 9.1).
+    These are bounds, not orders: Ax stays near its smallest value (0.10 to 0.18 gamma), so A cannot go to zero
+    along the family (the docstring of orbits.core.libration says so)."""
     worst_period, worst_state = 0.0, 0.0
     for mu in (EARTH_MOON, SUN_EARTH):
         for point in ("L1", "L2"):
@@ -227,16 +227,33 @@ def test_multiple_shooting_recovers_a_symmetric_orbit_without_its_symmetry():
     assert np.allclose(continuation.stability_indices(shot.monodromy), expected, rtol=1e-8)
 
 
-def test_natural_parameter_continuation_stops_at_a_turning_point():
+def test_respacing_in_jacobi_stops_at_the_turning_point():
     """The Earth-Moon L2 halo family's Jacobi constant falls to a least value (C = 3.0157) and rises again towards
-    the Moon: stepping C past it, the continuation stops and says so."""
-    flow, hmap, member = _halo(EARTH_MOON, "L2", 0.02)
+    the Moon: spacing members evenly in C across that minimum is refused at it, and short of it the members hold
+    the values asked for (regula falsi to SEARCH_TOLERANCE, 1e-13 relative; measured 2.8e-14)."""
+    flow = shooting.Flow(EARTH_MOON, cr3bp.origin(EARTH_MOON, "L2"))
+    hmap, member, direction = families.first_member(flow, "halo", "L2", True, 0.02)
 
-    def measure(u):
-        return float(cr3bp.jacobi_constant(flow.barycentric(hmap.state(u)), EARTH_MOON))
+    def measure(m):
+        return float(cr3bp.jacobi_constant(flow.barycentric(m.state), EARTH_MOON))
 
-    start = measure(member.u)
-    branch = continuation.natural_parameter(hmap, member, np.linspace(start, 3.0, 8)[1:], measure,
-                                            lambda value: shooting.fixed_jacobi(hmap, value))
-    assert branch.stop is not None and "turns back" in branch.stop
-    assert 3.0 < measure(branch.members[-1].u) < 3.03
+    branch = continuation.pseudo_arclength(hmap, member, direction, 0.05, 60, max_step=0.5)
+    along = [measure(m) for m in branch.members]
+    turn = families.turning_point(along)
+    assert turn is not None and 3.0 < along[turn] < 3.03
+    with pytest.raises(families.TurningPoint, match="turns back in it near 3.01"):
+        families.respace(hmap, branch, branch.members[-1], 5, measure)
+    before = continuation.Branch(branch.members[: turn + 1], branch.tangents[: turn + 1], None)
+    spaced = families.respace(hmap, before, before.members[-1], 5, measure)
+    expected = np.linspace(along[0], along[turn], 5)
+    assert np.max(np.abs(np.array([measure(m) for m in spaced]) - expected)) <= 1e-13 * abs(expected[0])
+
+
+def test_a_turning_point_needs_a_step_beyond_the_measures_noise():
+    """Steps back smaller than FLAT of the measure (the rounding noise of a corrected member) are no turning point;
+    one step back beyond it is, wherever it falls."""
+    rising = np.linspace(1.0, 2.0, 9)
+    assert families.turning_point(rising) is None
+    noisy = rising + np.array([0, 0, 0, 0, 0, 1e-11, -1e-11, 0, 0])
+    assert families.turning_point(np.concatenate([[1.0, 1.0 + 1e-12, 1.0], noisy])) is None
+    assert families.turning_point(np.concatenate([rising, [1.9]])) == 8

@@ -14,6 +14,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from orbits.tools import profiles
+
 NEWTON_TOL = 1e-15  # absolute step tolerance of the plain NumPy Newton baseline
 NEWTON_MAX_ITER = 50
 #: best_time repeats a quick call past its `repeats` while the calls fit in this many seconds, up to BEST_OF_CALLS
@@ -153,7 +155,8 @@ def newton_hyperbolic(e, M):
 
 def machine() -> str:
     """One line naming this machine's CPU and its widest vector unit, read from the machine itself
-    (/proc/cpuinfo on Linux, the platform module elsewhere), e.g. "AMD EPYC, 2 cores, AVX-512 (512-bit vectors)"."""
+    (/proc/cpuinfo on Linux, the platform module elsewhere), e.g. "AMD EPYC, 2 cores, AVX-512 (512-bit vectors)",
+    and the CPU profile the run computes under, if any (orbits.tools.profiles: ", under the AVX2 profile")."""
     import os
     import platform
 
@@ -172,4 +175,4 @@ def machine() -> str:
                     (("avx512f", "AVX-512", 512), ("avx2", "AVX2", 256), ("avx", "AVX", 256), ("sse2", "SSE2", 128))
                     if flag in flags), "vector width unknown")
     count = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
-    return f"{name}, {count} cores, {vectors}"
+    return f"{name}, {count} cores, {vectors}{profiles.describe()}"
