@@ -313,9 +313,9 @@ def respace(hmap: shooting.HalfPeriodMap, branch: continuation.Branch, last: sho
 
 
 #: a step of a followed family's measure against the sense of its first step counts as turning back only beyond
-#: this fraction of the measure: corrected members carry their measures to about 1e-13 of themselves (the residual
-#: TOLERANCE times the corrector's conditioning, at most 1e3 along the Earth-Moon and Sun-Earth families), and
-#: pseudo-arclength steps of at least continuation.MIN_STEP move a monotone measure by far more
+#: this fraction of the measure: rounding moves a corrected member's measure far less (the same member's period
+#: differs by 9e-15 of itself between CPU classes, tests/stability/test_cpu_profiles.py), and pseudo-arclength
+#: steps of at least continuation.MIN_STEP move a monotone measure by far more
 FLAT = 1e-9
 
 
