@@ -73,6 +73,7 @@ _HOMES = {
     "OrbitsError": "orbits.core.errors",
     "OrbitsWarning": "orbits.core.errors",
     "InsideBodyWarning": "orbits.core.errors",
+    "IllConditionedWarning": "orbits.core.errors",
     "OutputError": "orbits.core.errors",
     "ParameterError": "orbits.core.errors",
     "SceneError": "orbits.core.errors",

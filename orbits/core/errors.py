@@ -56,3 +56,8 @@ class OrbitsWarning(UserWarning):
 class InsideBodyWarning(OrbitsWarning):
     """A closest approach lies inside a catalogue body (or inside both bodies' radii, for two bodies meeting): the
     orbit passes through the body, or the two collide. The two-body answer is still computed."""
+
+
+class IllConditionedWarning(OrbitsWarning):
+    """The answer is as good as float64 allows, but the problem amplifies rounding so far that its digits say
+    little: the message gives how far the answer's own rounding moves what it was asked to reach."""

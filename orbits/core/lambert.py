@@ -57,7 +57,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike
 
-from orbits.core import _fast
+from orbits.core import _fast, transition
 from orbits.core._lambert_shared import (
     AT_MINIMUM,
     C3_ELLIPSE,
@@ -443,6 +443,54 @@ def solve(r1: ArrayLike, r2: ArrayLike, tof: ArrayLike, mu: ArrayLike, revolutio
     x = find_x(lam, k, t, n, branch, scale)
     y = np.sqrt(k + lam * lam * x * x)
     return _velocities(geo, shape, x, y, lam, k, sigma, rho, gamma, s)
+
+
+#: one unit of rounding of a float64 input, relative to itself, and the nudge the conditioning is measured with
+ROUNDING = 2.0**-53
+NUDGE = 2.0**-40
+#: a transfer whose arrival point moves by more than this fraction of |r2| under its inputs' rounding is
+#: ill-conditioned: the digits of v1 beyond the eighth (or fewer) cannot be flown (IllConditionedWarning)
+ILL_CONDITIONED = 1e-8
+
+
+def arrival_conditioning(r1: ArrayLike, v1: ArrayLike, r2: ArrayLike, tof: ArrayLike, mu: ArrayLike) -> np.ndarray:
+    """kappa (dimensionless, the batch's shape): how far the arrival point moves, as a fraction of |r2|, when one
+    component of r1 or of v1, or the time of flight, moves by its float64 rounding (2**-53 of itself): the largest
+    such shift, each measured by propagating the nudged state (orbits.core.propagate) and scaled from a nudge of
+    NUDGE of itself, large enough that the propagator's own rounding (a few kappa) is 1e-3 of the shift; where
+    that nudge leaves the linear range (a shift beyond 1e-4 of |r2|), from a nudge of 2**-52 itself. A rounding
+    of mu moves the arrival by half the v1 and tof terms (the two-body problem is unchanged under mu -> c mu,
+    v -> sqrt(c) v, t -> t / sqrt(c)). kappa is inf where a rounding makes the orbit radial (a flight through the
+    focus). No solver can do better than about kappa; this one is within a few kappa
+    plus 1e-13 (tests/stability/test_lambert_sweep.py). kappa beyond ILL_CONDITIONED (a flight the long way round
+    a focus it grazes, or many revolutions in little time) says the answer cannot be flown to its digits."""
+    r1, v1, r2 = (np.asarray(x, dtype=float) for x in (r1, v1, r2))
+    shape = np.broadcast_shapes(r1.shape[:-1], v1.shape[:-1], r2.shape[:-1], np.shape(tof), np.shape(mu))
+    start = np.concatenate([np.broadcast_to(r1, (*shape, 3)), np.broadcast_to(v1, (*shape, 3))], axis=-1)
+    tof, mu = np.broadcast_to(np.asarray(tof, dtype=float), shape), np.broadcast_to(np.asarray(mu, dtype=float), shape)
+    size = _norm(np.broadcast_to(r2, (*shape, 3)))
+    kappa = _largest_shift(start, tof, mu, NUDGE) / size
+    beyond = kappa * (NUDGE / ROUNDING) > 1e-4
+    if np.any(beyond):
+        kappa = np.where(beyond, _largest_shift(start, tof, mu, 2.0 * ROUNDING) / size, kappa)
+    return kappa
+
+
+def _largest_shift(start, tof, mu, nudge):
+    """The largest move of the arrival point (m) when one of r1's, v1's components or tof moves by `nudge` of
+    itself, scaled to a move of ROUNDING: eight propagations a transfer (the solution, six components, the flight)."""
+    from orbits.core.propagate import propagate
+
+    factors = np.ones((8, *start.shape))
+    factors[np.arange(1, 7), ..., np.arange(6)] += nudge
+    states = start * factors
+    times = tof * np.where(np.arange(8) == 7, 1.0 + nudge, 1.0).reshape((8,) + (1,) * tof.ndim)
+    # a state that rounding makes radial (r x v = 0: a flight through the focus) has no arrival to compare
+    radial = np.any(_norm(_cross(states[..., :3], states[..., 3:])) == 0.0, axis=0)
+    stand_in = np.array([1.0, 0.0, 0.0, 0.0, 1.0, 0.0])
+    states = np.where(radial[..., None], stand_in, states)
+    ends, _ = propagate(states[..., :3], states[..., 3:], np.where(radial, 1.0, mu), np.where(radial, 1.0, times))
+    return np.where(radial, np.inf, np.max(_norm(ends[1:] - ends[0]), axis=0) * (ROUNDING / nudge))
 
 
 #: the most complete revolutions a transfer may make: 2**50, as many turns as an angle is reduced exactly over

@@ -21,6 +21,7 @@ the transfer adds the patched-conic C3 and v_inf at both ends, exactly as orbits
     (15.33, 2.939)
 """
 
+import warnings
 from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
@@ -33,7 +34,7 @@ from orbits import display, ephemeris, inputs, units
 from orbits.constants import SPEED_OF_LIGHT, Body
 from orbits.core import elements, frames
 from orbits.core import lambert as lambert_core
-from orbits.core.errors import OrbitDomainError
+from orbits.core.errors import IllConditionedWarning, OrbitDomainError
 from orbits.tables import quantity_table
 
 if TYPE_CHECKING:
@@ -50,7 +51,8 @@ class LambertTransfer(display.Displayed):
     """A solved Lambert transfer; float64 SI fields that broadcast (vectors on the last axis).
 
     r1, r2 (m), tof (s), mu (m3/s2): the problem; revolutions and branch: which solution; v1, v2 (m/s),
-    angle (rad, in (0, 2 pi), not counting complete revolutions), x (Izzo's variable) and a (m): the solution.
+    angle (rad, in (0, 2 pi), not counting complete revolutions), x (Izzo's variable) and a (m): the solution;
+    kappa: its conditioning (orbits.core.lambert.arrival_conditioning).
     departure, arrival: the bodies' ephemeris states (heliocentric ICRF) for a transfer between bodies, else None.
     """
 
@@ -65,6 +67,7 @@ class LambertTransfer(display.Displayed):
     angle: np.ndarray
     x: np.ndarray
     a: np.ndarray
+    kappa: np.ndarray
     departure: "ephemeris.BodyState | None" = None
     arrival: "ephemeris.BodyState | None" = None
 
@@ -113,6 +116,13 @@ class LambertTransfer(display.Displayed):
         """|e| = |(v1 x h) / mu - r1 / |r1|| (dimensionless) of the transfer conic."""
         e = elements.eccentricity_vector(self.r1, self.v1_si, self.mu)
         return np.linalg.norm(e, axis=-1) << u.one
+
+    @cached_property
+    def conditioning(self) -> u.Quantity:
+        """kappa (dimensionless): the shift of the arrival point, as a fraction of |r2|, when r1, v1 and the time of
+        flight move by their float64 rounding (orbits.core.lambert.arrival_conditioning). v1 reaches r2 within a few
+        kappa plus 1e-13; past 1e-8 its digits cannot all be flown, and solving it warned."""
+        return self.kappa << u.one
 
     @cached_property
     def time_of_flight(self) -> u.Quantity:
@@ -205,7 +215,7 @@ class LambertTransfer(display.Displayed):
 
 NAMES = ["c3", "departure_v_inf", "arrival_v_inf", "v1", "v2", "departure_speed", "arrival_speed", "transfer_angle",
          "total_angle", "semi_major_axis", "eccentricity", "inclination", "ascending_node", "argument_of_periapsis",
-         "periapsis_distance", "departure_true_anomaly", "time_of_flight"]
+         "periapsis_distance", "departure_true_anomaly", "time_of_flight", "conditioning"]
 
 
 def lambert(
@@ -275,11 +285,25 @@ def _solve(start, end, seconds, mu, revolutions, branch, prograde, direction, de
                                f"speed of light, where two-body Newtonian gravity no longer holds: a longer flight")
     shape = solution.x.shape
     vector_shape = (*shape, 3)
-    return LambertTransfer(
-        np.broadcast_to(start, vector_shape), np.broadcast_to(end, vector_shape), np.broadcast_to(seconds, shape),
-        np.broadcast_to(mu, shape), np.broadcast_to(np.asarray(revolutions), shape), branch,
-        solution.v1, solution.v2, solution.angle, solution.x, solution.semi_major_axis, departure, arrival,
-    )
+    r1, r2 = np.broadcast_to(start, vector_shape), np.broadcast_to(end, vector_shape)
+    tof, mu = np.broadcast_to(seconds, shape), np.broadcast_to(mu, shape)
+    kappa = lambert_core.arrival_conditioning(r1, solution.v1, r2, tof, mu)
+    _warn_if_ill_conditioned(kappa)
+    return LambertTransfer(r1, r2, tof, mu, np.broadcast_to(np.asarray(revolutions), shape), branch, solution.v1,
+                           solution.v2, solution.angle, solution.x, solution.semi_major_axis, kappa, departure,
+                           arrival)
+
+
+def _warn_if_ill_conditioned(kappa):
+    """IllConditionedWarning (one line) when a transfer's conditioning makes the digits of v1 unflyable."""
+    worst = float(np.max(kappa, initial=0.0))
+    if worst > lambert_core.ILL_CONDITIONED:
+        which = "" if np.ndim(kappa) == 0 else f" ({int(np.sum(kappa > lambert_core.ILL_CONDITIONED))} of " \
+                                                f"{np.size(kappa)} transfers)"
+        digits = (f"v1 has about {max(0, int(-np.log10(worst)))} meaningful digits" if np.isfinite(worst) else
+                  "a rounding sends the flight through the focus: no digit of v1 means anything")
+        warnings.warn(f"ill-conditioned transfer{which}: float64 rounding alone moves the arrival by up to "
+                      f"{worst:.2g} of |r2|; {digits}", IllConditionedWarning, stacklevel=3)
 
 
 def transfer_ends(departure: str, target: str, what: str) -> list[str]:
