@@ -1,14 +1,29 @@
-"""Shared test setup: floating-point exceptions raise, heyoka compiles into a temporary cache."""
+"""Shared test setup: floating-point exceptions raise, heyoka compiles into a temporary cache, sweeps draw fresh
+seeds."""
 
 import os
 
 import numpy as np
 import pytest
+import seeds
 from hypothesis import settings
 
 settings.register_profile("ci", max_examples=200, derandomize=True, deadline=None)
 settings.register_profile("thorough", max_examples=5000, derandomize=False, deadline=None)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
+
+
+@pytest.fixture
+def fresh_seed(request) -> int:
+    """A new seed each run (tests/seeds.py: ORBITS_TEST_SEED replays one)."""
+    return seeds.draw(request.node.nodeid)
+
+
+def pytest_terminal_summary(terminalreporter):
+    if seeds.DRAWN:
+        terminalreporter.section("fresh seeds (ORBITS_TEST_SEED=N replays one)")
+        for who, seed in sorted(seeds.DRAWN.items()):
+            terminalreporter.write_line(f"{seed:>20d}  {who}")
 
 
 @pytest.fixture(autouse=True)

@@ -268,14 +268,14 @@ def _period_and_conditioning(length_m, degrees):
         return period, float(theta * dk_dm * mpmath.sin(theta) / 2 / k)
 
 
-def test_exact_period_on_a_broad_random_set_through_the_public_api():
+def test_exact_period_on_a_broad_random_set_through_the_public_api(fresh_seed):
     """Pendulum.simple(L, theta0 in degrees).period against mpmath from the same inputs, on lengths from 1 mm to
     1 km and amplitudes up to 1e-8 deg short of 180: within 3 + kappa ulp, kappa = theta0 T'/T the amplification of
     the amplitude's own rounding to radians (measured over 6000 cases: at most 2.8 + kappa ulp; 2.4 ulp where kappa
     is below 0.01; 4.2 ulp at 177.9 deg). The count scales with ORBITS_SLOW_SCALE (1000 at 0.05)."""
     from sizes import slow_scale
 
-    rng = np.random.default_rng(20261126)
+    rng = np.random.default_rng(fresh_seed)
     n = max(200, int(20000 * slow_scale()))
     lengths = 10 ** rng.uniform(-3, 3, n)
     degrees = np.where(rng.random(n) < 0.5, rng.uniform(0, 180, n), 180 - 10 ** rng.uniform(-8, 1, n))
@@ -285,7 +285,7 @@ def test_exact_period_on_a_broad_random_set_through_the_public_api():
         exact, kappa = _period_and_conditioning(float(length), float(deg))
         error = abs(float(t) - exact) / math.ulp(float(exact))
         worst = max(worst, float(error) - kappa)
-    assert worst <= 3.0, worst
+    assert worst <= 3.0, (fresh_seed, worst)
 
 
 @pytest.mark.parametrize("drag", ["none", "linear", "quadratic"])

@@ -1,7 +1,8 @@
 """The propagator swept against the mpmath reference (orbits.tools.reference) on broad random sets, per conic
 class, on both paths: the figures the README states.
 
-Each class draws 2000 states (times ORBITS_SLOW_SCALE, the first of the same 2000 draws) with random orientation,
+Each class draws 2000 fresh states each run (times ORBITS_SLOW_SCALE; tests/conftest.py's fresh_seed) with random
+orientation,
 semi-latus rectum 7000-21000 km about the Earth and flights either way: ellipses over up to +-1000 periods,
 near-parabolic and hyperbolic orbits over 1e-2 to 1e4 times sqrt(p**3 / mu). Two bounds per class and path:
 - the worst |dr| / |r| and |dv| / |v| themselves;
@@ -10,7 +11,9 @@ near-parabolic and hyperbolic orbits over 1e-2 to 1e4 times sqrt(p**3 / mu). Two
   |(sum_j (Phi_ij x0_j)**2)_i| eps / |r| from the state-transition matrix Phi (and |v dt| eps for dt). Over long
   spans on eccentric orbits c is large (1000 periods at e = 0.99: an along-track 3e-10 s in 6.3e8 s) and the
   error is measured against it; near the parabola it tells a real loss from the input's own uncertainty.
-Bounds are within about 10x of the worst measured at full size (ORBITS_SLOW_SCALE=1), written beside each.
+Bounds are within about 10x of the worst measured at full size (ORBITS_SLOW_SCALE=1), written beside each; on
+every class and path the position error also stays within CONDITIONING_BOUND times its conditioning plus eps, the
+README's figure.
 """
 
 import math
@@ -27,6 +30,9 @@ from orbits.core.transition import transition_matrix
 MU_EARTH = 3.986004418e14
 EPS = 2.0**-53
 FULL_SIZE = 2000
+#: every class, both paths: |dr| / |r| <= this many times (conditioning + eps) (worst measured 6.3, near-parabolic
+#: hyperbolas on the NumPy path)
+CONDITIONING_BOUND = 10.0
 
 #: class: (eccentricities from uniform draws u, span: periods for ellipses, else None)
 CLASSES = {
@@ -52,8 +58,8 @@ MEASURED = {
 }
 
 
-def draw(name, n, seed=20261):
-    """(r0, v0, dt) of the first n of the class's FULL_SIZE random states."""
+def draw(name, n, seed):
+    """(r0, v0, dt) of the first n of the class's FULL_SIZE random states drawn from `seed`."""
     rng = np.random.default_rng([seed, list(CLASSES).index(name)])
     eccentricity, span = CLASSES[name]
     u = rng.uniform(0, 1, (9, FULL_SIZE))[:, :n]
@@ -69,9 +75,9 @@ def draw(name, n, seed=20261):
     return r0, v0, sign * 10 ** (-2 + 6 * u[8]) * np.sqrt(p**3 / MU_EARTH)
 
 
-def errors_and_conditioning(name, n, path):
+def errors_and_conditioning(name, n, path, seed):
     """Per state: |dr| / |r|, |dv| / |v| against mpmath, and the position and velocity conditioning."""
-    r0, v0, dt = draw(name, n)
+    r0, v0, dt = draw(name, n, seed)
     if path == "numpy":
         r, v = _propagate_numpy(r0, v0, MU_EARTH, dt)
     else:
@@ -95,14 +101,15 @@ def errors_and_conditioning(name, n, path):
 @pytest.mark.slow
 @pytest.mark.parametrize("path", ["compiled", "numpy"])
 @pytest.mark.parametrize("name", list(CLASSES))
-def test_broad_random_sets_against_mpmath(name, path, slow_scale, record):
+def test_broad_random_sets_against_mpmath(name, path, slow_scale, record, fresh_seed):
     """Both paths, every class: worst relative errors and worst errors over the conditioning within about 10x of
-    what was measured at full size (MEASURED)."""
+    what was measured at full size (MEASURED), positions within CONDITIONING_BOUND of theirs."""
     n = max(40, int(FULL_SIZE * slow_scale))
-    errors, conditioning = errors_and_conditioning(name, n, path)
+    errors, conditioning = errors_and_conditioning(name, n, path, fresh_seed)
     worst, worst_ratio = errors.max(axis=0), (errors / conditioning).max(axis=0)
     record(f"propagation {name} ({path}): |dr|/r", n, worst[0], "relative")
     record(f"propagation {name} ({path}): |dr|/r / (cond + eps)", n, worst_ratio[0], "")
     bounds = [10 * figure for figure in MEASURED[name][path]]
-    assert worst[0] <= bounds[0] and worst[1] <= bounds[1], (worst, bounds[:2])
-    assert worst_ratio[0] <= bounds[2] and worst_ratio[1] <= bounds[3], (worst_ratio, bounds[2:])
+    assert worst[0] <= bounds[0] and worst[1] <= bounds[1], (fresh_seed, worst, bounds[:2])
+    assert worst_ratio[0] <= min(bounds[2], CONDITIONING_BOUND), (fresh_seed, worst_ratio)
+    assert worst_ratio[1] <= bounds[3], (fresh_seed, worst_ratio, bounds[3])
