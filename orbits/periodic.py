@@ -574,9 +574,9 @@ class PeriodicFamily(display.Displayed):
         """`members` (2 .. MAX_MEMBERS) orbits of `family` ("lyapunov", "halo", "vertical", "dro" or "nrho") about
         `point` (the family's usual one by default), spread evenly in `spacing`: "arclength" along the family
         (pseudo-arclength continuation), or "period" or "jacobi" (each member located between the followed members
-        that bracket its value; refused where the quantity turns back before the last member). The last member is the one with the given target (one of TARGETS, as
-        PeriodicOrbit's constructors take them), or else the last before the family reaches a primary's surface or
-        MAX_WALK continuation steps."""
+        that bracket its value; refused where the quantity turns back before the last member). The last member is
+        the one with the given target (one of TARGETS, as PeriodicOrbit's constructors take them), or else the last
+        before the family reaches a primary's surface or MAX_WALK continuation steps."""
         if not (isinstance(members, int) and not isinstance(members, bool) and 2 <= members <= MAX_MEMBERS):
             raise OrbitDomainError(f"members = {members!r} must be an integer in [2, {MAX_MEMBERS}]")
         if spacing not in SPACINGS:

@@ -13,6 +13,18 @@ settings.register_profile("thorough", max_examples=5000, derandomize=False, dead
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 
 
+@pytest.fixture(params=["numpy", "compiled"])
+def path(request):
+    """Run a test on the NumPy specification and on the compiled kernel (every batch size), restoring the mode."""
+    if request.param == "compiled":
+        pytest.importorskip("numba")
+    from orbits.core import _fast
+
+    previous = _fast.set_enabled(request.param == "compiled")
+    yield request.param
+    _fast.set_enabled(previous)
+
+
 @pytest.fixture
 def fresh_seed(request) -> int:
     """A new seed each run (tests/seeds.py: ORBITS_TEST_SEED replays one)."""

@@ -4,13 +4,15 @@ A family is a curve of solutions u = (kept components, tau) of the half-period m
 measured in the scaled metric v = weights u (the state components in units of the flow's length scale), so that
 steps mean the same for a Sun-Earth halo (1e-3 r) as for an Earth-Moon one (0.1 r).
 
-Pseudo-arclength continuation follows the curve itself: from a member u_k with unit tangent
-t_k (the null vector of dF/du, oriented as the previous one), the prediction u_k + ds t_k is corrected with the
-condition t_k . (u - u_k - ds t_k) = 0. A step whose correction fails, moves the prediction by more than JUMP ds
-(a jump to another family) or turns the tangent by more than 60 degrees is halved, down to MIN_STEP; easy steps
-(settled within EASY_ITERATIONS Newton iterations: orbits.core.shooting.Crossing) grow by half, up to the largest step given. The continuation also
-stops where the family closes on itself (a step passes its first member, or that member's mirror image in the
-binary's plane z = 0, which is a symmetry of the problem: a vertical family returns to its start that way).
+Pseudo-arclength continuation follows the curve itself: from a member u_k with unit tangent t_k (the null vector
+of dF/du, oriented as the previous one), the prediction u_k + ds t_k is corrected with the condition
+t_k . (u - u_k - ds t_k) = 0. A step whose correction fails, moves the prediction by more than JUMP ds (a jump to
+another family) or turns the tangent by more than 60 degrees is halved, down to MIN_STEP; easy steps (settled
+within EASY_ITERATIONS Newton iterations: orbits.core.shooting.Crossing) grow by half, up to the largest step
+given. Every one of these decisions reads a quantity far from rounding noise, so a family follows the same steps
+on every CPU. The continuation also stops where the family closes on itself (a step passes its first member, or
+that member's mirror image in the binary's plane z = 0, which is a symmetry of the problem: a vertical family
+returns to its start that way).
 
 Stability. The monodromy matrix M has the eigenvalues 1, 1 (the orbit itself and the family) and two reciprocal
 pairs (lambda_i, 1 / lambda_i). The stability indices nu_i = lambda_i + 1 / lambda_i follow from traces, free of

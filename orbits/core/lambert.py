@@ -57,7 +57,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike
 
-from orbits.core import _fast, transition
+from orbits.core import _fast
 from orbits.core._lambert_shared import (
     AT_MINIMUM,
     C3_ELLIPSE,

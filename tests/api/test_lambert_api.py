@@ -62,7 +62,7 @@ def test_quantities_and_html():
         q = t.quantities()  # the transfer's elements come from its Orbit, which sees it dive through the Earth
     assert list(q) == ["v1", "v2", "departure_speed", "arrival_speed", "transfer_angle", "total_angle",
                        "semi_major_axis", "eccentricity", "inclination", "ascending_node", "argument_of_periapsis",
-                       "periapsis_distance", "departure_true_anomaly", "time_of_flight"]
+                       "periapsis_distance", "departure_true_anomaly", "time_of_flight", "conditioning"]
     assert t.quantities(["eccentricity"]).keys() == {"eccentricity"}
     assert "LambertTransfer" in t._repr_html_()
 

@@ -24,16 +24,6 @@ from orbits.tools.reference import propagate
 TOLERANCE = 1e-13  # the issue's bound on |r(tof) - r2| / |r2|
 
 
-@pytest.fixture(params=["numpy", "compiled"])
-def path(request):
-    """Run a test on the NumPy version and on the compiled kernel (every batch size)."""
-    if request.param == "compiled":
-        pytest.importorskip("numba")
-    previous = _fast.set_enabled(request.param == "compiled")
-    yield request.param
-    _fast.set_enabled(previous)
-
-
 def kappa(r1, v1, r2, tof, mu):
     """The largest end-point shift / |r2| caused by one ulp in one component of v1 (the problem's conditioning)."""
     base, _ = propagate(r1, v1, mu, tof)

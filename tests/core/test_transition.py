@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 import seeds
 
-from orbits.core import _fast, transition
+from orbits.core import transition
 from orbits.core.elements import elements_to_state
 from orbits.core.errors import DegenerateOrbitError
 
@@ -47,15 +47,6 @@ SETS = conic_sets(seeds.draw(__name__))
 def references():
     return {name: [np.array(mpref.transition_matrix(r0[i], v0[i], MU, dt[i]), dtype=float) for i in range(dt.size)]
             for name, (r0, v0, dt) in SETS.items()}
-
-
-@pytest.fixture(params=["numpy", "compiled"])
-def path(request):
-    if request.param == "compiled":
-        pytest.importorskip("numba")
-    previous = _fast.set_enabled(request.param == "compiled")
-    yield request.param
-    _fast.set_enabled(previous)
 
 
 def relative_errors(phi, reference):

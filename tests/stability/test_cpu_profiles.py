@@ -64,8 +64,8 @@ def test_the_profile_reaches_each_library():
     """Under the profile numba compiles for Haswell, NumPy dispatches no AVX-512 loop and OpenBLAS is told its core
     type; the native profile clears all three."""
     code = ("import os, numba, numpy as np; from numpy._core._multiarray_umath import __cpu_features__ as f, "
-            "__cpu_dispatch__ as d; print(numba.config.CPU_NAME, "
-            "[k for k in d if f[k] and (k.startswith('AVX512') or k == 'X86_V4')], os.environ.get('OPENBLAS_CORETYPE'))")
+            "__cpu_dispatch__ as d; print(numba.config.CPU_NAME, [k for k in d if f[k] and "
+            "(k.startswith('AVX512') or k == 'X86_V4')], os.environ.get('OPENBLAS_CORETYPE'))")
     avx2 = subprocess.run([sys.executable, "-c", code], env=profiles.environment("avx2"), capture_output=True,
                           text=True, timeout=120)
     assert avx2.stdout.split() == ["haswell", "[]", "Haswell"], avx2.stderr

@@ -7,7 +7,7 @@ import mpref
 import numpy as np
 import pytest
 
-from orbits.core import _fast, kepler
+from orbits.core import kepler
 from orbits.tools import reference
 
 #: the README's bounds, in ulps of the exact root (worst measured over 15 fresh samples of 2e4 each, both paths,
@@ -16,15 +16,6 @@ ELLIPTIC_ULPS, HYPERBOLIC_ULPS, PARABOLIC_ULPS = 3.0, 2.0, 2.0
 SAMPLE = 20_000
 #: the slow tier's bound on its 1e6 pairs and log grid
 BOUND_ULPS = 4
-
-
-@pytest.fixture(params=["numpy", "compiled"])
-def path(request):
-    if request.param == "compiled":
-        pytest.importorskip("numba")
-    previous = _fast.set_enabled(request.param == "compiled")
-    yield request.param
-    _fast.set_enabled(previous)
 
 
 def random_elliptic(rng, n):

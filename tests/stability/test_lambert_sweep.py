@@ -14,7 +14,6 @@ import numpy as np
 import pytest
 
 from orbits import IllConditionedWarning, lambert
-from orbits.core import _fast
 from orbits.core import lambert as lambert_core
 from orbits.core.errors import OrbitDomainError
 from orbits.tools.bench.lambert import arrival_error
@@ -35,15 +34,6 @@ def _problem(rng):
     tof = period * 10 ** rng.uniform(-9, 3)
     revolutions = int(rng.integers(0, min(20, int(tof / period)) + 1))
     return r1, r2, tof, revolutions, str(rng.choice(["left", "right"])), bool(rng.integers(0, 2))
-
-
-@pytest.fixture(params=["numpy", "compiled"])
-def path(request):
-    if request.param == "compiled":
-        pytest.importorskip("numba")
-    previous = _fast.set_enabled(request.param == "compiled")
-    yield request.param
-    _fast.set_enabled(previous)
 
 
 def test_every_answer_is_within_its_conditioning(path, fresh_seed, record):
