@@ -11,6 +11,7 @@ section XXI of the notes is a lazily computed property returning a Quantity. Con
 degenerate angles are those of orbits.core.elements.
 """
 
+import warnings
 from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
@@ -23,7 +24,7 @@ from orbits import catalogue_orbits, display, inputs, units
 from orbits.constants import Body, G, body
 from orbits.core import anomalies, elements, propagate, transition, twobody
 from orbits.core.checks import broadcast_shape, first_where
-from orbits.core.errors import OrbitDomainError
+from orbits.core.errors import ILL_CONDITIONED, IllConditionedWarning, OrbitDomainError
 from orbits.tables import quantity_table
 
 if TYPE_CHECKING:
@@ -435,13 +436,22 @@ class Orbit(display.Displayed):
 
         With stm=True also the state-transition matrix Phi = d(r, v) / d(r0, v0), a float array of shape
         (..., 6, 6) in SI units (blocks: 1, s, 1/s, 1), so that a covariance P0 of (r0 [m], v0 [m/s]) becomes
-        Phi P0 Phi^T (orbits.core.transition.propagate_covariance); within 1e-13 of its norm.
+        Phi P0 Phi^T (orbits.core.transition.propagate_covariance); within 1e-13 of its norm on ordinary flights,
+        within orbits.core.transition.relative_error where one grazes the focus or starts nearly radial, with an
+        IllConditionedWarning when that passes 1e-8.
         """
         dt_si = units.to_si(dt, units.S, "time step dt")
         r, v = propagate.propagate(*self._state, self.mu, dt_si)
         if not stm:
             return r << units.M, v << units.M_PER_S
-        return r << units.M, v << units.M_PER_S, transition.transition_matrix(*self._state, self.mu, dt_si)
+        phi = transition.transition_matrix(*self._state, self.mu, dt_si)
+        worst = float(np.max(transition.relative_error(phi, *self._state, self.mu), initial=0.0))
+        if worst > ILL_CONDITIONED:
+            digits = f"about {int(-np.log10(worst))} digits of Phi" if worst < 0.1 else "no digit of Phi"
+            warnings.warn(f"ill-conditioned state-transition matrix: the flight grazes the focus or starts nearly "
+                          f"radial; {digits} can be trusted (error up to {worst:.2g} of its norm)",
+                          IllConditionedWarning, stacklevel=2)
+        return r << units.M, v << units.M_PER_S, phi
 
     def at(self, dt: u.Quantity) -> "Orbit":
         """The Orbit reached a time dt later (same elements, new true anomaly)."""

@@ -59,5 +59,9 @@ class InsideBodyWarning(OrbitsWarning):
 
 
 class IllConditionedWarning(OrbitsWarning):
-    """The answer is as good as float64 allows, but the problem amplifies rounding so far that its digits say
-    little: the message gives how far the answer's own rounding moves what it was asked to reach."""
+    """The answer is computed, but rounding moves it so far that few of its digits mean anything: the message says
+    by how much (past ILL_CONDITIONED, a relative 1e-8: fewer than eight digits)."""
+
+
+#: the relative error, or shift under rounding, past which an answer carries an IllConditionedWarning
+ILL_CONDITIONED = 1e-8

@@ -448,9 +448,6 @@ def solve(r1: ArrayLike, r2: ArrayLike, tof: ArrayLike, mu: ArrayLike, revolutio
 #: one unit of rounding of a float64 input, relative to itself, and the nudge the conditioning is measured with
 ROUNDING = 2.0**-53
 NUDGE = 2.0**-40
-#: a transfer whose arrival point moves by more than this fraction of |r2| under its inputs' rounding is
-#: ill-conditioned: the digits of v1 beyond the eighth (or fewer) cannot be flown (IllConditionedWarning)
-ILL_CONDITIONED = 1e-8
 
 
 def arrival_conditioning(r1: ArrayLike, v1: ArrayLike, r2: ArrayLike, tof: ArrayLike, mu: ArrayLike) -> np.ndarray:
@@ -461,9 +458,9 @@ def arrival_conditioning(r1: ArrayLike, v1: ArrayLike, r2: ArrayLike, tof: Array
     that nudge leaves the linear range (a shift beyond 1e-4 of |r2|), from a nudge of 2**-52 itself. A rounding
     of mu moves the arrival by half the v1 and tof terms (the two-body problem is unchanged under mu -> c mu,
     v -> sqrt(c) v, t -> t / sqrt(c)). kappa is inf where a rounding makes the orbit radial (a flight through the
-    focus). No solver can do better than about kappa; this one is within a few kappa
-    plus 1e-13 (tests/stability/test_lambert_sweep.py). kappa beyond ILL_CONDITIONED (a flight the long way round
-    a focus it grazes, or many revolutions in little time) says the answer cannot be flown to its digits."""
+    focus). No solver can do better than about kappa; this one is within a few kappa plus 1e-13
+    (tests/stability/test_lambert_sweep.py). kappa beyond ILL_CONDITIONED (orbits.core.errors: a flight the long way
+    round a focus it grazes, or many revolutions in little time) says the answer cannot be flown to its digits."""
     r1, v1, r2 = (np.asarray(x, dtype=float) for x in (r1, v1, r2))
     shape = np.broadcast_shapes(r1.shape[:-1], v1.shape[:-1], r2.shape[:-1], np.shape(tof), np.shape(mu))
     start = np.concatenate([np.broadcast_to(r1, (*shape, 3)), np.broadcast_to(v1, (*shape, 3))], axis=-1)

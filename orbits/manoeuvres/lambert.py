@@ -34,7 +34,7 @@ from orbits import display, ephemeris, inputs, units
 from orbits.constants import SPEED_OF_LIGHT, Body
 from orbits.core import elements, frames
 from orbits.core import lambert as lambert_core
-from orbits.core.errors import IllConditionedWarning, OrbitDomainError
+from orbits.core.errors import ILL_CONDITIONED, IllConditionedWarning, OrbitDomainError
 from orbits.tables import quantity_table
 
 if TYPE_CHECKING:
@@ -297,8 +297,8 @@ def _solve(start, end, seconds, mu, revolutions, branch, prograde, direction, de
 def _warn_if_ill_conditioned(kappa):
     """IllConditionedWarning (one line) when a transfer's conditioning makes the digits of v1 unflyable."""
     worst = float(np.max(kappa, initial=0.0))
-    if worst > lambert_core.ILL_CONDITIONED:
-        which = "" if np.ndim(kappa) == 0 else f" ({int(np.sum(kappa > lambert_core.ILL_CONDITIONED))} of " \
+    if worst > ILL_CONDITIONED:
+        which = "" if np.ndim(kappa) == 0 else f" ({int(np.sum(kappa > ILL_CONDITIONED))} of " \
                                                 f"{np.size(kappa)} transfers)"
         digits = (f"v1 has about {max(0, int(-np.log10(worst)))} meaningful digits" if np.isfinite(worst) else
                   "a rounding sends the flight through the focus: no digit of v1 means anything")
