@@ -321,9 +321,10 @@ def propagate(r0: ArrayLike, v0: ArrayLike, mu: ArrayLike, dt: ArrayLike) -> tup
     Accuracy against an mpmath reference on broad random sets drawn afresh each run, on the NumPy and the compiled
     path (tests/stability/test_propagate_sweep.py): in every class positions within 10 times the conditioning (the
     change of the exact state when each input moves by 2**-53 of itself) plus 2**-53, worst measured 6.6 times
-    over samples of 2000 a class (40 times on flights grazing the focus or starting nearly radial, measured 16); that is at most 5.3e-15 of |r| measured on ellipses (e up to 0.9, and 1 - e from
-    1e-6 to 0.1) over +-1000 periods, 1.5e-14 on near-parabolic orbits (|1 - e| from 1e-12 to 1e-6, either side)
-    and 1.3e-14 on hyperbolas (e - 1 up to 10), median 1e-16. Over 1000 periods at e = 0.99 the conditioning is
+    over samples of 2000 a class (40 times on flights grazing the focus or starting nearly radial, measured 16);
+    that is at most 5.3e-15 of |r| measured on ellipses (e up to 0.9, and 1 - e from 1e-6 to 0.1) over +-1000
+    periods, 1.5e-14 on near-parabolic orbits (|1 - e| from 1e-12 to 1e-6, either side) and 1.3e-14 on
+    hyperbolas (e - 1 up to 10), median 1e-16. Over 1000 periods at e = 0.99 the conditioning is
     along the track and reaches 1.5e-12 of |r| (worst measured 4.5e-13, 0.29 of it); velocities near apoapsis at
     1 - e = 1e-6 are as good as theirs (up to 1.8e-10, below 0.01 of it).
     Batches from orbits.core._fast.AUTO_MIN_BATCH states on run the compiled port of this algorithm (ORBITS_JIT

@@ -17,6 +17,7 @@ AVX2 it is refused. `python -m orbits.tools.profiles avx2 COMMAND ...` runs a co
 numerics-sensitive tests that way); `describe()` names the profile a process runs under, for benchmark tables.
 """
 
+import contextlib
 import os
 import sys
 
@@ -25,16 +26,17 @@ PROFILES = ("native", "avx2")
 VARIABLES = ("NUMBA_CPU_NAME", "NUMBA_CPU_FEATURES", "NPY_DISABLE_CPU_FEATURES", "OPENBLAS_CORETYPE")
 
 
-def _cpu_flags() -> set:
-    try:
-        with open("/proc/cpuinfo", encoding="ascii", errors="replace") as info:
-            for line in info:
-                key, _, value = line.partition(":")
-                if key.strip() == "flags":
-                    return set(value.split())
-    except OSError:
-        pass
-    return set()
+def cpu_info() -> tuple[str, set]:
+    """(the CPU's model name, its feature flags) from /proc/cpuinfo; ("", set()) where there is none (not Linux)."""
+    name, flags = "", set()
+    with contextlib.suppress(OSError), open("/proc/cpuinfo", encoding="ascii", errors="replace") as info:
+        for line in info:
+            key, _, value = line.partition(":")
+            if key.strip() == "model name" and not name:
+                name = value.strip()
+            elif key.strip() == "flags" and not flags:
+                flags = set(value.split())
+    return name, flags
 
 
 def _numpy_wide_targets() -> list:
@@ -54,7 +56,7 @@ def environment(profile: str, base: dict | None = None) -> dict:
         raise ValueError(f"unknown CPU profile {profile!r}; choose from {', '.join(PROFILES)}")
     env = {k: v for k, v in (os.environ if base is None else base).items() if k not in VARIABLES}
     if profile == "avx2":
-        if "avx2" not in _cpu_flags():
+        if "avx2" not in cpu_info()[1]:
             raise ValueError("the avx2 profile needs a host with AVX2 (it narrows the host's instructions)")
         env.update(NUMBA_CPU_NAME="haswell", NUMBA_CPU_FEATURES="", OPENBLAS_CORETYPE="Haswell",
                    NPY_DISABLE_CPU_FEATURES=" ".join(_numpy_wide_targets()))

@@ -160,17 +160,8 @@ def machine() -> str:
     import os
     import platform
 
-    name, flags = platform.processor() or platform.machine(), set()
-    try:
-        with open("/proc/cpuinfo", encoding="ascii", errors="replace") as info:
-            for line in info:
-                key, _, value = line.partition(":")
-                if key.strip() == "model name" and name in ("", platform.machine(), platform.processor()):
-                    name = value.strip()
-                elif key.strip() == "flags":
-                    flags = set(value.split())
-    except OSError:
-        pass
+    name, flags = profiles.cpu_info()
+    name = name or platform.processor() or platform.machine()
     vectors = next((f"{label} ({bits}-bit vectors)" for flag, label, bits in
                     (("avx512f", "AVX-512", 512), ("avx2", "AVX2", 256), ("avx", "AVX", 256), ("sse2", "SSE2", 128))
                     if flag in flags), "vector width unknown")
