@@ -66,7 +66,22 @@ app = typer.Typer(
     help="orbits: Kepler orbits to the last float64 digit, cross-checked against rebound and heyoka.",
     no_args_is_help=True,
     pretty_exceptions_enable=False,
+    context_settings={"help_option_names": ["-h", "--help"]},
 )
+
+
+def _print_version(asked: bool) -> None:
+    if asked:
+        from orbits import __version__
+
+        print(f"orbits {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _root(version: bool = typer.Option(False, "--version", callback=_print_version, is_eager=True,
+                                       help="Print the version and exit.")) -> None:
+    """The options every verb shares are the verbs' own; the root has --version and -h / --help."""
 bench_app = typer.Typer(help="Benchmarks: throughput and accuracy against the peers installed.", no_args_is_help=True)
 app.add_typer(bench_app, name="bench")
 

@@ -219,3 +219,14 @@ def test_orbit_speed_energies_and_swept_area_asked_for():
     assert unreachable.exit_code == 2 and "the body never gets there" in unreachable.output
     bad = run("orbit", "--primary", "Earth", "--a", "8000 km", "--area-between", "1 h")
     assert bad.exit_code == 2 and "write T1,T2" in bad.output
+
+
+def test_version_and_the_short_help_option():
+    """`orbits --version` prints the version; -h is --help for the root and for every verb."""
+    from orbits import __version__
+
+    version = run("--version")
+    assert (version.exit_code, version.output) == (0, f"orbits {__version__}\n")
+    for words in (["-h"], ["lambert", "-h"], ["perturb", "kozai", "-h"]):
+        result = run(*words)
+        assert result.exit_code == 0 and "Usage: " in result.output, (words, result.output)
