@@ -294,3 +294,15 @@ def test_radial_orbit_is_a_clear_error():
 def test_non_finite_time_is_rejected():
     with pytest.raises(OrbitDomainError, match="not finite"):
         propagate(np.array([1e7, 0, 0]), np.array([0, 7e3, 0]), MU_EARTH, float("nan"))
+
+
+def test_a_state_whose_scaled_h2_underflows_raises_no_floating_point_flag():
+    """A flight through the focus found by a fresh Lambert sweep: |h| = 4e-8 against |r| |v| = 5e8, so that h**2
+    underflows to 0 in the scaled problem and Barker's first guess divided by sqrt(p) = 0 (a divide-by-zero that
+    a caller running with np.errstate(divide="raise") met as FloatingPointError, and others as a RuntimeWarning).
+    The guess now stands aside there, and the state comes out finite (a flight through the focus: its conditioning
+    leaves no digit of it meaningful, and Lambert's conditioning says so)."""
+    r0 = np.array([3.634667077231681, -2.331223696794756, -4.134699863079107])
+    v0 = np.array([-48515659.028749734, 31117252.719492085, 55190113.55949223])
+    r, v = _propagate_numpy(r0[None], v0[None], np.array([1.0]), np.array([9.65765335302989e-08]))
+    assert np.all(np.isfinite(r)) and np.all(np.isfinite(v))
