@@ -78,10 +78,12 @@ def main(argv: list) -> int:
         return 2
     try:
         env = environment(argv[0])
+        os.execvpe(argv[1], argv[1:], env)
     except ValueError as err:
         print(f"error: {err}", file=sys.stderr)
-        return 2
-    os.execvpe(argv[1], argv[1:], env)
+    except OSError as err:
+        print(f"error: cannot run {argv[1]!r}: {err.strerror}", file=sys.stderr)
+    return 2
 
 
 if __name__ == "__main__":

@@ -76,3 +76,12 @@ def test_the_profile_reaches_each_library():
 def test_an_unknown_profile_is_refused_in_one_line():
     with pytest.raises(ValueError, match="unknown CPU profile 'avx1'; choose from native, avx2"):
         profiles.environment("avx1")
+
+
+def test_the_command_line_refuses_in_one_line():
+    for words, message in ((["avx9", "true"], "unknown CPU profile 'avx9'"),
+                           (["native", "no-such-command-here"], "cannot run 'no-such-command-here'"),
+                           (["native"], "usage: python -m orbits.tools.profiles")):
+        done = subprocess.run([sys.executable, "-m", "orbits.tools.profiles", *words], capture_output=True, text=True,
+                              timeout=60)
+        assert done.returncode == 2 and message in done.stderr and len(done.stderr.splitlines()) == 1, done.stderr
