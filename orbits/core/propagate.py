@@ -209,8 +209,7 @@ def _vallado_guess(tau, r0, sigma0, alpha):
 
 def _barker_guess(tau, sigma0, p):
     """chi on the parabola with the same p = h**2 and r0.v0: sqrt(p) (D - D0), D = tan(nu / 2) from Barker's
-    equation D + D**3 / 3 = D0 + D0**3 / 3 + 2 tau / p**1.5 (Cardano); 0 where that is negative or overflows, or
-    where p underflows to 0 (a state so nearly radial that h**2 leaves float64 in the scaled problem)."""
+    equation D + D**3 / 3 = D0 + D0**3 / 3 + 2 tau / p**1.5 (Cardano); 0 where negative, overflowing or p = 0."""
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         root_p = np.sqrt(p)
         d0 = sigma0 / root_p
