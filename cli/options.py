@@ -1,4 +1,5 @@
-"""Options and error handling shared by every command (imports typer only, for a fast --help)."""
+"""Options, helpers and error handling shared by every command (imports typer only, for a fast --help): no verb
+imports another; what two verbs share lives here."""
 
 import functools
 import inspect
@@ -10,8 +11,12 @@ from typing import TYPE_CHECKING, Annotated, ParamSpec, TypeVar
 import typer
 
 if TYPE_CHECKING:
+    from astropy.units import Quantity
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
+
+    from orbits._common.constants import Body
+    from orbits.threebody.lagrange import RestrictedThreeBody
 
 _P = ParamSpec("_P")
 _R = TypeVar("_R")
@@ -38,13 +43,39 @@ PeriapsisArgumentOption = Annotated[
 ]
 TrueAnomalyOption = Annotated[str, typer.Option("--nu", help="true anomaly")]
 
+#: what a body option reads
+MASS_HELP = "a body name (Earth, Moon, Sun, Jupiter), a mass ('1.989e30 kg', '1 solMass') or a GM ('3.986e14 m3/s2')"
+
+
+def mass_or_body(text: str, option: str) -> "Body | Quantity":
+    """A body (name), mass or GM parsed from `text`; an error naming `option` otherwise."""
+    from orbits import OrbitDomainError
+    from orbits._common import inputs
+
+    try:
+        return inputs.parse_primary(text)
+    except OrbitDomainError as err:
+        raise OrbitDomainError(f"{option}: {str(err).removeprefix('primary: ')}") from None
+
+
+def three_body(primary: str, secondary: str, separation: str | None) -> "RestrictedThreeBody":
+    """The RestrictedThreeBody of --primary and --secondary at --separation (None: the secondary's catalogued mean
+    distance from the primary)."""
+    from orbits import RestrictedThreeBody
+    from orbits._common import inputs
+
+    distance = None if separation is None else inputs.parse_quantity(separation, "length", "--separation")
+    return RestrictedThreeBody.from_primaries(mass_or_body(primary, "--primary"),
+                                              mass_or_body(secondary, "--secondary"), distance)
+
+
 def _writable(option: str):
     """A parse-time check that a file option can be written, so that a bad target fails before any work."""
 
     def check(path: str | None) -> str | None:
         if path is not None:
             from orbits import OrbitDomainError
-            from orbits.io import check_target
+            from orbits._common.io import check_target
 
             if option == "--plot" and str(path).rsplit(".", 1)[-1].lower() not in ("png", "svg", "pdf"):
                 raise typer.BadParameter(f"plot file {path!r} must end in .png, .svg or .pdf")
@@ -137,14 +168,32 @@ def displays(command: Callable[_P, _R]) -> Callable[..., _R]:
     return wrapper
 
 
+def verb_words(group, args: list[str]) -> tuple[str, object, list[str]]:
+    """(the verb's path such as "transfer hohmann", its click command, the words after it) of the words after
+    `orbits`."""
+    command, words, path = group, list(args), []
+    while hasattr(command, "commands") and words and words[0] in command.commands:
+        path.append(words[0])
+        command, words = command.commands[words[0]], words[1:]
+    return " ".join(path), command, words
+
+
+def refuse_retired_words(group, args: list[str]) -> None:
+    """A usage error naming the word now for a former spelling (orbits_cli.vocabulary.RETIRED), before any work."""
+    from orbits_cli.vocabulary import retired_word
+
+    verb, _, words = verb_words(group, args)
+    hint = retired_word(verb, words)
+    if hint is not None:
+        raise typer.BadParameter(hint)
+
+
 def refuse_repeated_options(group, args: list[str]) -> None:
     """A usage error for an option given more than once that holds one value (`--a 7000 km --a 8000 km`), or for a
     flag given both ways (`--sweep --no-sweep`): the parser would keep the last silently. Options that collect a
     list (`--unit`) may repeat. `args` are the words after `orbits`; the verb (and sub-verb) they name is found
     first."""
-    command, words = group, list(args)
-    while hasattr(command, "commands") and words and words[0] in command.commands:
-        command, words = command.commands[words[0]], words[1:]
+    _, command, words = verb_words(group, args)
     spellings = {}
     for param in getattr(command, "params", []):
         if getattr(param, "param_type_name", "") == "option":
@@ -177,7 +226,7 @@ def _print_warnings(caught, ours):
     for item in caught:
         if issubclass(item.category, ours):
             if str(item.message) not in seen:
-                from orbits.display import printable
+                from orbits._common.display import printable
 
                 seen.add(str(item.message))
                 print(f"orbits: warning: {printable(item.message)}", file=sys.stderr)
@@ -244,6 +293,20 @@ def reports_errors(command: Callable[_P, _R]) -> Callable[_P, _R]:
     return wrapper
 
 
+def error_text(err: Exception) -> str:
+    """The message of a usage or input error without click's "Invalid value" wording: an option's problem as
+    "--e: ...", every other as it reads. Every error line is then "orbits: error: " and this."""
+    if isinstance(err, typer.BadParameter) and err.message:  # a missing option has no message of its own
+        param = err.param
+        hint = err.param_hint or (None if param is None else
+                                  ("/".join(param.opts) if getattr(param, "opts", None) else param.human_readable_name))
+        hint = " / ".join(hint) if isinstance(hint, list | tuple) else hint
+        return err.message if hint is None else f"{str(hint).strip(chr(39))}: {err.message}"
+    if hasattr(err, "format_message"):
+        return err.format_message()
+    return str(err.args[0]) if isinstance(err, KeyError) and err.args else str(err)
+
+
 def _report_interrupt() -> None:
     print("orbits: interrupted", file=sys.stderr)
     raise typer.Exit(130) from None
@@ -263,9 +326,7 @@ def _report_error() -> None:
               f"compute", file=sys.stderr)
         raise typer.Exit(2) from None
     except (OrbitsError, ValueError, TypeError, KeyError, u.UnitsError, typer.BadParameter) as err:
-        from orbits.display import printable
+        from orbits._common.display import printable
 
-        message = err.format_message() if isinstance(err, typer.BadParameter) else (
-            str(err.args[0]) if isinstance(err, KeyError) and err.args else str(err))
-        print(f"orbits: error: {printable(message)}", file=sys.stderr)  # one line, whatever a file held
+        print(f"orbits: error: {printable(error_text(err))}", file=sys.stderr)  # one line, whatever a file held
         raise typer.Exit(2) from None

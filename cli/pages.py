@@ -6,6 +6,8 @@ two to four examples that run (tests/cli/test_help_pages.py runs every one and h
 builds them. It imports nothing of the library: `orbits --help` stays fast.
 """
 
+import shlex
+
 import typer
 from typer.core import TyperCommand
 
@@ -73,8 +75,7 @@ EXAMPLES = {
         "orbits orbit Earth",
         'orbits orbit --primary Earth --a "42164 km" --only period,speed',
         "orbits orbit Ceres --epoch 2026-01-01 --format json",
-        'orbits orbit --primary Earth --a "8000 km" --e 0.1 --mass "1000 kg" \\\n'
-        '    --at-r "7500 km" --area-between "0 h,1 h"',
+        'orbits orbit --primary Earth --a "8000 km" --e 0.1 --mass "1000 kg" --at-r "7500 km" --area-between "0 h,1 h"',
     ],
     "kepler": [
         'orbits kepler --e 0.9 --M "0.1 rad"',
@@ -97,24 +98,24 @@ EXAMPLES = {
         'orbits flyby --primary Earth --v-inf "3 km/s" --b "30000 km" --plot flyby.png',
     ],
     "lagrange": [
-        "orbits lagrange Earth Moon",
-        "orbits lagrange Sun Earth --points L1,L2 --format json",
-        'orbits lagrange "1 solMass" "0.1 solMass" --r "1 AU" --plot lagrange.png',
+        "orbits lagrange --primary Earth --secondary Moon",
+        "orbits lagrange --primary Sun --secondary Earth --points L1,L2 --format json",
+        'orbits lagrange --primary "1 solMass" --secondary "0.1 solMass" --separation "1 AU" --plot lagrange.png',
     ],
     "periodic": [
-        'orbits periodic Earth Moon --family halo --point L2 --az "20000 km"',
-        "orbits periodic Earth Moon --family nrho --resonance 9:2",
-        'orbits periodic Sun Earth --family lyapunov --point L1 --ax "200000 km"',
-        "orbits periodic Earth Moon --family nrho --resonance 9:2 --members 12",
+        'orbits periodic --primary Earth --secondary Moon --family halo --point L2 --az "20000 km"',
+        "orbits periodic --primary Earth --secondary Moon --family nrho --resonance 9:2",
+        'orbits periodic --primary Sun --secondary Earth --family lyapunov --point L1 --ax "200000 km"',
+        "orbits periodic --primary Earth --secondary Moon --family nrho --resonance 9:2 --members 12",
     ],
     "ring": [
-        'orbits ring 7 --m "1e20 kg" --r "1e5 km" --central-mass Earth',
-        'orbits ring 3 --m "1 kg" --r "1 m" --format json',
+        'orbits ring 7 --mass "1e20 kg" --radius "1e5 km" --primary Earth',
+        'orbits ring 3 --mass "1 kg" --radius "1 m" --format json',
     ],
     "rocket": [
         'orbits rocket --m0 "100 t" --mf "40 t" --isp "300 s" --thrust "2 MN"',
-        'orbits rocket --propellant "80 t" --propellant "15 t" --structure "8 t" \\\n'
-        '    --structure "2 t" --payload "1 t" --isp "280 s" --isp "340 s"',
+        'orbits rocket --propellant "80 t" --propellant "15 t" --structure "8 t" --structure "2 t" --payload '
+        '"1 t" --isp "280 s" --isp "340 s"',
     ],
     "where": [
         "orbits where Mars --epoch 2026-11-25",
@@ -124,14 +125,13 @@ EXAMPLES = {
     ],
     "lambert": [
         'orbits lambert --r1 "1,0,0 AU" --r2 "0,1.5,0 AU" --tof "200 d"',
-        'orbits lambert --r1 "1,0,0 AU" --r2 "0,1.5,0 AU" --tof "900 d" \\\n'
-        "    --revolutions 1 --branch left",
+        'orbits lambert --r1 "1,0,0 AU" --r2 "0,1.5,0 AU" --tof "900 d" --revolutions 1 --branch left',
         "orbits lambert --from Earth --to Mars --depart 2026-11-26 --arrive 2027-08-15",
     ],
     "porkchop": [
         "orbits porkchop --from EMB --to Mars --step \"5 d\"",
-        "orbits porkchop --from Earth --to Mars --launch 2028-09-01:2029-01-31 \\\n"
-        "    --arrival 2029-06-01:2030-03-01 --step \"10 d\" --plot porkchop.png",
+        'orbits porkchop --from Earth --to Mars --depart 2028-09-01:2029-01-31 --arrive '
+        '2029-06-01:2030-03-01 --step "10 d" --plot porkchop.png',
     ],
     "collide": [
         'orbits collide --m1 "2 kg" --v1 "3 m/s" --m2 "1 kg" --v2 "0 m/s" --restitution 0.8',
@@ -139,8 +139,7 @@ EXAMPLES = {
     ],
     "projectile": [
         'orbits projectile --speed "20 m/s" --angle 45',
-        'orbits projectile --speed "20 m/s" --angle 45 --drag quadratic \\\n'
-        '    --terminal-speed "30 m/s"',
+        'orbits projectile --speed "20 m/s" --angle 45 --drag quadratic --terminal-speed "30 m/s"',
     ],
     "pendulum": [
         'orbits pendulum --length "1 m" --amplitude "170 deg"',
@@ -151,8 +150,8 @@ EXAMPLES = {
         "orbits info --format json",
     ],
     "escape speed": [
-        "orbits escape speed Moon",
-        'orbits escape speed Earth --distance "384399 km"',
+        "orbits escape speed --primary Moon",
+        'orbits escape speed --primary Earth --at-r "384399 km"',
     ],
     "escape cosmic": [
         "orbits escape cosmic",
@@ -160,55 +159,53 @@ EXAMPLES = {
     ],
     "escape geo": [
         "orbits escape geo",
-        "orbits escape geo Jupiter",
+        "orbits escape geo --primary Jupiter",
     ],
     "escape elongation": [
         'orbits escape elongation --inner "0.723 AU" --outer Earth',
         "orbits escape elongation --inner Mercury --outer Earth",
     ],
     "transfer hohmann": [
-        'orbits transfer hohmann --r1 "6678 km" --r2 "42164 km"',
-        'orbits transfer hohmann --r1 "6678 km" --r2 "42164 km" --inc "28.5 deg"',
+        'orbits transfer hohmann --radius1 "6678 km" --radius2 "42164 km"',
+        'orbits transfer hohmann --radius1 "6678 km" --radius2 "42164 km" --inc "28.5 deg"',
         "orbits transfer hohmann --from Earth --to Mars",
     ],
     "transfer bi-elliptic": [
-        'orbits transfer bi-elliptic --r1 "7000 km" --r2 "105000 km" --rb "210000 km"',
-        'orbits transfer bi-elliptic --primary Sun --r1 "1 AU" --r2 "30 AU" --rb "60 AU"',
+        'orbits transfer bi-elliptic --radius1 "7000 km" --radius2 "105000 km" --apoapsis "210000 km"',
+        'orbits transfer bi-elliptic --primary Sun --radius1 "1 AU" --radius2 "30 AU" --apoapsis "60 AU"',
     ],
     "transfer plane-change": [
-        'orbits transfer plane-change --r "7000 km" --angle "30 deg"',
-        'orbits transfer plane-change --r "42164 km" --angle "28.5 deg" --format json',
+        'orbits transfer plane-change --radius "7000 km" --inc "30 deg"',
+        'orbits transfer plane-change --radius "42164 km" --inc "28.5 deg" --format json',
     ],
     "transfer phasing": [
-        'orbits transfer phasing --r "7000 km" --phase "20 deg" --revolutions 2',
-        'orbits transfer phasing --r "42164 km" --phase "-60 deg"',
+        'orbits transfer phasing --radius "7000 km" --phase "20 deg" --revolutions 2',
+        'orbits transfer phasing --radius "42164 km" --phase "-60 deg"',
     ],
     "transfer departure": [
-        'orbits transfer departure --r "6678 km" --v-inf "3 km/s"',
-        'orbits transfer departure --primary Mars --r "3700 km" --v-inf "2.6 km/s"',
+        'orbits transfer departure --radius "6678 km" --v-inf "3 km/s"',
+        'orbits transfer departure --primary Mars --radius "3700 km" --v-inf "2.6 km/s"',
     ],
     "transfer assist": [
-        'orbits transfer assist --planet Jupiter --v-in "0,7.4,0 km/s" \\\n'
-        '    --v-planet "0,13.06,0 km/s" --periapsis "200000 km"',
-        'orbits transfer assist --planet Venus --v-in "0,30,3 km/s" \\\n'
-        '    --v-planet "0,35,0 km/s" --periapsis "7000 km"',
+        'orbits transfer assist --primary Jupiter --v-in "0,7.4,0 km/s" --v-planet "0,13.06,0 km/s" '
+        '--periapsis "200000 km"',
+        'orbits transfer assist --primary Venus --v-in "0,30,3 km/s" --v-planet "0,35,0 km/s" --periapsis "7000 km"',
     ],
     "perturb rates": [
-        'orbits perturb rates Earth --altitude "400 km" --inc 51.64',
-        'orbits perturb rates Mars --a "9378 km" --inc 1.1 --format json',
-        'orbits perturb rates --a "26554 km" --e 0.74 --inc 63.43 --argp 270 \\\n'
-        "    --revolutions 10 --plot molniya.png  # a Molniya orbit's node and periapsis",
+        'orbits perturb rates --altitude "400 km" --inc 51.64',
+        'orbits perturb rates --primary Mars --a "9378 km" --inc 1.1 --format json',
+        "orbits perturb rates --a \"26554 km\" --e 0.74 --inc 63.43 --argp 270 --plot-revolutions 10 --plot "
+        "molniya.png  # a Molniya orbit's node and periapsis",
     ],
     "perturb sun-synchronous": [
         'orbits perturb sun-synchronous --altitude "700 km"  # 98.19 deg',
         "orbits perturb sun-synchronous --inc 99",
-        'orbits perturb sun-synchronous --altitude "700 km" --revolutions 15 \\\n'
-        "    --plot sun-synchronous.png",
+        'orbits perturb sun-synchronous --altitude "700 km" --plot-revolutions 15 --plot sun-synchronous.png',
     ],
     "perturb frozen": [
         'orbits perturb frozen --altitude "700 km" --inc 98.19',
         'orbits perturb frozen --altitude "1336 km" --inc 66',
-        'orbits perturb frozen --altitude "700 km" --inc 98.19 --plot frozen.png --revolutions 300',
+        'orbits perturb frozen --altitude "700 km" --inc 98.19 --plot frozen.png --plot-revolutions 300',
     ],
     "perturb repeat": [
         "orbits perturb repeat --revolutions 127 --days 10 --inc 66.04  # TOPEX/Jason",
@@ -218,15 +215,15 @@ EXAMPLES = {
     "perturb decay": [
         'orbits perturb decay --altitude "280 km" --ballistic "0.022 m2/kg"',
         'orbits perturb decay --altitude "400 km" --ballistic "0.005 m2/kg" --plot decay.png',
-        'orbits perturb decay Mars --altitude "200 km" --ballistic "0.01 m2/kg" \\\n'
-        '    --density "0.020 kg/m3" --scale-height "11.1 km" --base-altitude "0 km" \\\n'
-        "    --plot mars.png  # ends where it sinks H a revolution",
+        'orbits perturb decay --primary Mars --altitude "200 km" --ballistic "0.01 m2/kg" --density "0.020 '
+        'kg/m3" --scale-height "11.1 km" --base-altitude "0 km" --plot mars.png  # ends where it sinks H a '
+        'revolution',
     ],
     "perturb kozai": [
-        'orbits perturb kozai --m0 Sun --m3 Jupiter --a "1 AU" --a-out "5.2 AU" --inc 65',
-        'orbits perturb kozai --m0 Earth --m3 Sun --a "50000 km" --a-out "1 AU" --inc 80',
-        'orbits perturb kozai --m0 "1 solMass" --m3 "1 solMass" --a "1 AU" --a-out "12 AU" --inc 65 --e 0.01 '
-        '--plot kozai.png',
+        'orbits perturb kozai --primary Sun --perturber Jupiter --a "1 AU" --a-out "5.2 AU" --inc 65',
+        'orbits perturb kozai --primary Earth --perturber Sun --a "50000 km" --a-out "1 AU" --inc 80',
+        'orbits perturb kozai --primary "1 solMass" --perturber "1 solMass" --a "1 AU" --a-out "12 AU" --inc '
+        '65 --e 0.01 --plot kozai.png',
     ],
     "perturb relativity": [
         "orbits perturb relativity Mercury  # 42.98 arcsec per century",
@@ -285,9 +282,39 @@ def reflow(text: str) -> str:
     return "\n\n".join(p for p in paragraphs if p)
 
 
+#: the longest line of an example on a help page (the page is 80 columns, with a margin each side)
+EXAMPLE_WIDTH = 76
+
+
+def example_lines(example: str) -> list[str]:
+    """An example broken into lines of at most EXAMPLE_WIDTH characters that a shell reads as one command: each
+    line but the last ends with " \\", a break falls only between an option and the next one (never inside a
+    quoted value), and a "  # comment" stays on the last line when it fits, else on a line of its own."""
+    command, _, comment = example.partition("  # ")
+    lexer = shlex.shlex(command, posix=False)
+    lexer.whitespace_split = True
+    words = list(lexer)
+    groups = []
+    for word in words:
+        if groups and not word.startswith("--") and groups[-1][0].startswith("--") and len(groups[-1]) == 1:
+            groups[-1].append(word)
+        else:
+            groups.append([word])
+    lines, line = [], ""
+    for group in (" ".join(g) for g in groups):
+        if line and len(line) + 1 + len(group) + 2 > EXAMPLE_WIDTH:
+            lines.append(line + " \\")
+            line = "    " + group
+        else:
+            line = f"{line} {group}" if line else group
+    if comment and len(line) + 4 + len(comment) > EXAMPLE_WIDTH:
+        return [*lines, line, f"# {comment}"]
+    return [*lines, line + (f"  # {comment}" if comment else "")]
+
+
 def epilog(path: str) -> str:
-    """The examples of a command as its help page's last lines."""
-    return "Examples:\n" + "\n".join(f"  {example}" for example in EXAMPLES[path])
+    """The examples of a command as its help page's last lines, each broken to fit (example_lines)."""
+    return "Examples:\n" + "\n".join(f"  {line}" for example in EXAMPLES[path] for line in example_lines(example))
 
 
 class ListsScenes(TyperCommand):
@@ -296,7 +323,7 @@ class ListsScenes(TyperCommand):
 
     @property
     def epilog(self) -> str:
-        from orbits.display import filled
+        from orbits._common.display import filled
         from orbits.validate import summaries
 
         scenes = "\n".join(filled(f"{name}: {line}", 76, initial_indent="  ", subsequent_indent="      ")
@@ -307,6 +334,20 @@ class ListsScenes(TyperCommand):
     def epilog(self, value: str) -> None:
         self._examples = value
 
+
+#: the panels of `orbits --help`: each subject's verbs together, in the order of the house's subjects
+SUBJECTS = {
+    "Two-body orbits": ("orbit", "kepler"),
+    "Binaries, flybys, escape": ("binary", "flyby", "escape"),
+    "Three bodies": ("lagrange", "ring", "periodic"),
+    "Manoeuvres": ("transfer", "rocket", "lambert", "porkchop"),
+    "Perturbed orbits": ("perturb",),
+    "The solar system": ("where",),
+    "Cosmology": ("cosmology",),
+    "The course's mechanics": ("collide", "projectile", "pendulum"),
+    "Checks and facts": ("validate", "bench", "info"),
+}
+_PANEL = {verb: panel for panel, verbs in SUBJECTS.items() for verb in verbs}
 
 #: commands whose help pages need more than their examples
 CLASSES = {"validate": ListsScenes}
@@ -322,7 +363,11 @@ def document(app: typer.Typer, prefix: str = "") -> None:
             info.epilog = epilog(path)
         if path in CLASSES:
             info.cls = CLASSES[path]
+        if not prefix:
+            info.rich_help_panel = _PANEL[path]
     for group in app.registered_groups:
         path = f"{prefix}{group.name}"
         group.short_help = SUMMARY.get(path, group.short_help)
+        if not prefix:
+            group.rich_help_panel = _PANEL[path]
         document(group.typer_instance, f"{path} ")

@@ -1,8 +1,8 @@
-"""Command-line spellings of the library's input rules (orbits.inputs): the options' names, nothing more."""
+"""Command-line spellings of the library's input rules (orbits._common.inputs): the options' names, nothing more."""
 
 from typing import TYPE_CHECKING
 
-from orbits.inputs import parse_angle
+from orbits._common.inputs import parse_angle
 
 if TYPE_CHECKING:
     from astropy.units import Quantity

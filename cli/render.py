@@ -1,6 +1,6 @@
 """Rendering of calculator results: tables a person reads in 80 columns, or strict JSON with full precision.
 
-Tables show each quantity in the unit orbits.display chooses (natural units by default, `--units si`, a
+Tables show each quantity in the unit orbits._common.display chooses (natural units by default, `--units si`, a
 per-quantity `--unit NAME=UNIT`, `--digits N`). JSON carries every value exactly as the library returns it, the
 float64 bit for bit with its unit ({name: {"value", "unit"}}, SI with angles in rad); a non-finite value, which
 JSON (RFC 8259) cannot hold, is the string "inf", "-inf" or "nan", which float() reads back.
@@ -94,14 +94,14 @@ def to_json(quantities: "Mapping[str, Quantity]", about: "Mapping[str, str] | No
 
 
 def _shown(q, name, unit=None):
-    from orbits.display import shown
+    from orbits._common.display import shown
 
     return shown(q, name, DISPLAY.system, DISPLAY.overrides, DISPLAY.digits, unit)
 
 
 def number(x: float) -> str:
-    """x with the display's significant digits (orbits.display.number)."""
-    from orbits.display import number as display_number
+    """x with the display's significant digits (orbits._common.display.number)."""
+    from orbits._common.display import number as display_number
 
     return display_number(x, DISPLAY.digits)
 
@@ -117,7 +117,7 @@ def quantity_table(title: str, quantities: "Mapping[str, Quantity]", prefix: str
     grid.add_column("quantity", overflow="fold")
     grid.add_column("value", justify="right", overflow="fold")
     grid.add_column("unit", overflow="fold")
-    from orbits.display import table_units
+    from orbits._common.display import table_units
 
     units = table_units({prefix + name: q for name, q in quantities.items()}, DISPLAY.system, DISPLAY.overrides)
     for name, q in quantities.items():
@@ -129,7 +129,7 @@ def quantity_table(title: str, quantities: "Mapping[str, Quantity]", prefix: str
 def _grid(columns):
     """A table whose headers are wrapped to the width of their numbers (10 columns at least), so that nothing
     in it wraps again and its measured width is the width it prints at."""
-    from orbits.display import wrapped
+    from orbits._common.display import wrapped
 
     grid = Table(box=box.SIMPLE_HEAD, pad_edge=False)
     for header, cells in columns:
@@ -162,7 +162,7 @@ def column(name: str, q: "Quantity", header: str | None = None, like: "Quantity 
            ) -> tuple[str, list[str]]:
     """(header "name [unit]", one cell per element) of a 1-D quantity, in the display unit of q (or of `like`,
     so that the components of one vector share a unit)."""
-    from orbits.display import number, unit_for, unit_text
+    from orbits._common.display import number, unit_for, unit_text
 
     unit = unit_for(q if like is None else like, name, DISPLAY.system, DISPLAY.overrides)
     cells = [number(v, DISPLAY.digits) for v in np.ravel(q.to_value(unit))]
@@ -210,7 +210,7 @@ def grouped_tables(quantities: "Mapping[str, Quantity]", groups: Sequence[tuple[
 def print_tables(tables: Sequence[Table | str], title: str = "") -> None:
     """Print the title wrapped to the console's width, then the tables (a string among them is a heading, wrapped
     the same way)."""
-    from orbits.display import filled
+    from orbits._common.display import filled
 
     out = console()
     if title:
@@ -220,9 +220,11 @@ def print_tables(tables: Sequence[Table | str], title: str = "") -> None:
 
 
 def emit(title: str, quantities: "Mapping[str, Quantity]", fmt: str, *, index: str | None = None,
-         groups: Sequence[tuple[str, str]] = (), about: "Mapping[str, str] | None" = None) -> None:
+         groups: Sequence[tuple[str, str]] = (), about: "Mapping[str, str] | None" = None,
+         notes: str = "") -> None:
     """Print quantities as JSON (with `about`, see to_json), or as tables under the title: one row per element of
-    `index` when given, grouped by name prefix when `groups` are given, else one row per quantity."""
+    `index` when given, grouped by name prefix when `groups` are given, else one row per quantity; `notes` (where
+    the numbers come from, how far to trust them) follow the tables, so that the answer comes first."""
     unknown = sorted(set(DISPLAY.overrides) - set(quantities))
     if unknown:
         raise ValueError(f"--unit {', '.join(unknown)}: no such quantity here; choose from {', '.join(quantities)}")
@@ -234,13 +236,15 @@ def emit(title: str, quantities: "Mapping[str, Quantity]", fmt: str, *, index: s
         print_tables(grouped_tables(quantities, groups), title)
     else:
         print_tables([quantity_table("", quantities)], title)
+    if notes and fmt != "json":
+        print_tables([notes])
 
 
 # ---- the validation report ---------------------------------------------------------------------------------
 
 
 def _error(x):
-    from orbits.display import number
+    from orbits._common.display import number
 
     return "-" if x is None else number(x, 2)
 
@@ -251,7 +255,7 @@ def _analytic(check):
         return ""
     import astropy.units as u
 
-    from orbits.display import number, quantity_text
+    from orbits._common.display import number, quantity_text
 
     try:
         return " = " + quantity_text(u.Quantity(check["analytic"], check["unit"] or u.one))
@@ -265,9 +269,10 @@ _KINDS = {"relative error": "rel", "relative drift": "rel drift", "absolute drif
 def validation_report(data: dict[str, Any]) -> None:
     """Print a validation report (the dict of ValidationReport.to_dict): per scene its verdict, then one line
     per check led by its verdict, each backend's error and the tolerance; settings follow as plain lines."""
-    from orbits.display import (
+    from orbits._common.display import (
         filled,
-        printable,  # text from scene files: no control character reaches the terminal
+        printable,
+        # text from scene files: no control character reaches the terminal,
     )
 
     out = console()
@@ -302,8 +307,51 @@ def validation_report(data: dict[str, Any]) -> None:
             settings = ", ".join(f"{k}={v}" for k, v in scene["settings"][name].items())
             out.print(line(f"{name} {scene['versions'][name]}: {settings}; {scene['time_modes'][name]}"))
         out.print()
-    verdict = "[green]all checks passed[/green]" if data["passed"] else "[red]some checks FAILED[/red]"
-    out.print(f"{verdict} ({len(data['scenes'])} scenes)")
+    validation_summary(data)
+
+
+def validation_summary(data: dict[str, Any]) -> None:
+    """One row per scene, one screen for the built-in set: each backend's worst check as a fraction of its
+    tolerance (at most 1 passes; the check's kind and size are in the full report), the scene's run time, and a
+    last line naming the scenes that failed."""
+    from orbits._common.display import printable
+
+    out = console()
+    backends = list(dict.fromkeys(b for scene in data["scenes"] for b in list(scene["wall_time_s"])[1:]))
+    out.print("worst error / tolerance per scene (at most 1 passes)")
+    grid = Table(box=box.SIMPLE_HEAD, pad_edge=False, padding=(0, 1))
+    grid.add_column("scene", no_wrap=True, overflow="ellipsis", max_width=34)
+    grid.add_column("", no_wrap=True)
+    for name in backends:
+        grid.add_column(escape(name), justify="right", no_wrap=True)
+    grid.add_column("time", justify="right", no_wrap=True)
+    for scene in data["scenes"]:
+        mark = "[green]pass[/green]" if scene["passed"] else "[red]FAIL[/red]"
+        used = [_worst_share(scene, name) for name in backends]
+        grid.add_row(escape(printable(scene["name"])), mark, *(_share(u) for u in used),
+                     _seconds(sum(scene["wall_time_s"].values())))
+    out.print(grid)
+    failed = [scene["name"] for scene in data["scenes"] if not scene["passed"]]
+    if failed:
+        out.print(escape(f"{len(failed)} of {len(data['scenes'])} scenes FAILED: {', '.join(failed)}"),
+                  style="red")
+    else:
+        checks = sum(len(scene["checks"]) for scene in data["scenes"])
+        out.print(f"[green]all {checks} checks of {len(data['scenes'])} scenes passed[/green]")
+
+
+def _worst_share(scene: dict[str, Any], backend: str) -> float | None:
+    """max over the scene's checks of |error| / tolerance for `backend` (None where it ran no check)."""
+    shares = [check["errors"][backend] / check["tolerance"] for check in scene["checks"]
+              if check["errors"].get(backend) is not None and check["tolerance"]]
+    return max(shares) if shares else None
+
+
+def _share(share: float | None) -> str:
+    if share is None:
+        return "-"
+    text = f"{share:.2g}"
+    return text if share <= 1.0 else f"[red]{text}[/red]"
 
 
 def _seconds(seconds: float | None) -> str:
@@ -328,7 +376,7 @@ def _setting(setting: Any) -> str:
 def precision_tables(data: dict[str, Any]) -> None:
     """Print the work-precision summary, one table per problem: each method's best error with its setting and run
     time, and its fastest run reaching the target."""
-    from orbits.display import filled
+    from orbits._common.display import filled
 
     out = console()
     target = _error(data["target"])

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from orbits.core.elements import elements_to_state
+from orbits.core.twobody.elements import elements_to_state
 
 
 def grazing_flight(rng):

@@ -81,10 +81,101 @@ def untypeset(figure):
     return found
 
 
+def _in_view_pixels(ax, artist):
+    """The window positions (pixels) of the finite points of a Line2D or a collection's offsets that lie inside
+    the axes' view; None for an artist of another kind."""
+    import numpy as np
+    from matplotlib.collections import Collection
+    from matplotlib.lines import Line2D
+
+    if isinstance(artist, Line2D):
+        x, y = (np.asarray(a, dtype=float).ravel() for a in artist.get_data(orig=False))
+        points = np.column_stack([x, y]) if x.size == y.size else np.zeros((0, 2))
+    elif isinstance(artist, Collection) and len(artist.get_offsets()):
+        points = np.asarray(artist.get_offsets(), dtype=float).reshape(-1, 2)
+    else:
+        return None
+    points = points[np.all(np.isfinite(points), axis=1)]
+    pixels = artist.get_transform().transform(points) if len(points) else np.zeros((0, 2))
+    box = ax.get_window_extent()
+    inside = ((pixels[:, 0] >= box.x0 - 0.5) & (pixels[:, 0] <= box.x1 + 0.5) & (pixels[:, 1] >= box.y0 - 0.5)
+              & (pixels[:, 1] <= box.y1 + 0.5))
+    return pixels[inside]
+
+
+def _draws_something(ax, artist):
+    """Whether `artist` leaves a mark a reader can see in its axes: visible, not transparent, and for a curve of
+    two points or more an extent of at least 2 pixels."""
+    from matplotlib.lines import Line2D
+
+    if not artist.get_visible() or artist.get_alpha() == 0:
+        return False
+    if getattr(ax, "name", "") == "3d":
+        return _has_data(artist)  # projected at draw time
+    pixels = _in_view_pixels(ax, artist)
+    if pixels is None:
+        return True  # a patch, an image or a contour set: drawn as it is
+    if isinstance(artist, Line2D) and artist.get_marker() in ("None", "", " ", None) and len(pixels) >= 2:
+        extent = pixels.max(axis=0) - pixels.min(axis=0)
+        return bool(max(extent) >= 2.0 and artist.get_linewidth() > 0)
+    return len(pixels) > 0
+
+
+def _has_data(artist):
+    """Whether a curve or a collection holds points (a legend's proxy, drawn for its entry alone, holds none)."""
+    from matplotlib.collections import Collection
+    from matplotlib.lines import Line2D
+
+    if isinstance(artist, Line2D):
+        return len(artist.get_xdata(orig=False)) > 0
+    if isinstance(artist, Collection):
+        return len(artist.get_offsets()) > 0 or len(artist.get_paths()) > 0
+    return True
+
+
+def invisible_curves(figure):
+    """Labelled curves and markers that leave no visible mark: all their points outside the view, or a curve
+    shrunk below 2 pixels (an orbit too small for the frame it is drawn in). A legend's proxy (a labelled artist
+    with no points) stands for marks drawn by others and is not counted."""
+    figure.canvas.draw()
+    found = []
+    for ax in figure.axes:
+        for artist in [*ax.get_lines(), *ax.collections]:
+            label = str(artist.get_label())
+            if label.startswith("_") or not label.strip() or not _has_data(artist):
+                continue
+            if not _draws_something(ax, artist):
+                found.append(label)
+    return found
+
+
+def _marks(ax):
+    return [a for a in [*ax.get_lines(), *ax.collections, *ax.patches, *ax.images]
+            if _has_data(a) and _draws_something(ax, a)]
+
+
+def blank_panels(figure):
+    """Axes with a frame on and nothing drawn in them: no curve, marker, collection, patch or image."""
+    figure.canvas.draw()
+    return [ax.get_title() or ax.get_label() or "an untitled panel" for ax in figure.axes
+            if ax.axison and ax.get_label() != "<colorbar>" and not _marks(ax)]
+
+
+def blank_figure(figure):
+    """Whether no panel of the figure draws anything (text alone, such as a sentence saying why, is blank)."""
+    figure.canvas.draw()
+    return not any(_marks(ax) for ax in figure.axes)
+
+
 def problems(figure):
     """Everything the shared checks find wrong with a picture: overlapping texts, text outside the figure, a
-    legend entry twice, no title, untypeset powers. Empty for a picture fit for a talk."""
+    legend entry twice, no title, untypeset powers, a blank panel or a blank figure, a labelled curve that
+    leaves no visible mark (so its legend entry names nothing drawn). Empty for a picture fit for a talk."""
     found = [f"overlap: {a!r} / {b!r}" for a, b in overlapping_texts(figure)]
+    found += [f"blank panel: {name!r}" for name in blank_panels(figure)]
+    if blank_figure(figure):
+        found.append("blank figure: no panel draws anything")
+    found += [f"nothing drawn for {label!r}" for label in invisible_curves(figure)]
     labels = legend_labels(figure)
     found += [f"legend entry twice: {label!r}" for label in sorted({x for x in labels if labels.count(x) > 1})]
     if not titles(figure):

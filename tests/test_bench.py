@@ -75,7 +75,7 @@ def test_absent_peers_are_skipped_with_a_note(rows, method, module):
 
 
 def test_orbits_is_skipped_only_when_its_module_cannot_be_imported(monkeypatch):
-    monkeypatch.setitem(sys.modules, "orbits.core.kepler", None)  # makes the import raise ImportError
+    monkeypatch.setitem(sys.modules, "orbits.core.twobody.kepler", None)  # makes the import raise ImportError
     rows = kepler.bench_kepler(**{**SIZES, "n_easy": 10, "n_hard": 10, "n_hyp": 10, "n_ref": 2})
     assert all(r.status == "skipped" and "not installed" in r.note for r in rows if r.method == "orbits")
 
@@ -299,7 +299,7 @@ def test_the_ephemeris_bench_reads_what_jplephem_reads():
 
     rows = bench_ephemeris(n=2000, repeats=1)
     timed = [r for r in rows if r.status == "ok"]
-    assert [r.name.split()[0] for r in timed] == ["jplephem", "orbits.ephemeris.state", "astropy"]
+    assert [r.name.split()[0] for r in timed] == ["jplephem", "orbits.ephemeris.positions.state", "astropy"]
     assert all(r.dr == 0.0 and r.dv == 0.0 and r.per_second > 0 for r in timed)  # the same file, the same sums
     assert max(len(line) for line in format_ephemeris(rows).splitlines()) <= WIDTH
 

@@ -6,11 +6,10 @@ import pytest
 da = pytest.importorskip("dask.array")
 pytest.importorskip("distributed")
 
-from orbits import scene  # noqa: E402
-from orbits.core import elements  # noqa: E402
-from orbits.core.propagate import propagate  # noqa: E402
+from orbits.core.twobody import elements  # noqa: E402
+from orbits.core.twobody.propagate import propagate  # noqa: E402
 from orbits.tools import distributed  # noqa: E402
-from orbits.validate import models  # noqa: E402
+from orbits.validate import models, scene  # noqa: E402
 from orbits.validate import scenes as scenes_module  # noqa: E402
 from orbits.validate.run import validate  # noqa: E402
 

@@ -6,7 +6,7 @@ Layers, bottom up; a module may import its own layer and the layers below it:
     0 core         orbits.core.*: float64 NumPy; numpy, the standard library and (in the _fast kernels) numba
     1 base         units, constants, catalogue_orbits, inputs (the input rules), nbody, io, tables, display, system
     2 domain       orbit, kepler, binary, flyby, escape, lagrange, rings, cosmology, scene, predict, and the
-                   pictures orbits.plot.* (one module per subject over the shared orbits.plot.frame)
+                   pictures orbits.plot.* (one module per subject over the shared orbits._common.frame)
     3 validation   orbits.validate.*
     4 tools        orbits.tools.* (benchmarks, precision sweeps, the mpmath reference, Dask)
     5 interfaces   orbits_cli.*, which calls the public library only: never orbits.core nor a private module
@@ -21,9 +21,7 @@ import textwrap
 
 import pytest
 
-BASE = {"orbits.units", "orbits.constants", "orbits.catalogue_orbits", "orbits.inputs", "orbits.nbody", "orbits.io",
-        "orbits.tables", "orbits.display", "orbits.system"}
-FACADE = "orbits"
+FACADES = {"orbits", "orbits.plot"}
 HEAVY = ("astropy", "rebound", "heyoka", "numba", "matplotlib", "dask", "distributed", "mpmath", "scipy")
 
 
@@ -31,11 +29,11 @@ def layer(module):
     """Rank of one of our modules in the layering (the facade ranks with the tools)."""
     if module.startswith("orbits.core"):
         return 0
-    if module in BASE:
+    if module.startswith("orbits._common"):
         return 1
     if module.startswith("orbits.validate"):
         return 3
-    if module.startswith("orbits.tools") or module == FACADE:
+    if module.startswith("orbits.tools") or module in FACADES:
         return 4
     if module.startswith("orbits_cli"):
         return 5
@@ -65,7 +63,7 @@ def heavy(modules):
 
 
 def ours(modules):
-    return {m for m in modules if m == FACADE or m.startswith(("orbits.", "orbits_cli"))}
+    return {m for m in modules if m in FACADES or m.startswith(("orbits.", "orbits_cli"))}
 
 
 # ---- what an import loads -------------------------------------------------------------------------------
@@ -77,10 +75,14 @@ def test_import_orbits_loads_nothing_heavy():
 
 
 CORE_MODULES = [
-    "anomalies", "binary", "checks", "elements", "errors", "escape", "flyby", "friedmann", "kepler", "lagrange",
-    "propagate", "quadrature", "rings", "series", "sphere", "twobody", "_dd", "_roots", "frames", "rocket",
-    "manoeuvres", "assist", "collisions", "rotation", "projectile", "oscillations",
-    "lambert", "transition", "cr3bp", "dop853", "libration", "shooting", "continuation", "families",
+    "twobody.anomalies", "encounters.binary", "checks", "twobody.elements", "errors", "encounters.escape",
+    "encounters.flyby", "cosmology.friedmann", "twobody.kepler", "threebody.lagrange", "twobody.propagate",
+    "cosmology.quadrature", "threebody.rings", "series", "cosmology.sphere", "twobody.twobody", "_dd", "_roots",
+    "frames", "manoeuvres.rocket", "manoeuvres.impulsive", "manoeuvres.assist", "mechanics.collisions",
+    "mechanics.rotation", "mechanics.projectile", "mechanics.oscillations", "manoeuvres.lambert",
+    "twobody.transition", "periodic.cr3bp", "dop853", "periodic.libration", "periodic.shooting",
+    "periodic.continuation", "periodic.families", "perturb.oblateness", "perturb.drag", "perturb.third_body",
+    "perturb.relativity",
 ]
 
 
@@ -89,7 +91,7 @@ def test_every_core_module_stands_alone(name):
     """The core loads numpy and itself only: no astropy, no JIT, and nothing of the layers above."""
     modules = loaded_after(f"import orbits.core.{name}")
     assert heavy(modules) == set()
-    assert {m for m in ours(modules) if m != FACADE and not m.startswith("orbits.core")} == set()
+    assert {m for m in ours(modules) if m not in FACADES and not m.startswith("orbits.core")} == set()
 
 
 def test_the_public_api_loads_no_integrator_jit_or_plotting_library():
@@ -155,17 +157,17 @@ runs = [
     ["orbit", "--primary", "Earth", "--r", "7000,0,0 km", "--v", "0,7.5,0 km/s"],
     ["binary", "--m1", "Earth", "--m2", "Moon", "--a", "384399 km", "--plot", os.path.join(out, "b.png")],
     ["flyby", "--primary", "Earth", "--v-inf", "1 km/s", "--b", "10000 km", "--plot", os.path.join(out, "f.png")],
-    ["lagrange", "Earth", "Moon"],
-    ["periodic", "Earth", "Moon", "--family", "halo", "--point", "L2", "--az", "5000 km"],
-    ["ring", "3", "--m", "1 kg", "--r", "1 m"],
+    ["lagrange", "--primary", "Earth", "--secondary", "Moon"],
+    ["periodic", "--primary", "Earth", "--secondary", "Moon", "--family", "halo", "--point", "L2", "--az", "5000 km"],
+    ["ring", "3", "--mass", "1 kg", "--radius", "1 m"],
     ["escape", "cosmic"],
     ["where", "Mars", "--epoch", "2026-11-25", "--plot", os.path.join(out, "w.png")],
     ["orbit", "Mars", "--epoch", "2026-11-25 TDB"],
-    ["escape", "geo", "Earth"],
+    ["escape", "geo", "--primary", "Earth"],
     ["rocket", "--m0", "100 t", "--mf", "40 t", "--isp", "300 s", "--thrust", "2 MN"],
-    ["transfer", "hohmann", "--r1", "6678 km", "--r2", "42164 km", "--format", "json"],
+    ["transfer", "hohmann", "--radius1", "6678 km", "--radius2", "42164 km", "--format", "json"],
     ["lambert", "--r1", "1,0,0 AU", "--r2", "0,1.5,0 AU", "--tof", "200 d", "--format", "json"],
-    ["porkchop", "--launch", "2026-10-01:2026-12-01", "--arrival", "2027-07-01:2027-10-01", "--step", "15 d",
+    ["porkchop", "--depart", "2026-10-01:2026-12-01", "--arrive", "2027-07-01:2027-10-01", "--step", "15 d",
      "--plot", os.path.join(out, "pc.png")],
     ["cosmology", "--z", "1", "--plot", os.path.join(out, "c.png")],
     ["validate", "circular", "expanding_universe", "--output", os.path.join(out, "v.json"),
@@ -174,7 +176,7 @@ runs = [
     ["collide", "--m1", "2 kg", "--v1", "3 m/s", "--m2", "1 kg", "--v2", "0 m/s", "--plot", os.path.join(out, "k.png")],
     ["projectile", "--speed", "20 m/s", "--angle", "45", "--drag", "quadratic", "--terminal-speed", "30 m/s"],
     ["pendulum", "--length", "1 m", "--amplitude", "170 deg", "--plot", os.path.join(out, "p.png")],
-    ["perturb", "rates", "--altitude", "400 km", "--inc", "51.64", "--revolutions", "1", "--plot",
+    ["perturb", "rates", "--altitude", "400 km", "--inc", "51.64", "--plot-revolutions", "1", "--plot",
      os.path.join(out, "j2.png")],
     ["perturb", "decay", "--altitude", "280 km", "--ballistic", "0.022 m2/kg", "--plot", os.path.join(out, "d.png")],
 ]
@@ -199,7 +201,7 @@ def edges():
 def test_the_probe_sees_the_imports_inside_functions(edges):
     """The record is not vacuous: the lazy imports inside commands and adapters are there."""
     assert ("orbits_cli.commands.validate", "orbits.validate") in edges
-    assert ("orbits.orbit", "orbits.plot") in edges  # Orbit.plot draws through the pictures
+    assert ("orbits.twobody.orbit", "orbits.twobody.plot") in edges  # Orbit.plot draws its own subject's picture
     assert ("orbits.validate._rebound", "rebound") in edges and ("orbits.validate._heyoka", "heyoka") in edges
     assert any(src.startswith("orbits.core") and dst.startswith("orbits.core") for src, dst in edges)
 
@@ -251,21 +253,30 @@ def test_no_module_imports_itself_back(edges):
 
 
 def test_the_picture_frame_imports_no_picture(edges):
-    """orbits.plot.frame is what every picture builds on: it imports no other module of orbits.plot."""
-    assert [(src, dst) for src, dst in edges if src == "orbits.plot.frame" and dst.startswith("orbits.plot")] == []
-    assert ("orbits.plot.conics", "orbits.plot.frame") in edges
+    """orbits._common.frame is what every picture builds on: it imports no other module of orbits.plot."""
+    assert [(src, dst) for src, dst in edges if src == "orbits._common.frame" and dst.startswith("orbits.plot")] == []
+    assert ("orbits.twobody.plot", "orbits._common.frame") in edges
 
 
 def test_imports_flow_one_way(edges):
     """No module imports a layer above its own (e.g. domain -> validation, validation -> tools, core -> units)."""
     upward = [(src, dst) for src, dst in edges
-              if src != FACADE and dst.split(".")[0] in ("orbits", "orbits_cli") and layer(dst) > layer(src)]
+              if src not in FACADES and dst.split(".")[0] in ("orbits", "orbits_cli") and layer(dst) > layer(src)]
     assert upward == []
 
 
+def test_no_verb_imports_another(edges):
+    """What two verbs share lives in orbits_cli.options; a verb's module imports no other verb's."""
+    across = [(src, dst) for src, dst in edges if src.startswith("orbits_cli.commands.")
+              and dst.startswith("orbits_cli.commands.") and src != dst]
+    assert across == []
+
+
 def test_the_command_line_calls_only_the_public_library(edges):
-    """orbits_cli never reaches into the numeric core or a private module: it calls unit-aware functions."""
+    """orbits_cli never reaches into the numeric core or a private module: it calls unit-aware functions, and
+    reads text with the library's own input rules and display (orbits._common, the house's infrastructure)."""
     behind = [(src, dst) for src, dst in edges if src.startswith("orbits_cli") and dst.startswith("orbits.")
+              and not dst.startswith("orbits._common")
               and (dst.startswith("orbits.core") or any(part.startswith("_") for part in dst.split(".")))]
     assert behind == []
 

@@ -4,7 +4,7 @@ and the sweep sees accuracy improve with each knob."""
 import numpy as np
 import pytest
 
-from orbits.core import elements
+from orbits.core.twobody import elements
 from orbits.tools import precision
 
 

@@ -83,7 +83,7 @@ def test_the_pattern_catches_each_kind_of_foreign_reference(text):
     'color="#333"', "color: #333", "fill='#1f77b4'", "JPL#48", "# a comment", "x = 2  # m/s",
     "issues in prose without a number", "open issues", "an erratic orbit", "1e-15 ulp",
     "row 45 of tests/stability/EDGE_CASES.md", "[EDGE_CASES.md](tests/stability/EDGE_CASES.md)",
-    "tests/stability/test_edge_cases.py", "orbits/core/kepler.py", "section XXII (binary stars)",
+    "tests/stability/test_edge_cases.py", "orbits/core/twobody/kepler.py", "section XXII (binary stars)",
     "the course's chapter on rockets",
     "https://github.com/numba/numba/issues/8172",
 ])

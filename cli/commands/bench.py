@@ -31,7 +31,7 @@ RepeatsOption = Annotated[int, _sized("timing repeats (best is kept)", "--repeat
 
 def _emit(data, table, fmt, output):
     """Print the table (or the JSON), and write the JSON atomically to `output` if given."""
-    from orbits.io import write_atomic
+    from orbits._common.io import write_atomic
     from orbits_cli import render
 
     text = render.dumps(data)

@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING, Annotated
 import typer
 
 from orbits_cli.options import (
+    MASS_HELP,
     EccentricityOption,
     Format,
     FormatOption,
@@ -17,16 +18,14 @@ from orbits_cli.options import (
     PlotOption,
     TrueAnomalyOption,
     _writable,
+    mass_or_body,
     save_plot,
 )
 
 if TYPE_CHECKING:
-    from astropy.units import Quantity
 
-    from orbits.binary import Binary, SpectroscopicBinary
-    from orbits.constants import Body
+    from orbits.encounters.binary import Binary, SpectroscopicBinary
 
-MASS_HELP = "body name (Earth, Moon, Sun, Jupiter), mass ('1.989e30 kg', '1 solMass') or GM ('3.986e14 m3/s2')"
 SkyOption = Annotated[str | None, typer.Option(
     "--sky", callback=_writable("--plot"), help="draw the apparent orbit on the sky (north up, east left) to this "
     ".png, .svg or .pdf file; the elements are read in the sky frame (x north, y east, z away from us)")]
@@ -68,7 +67,7 @@ def command(
     """Masses, relative orbit, each star's orbit about the centre of mass, energy and angular momentum (XXII), and,
     given --inc (the tilt to the sky), the radial-velocity semi-amplitudes and mass function. With --K: from a
     measured radial-velocity curve to the mass function and the companion's (minimum) mass."""
-    from orbits import inputs
+    from orbits._common import inputs
     from orbits_cli import render
 
     if k is not None:
@@ -76,7 +75,7 @@ def command(
                                                        "--argp": argp, "--nu": nu, "--gamma": gamma,
                                                        "--distance": distance, "--plot": plot, "--sky": sky,
                                                        "--rv": rv})
-        render.emit(f"From star 1's radial velocities: {result!r}", result.quantities(inputs.names(only)), fmt.value)
+        render.emit(result.title, result.quantities(inputs.names(only)), fmt.value)
         return
     if m1 is None or m2 is None:
         raise typer.BadParameter("give both masses --m1 and --m2 (or --K and --period for a measured "
@@ -104,7 +103,7 @@ def command(
 
 def draw(result: "Binary", plot: str | None, sky: str | None, rv: str | None, distance: str | None) -> None:
     """The pictures asked for: the orbits about the centre of mass, the sky, the radial velocities."""
-    from orbits.inputs import parse_quantity
+    from orbits._common.inputs import parse_quantity
 
     if distance is not None and sky is None:
         raise typer.BadParameter("--distance sets the scale of --sky: give --sky FILE too")
@@ -127,8 +126,8 @@ def spectroscopic(k: str, period: str | None, e: float, m1: str | None, inc: str
                   others: dict[str, str | None]) -> "SpectroscopicBinary":
     """The SpectroscopicBinary of --K, --period, --e and, if given, --m1 and --inc; BadParameter for options that
     belong to a binary of known masses."""
-    from orbits.binary import SpectroscopicBinary
-    from orbits.inputs import parse_angle, parse_quantity
+    from orbits._common.inputs import parse_angle, parse_quantity
+    from orbits.encounters.binary import SpectroscopicBinary
 
     given = [name for name, value in others.items() if value is not None]
     if given:
@@ -164,7 +163,8 @@ def build(
     import astropy.units as u
     import numpy as np
 
-    from orbits import Binary, inputs
+    from orbits import Binary
+    from orbits._common import inputs
     from orbits_cli import params
 
     sizes = {"a": a, "p": p, "q": q, "period": period}
@@ -182,13 +182,3 @@ def build(
         angles.pop("inc")  # not given: the tilt to the sky is unknown, and what needs sin i is left out
     return Binary.from_elements(mass_or_body(m1, "--m1"), mass_or_body(m2, "--m2"), e=e, com_v=com_v, **angles,
                                 **size)
-
-
-def mass_or_body(text: str, option: str) -> "Body | Quantity":
-    """A body (name), mass or GM parsed from `text`; BadParameter naming `option` otherwise."""
-    from orbits import OrbitDomainError, inputs
-
-    try:
-        return inputs.parse_primary(text)
-    except OrbitDomainError as err:
-        raise OrbitDomainError(f"{option}: {str(err).removeprefix('primary: ')}") from None

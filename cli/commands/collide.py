@@ -18,14 +18,16 @@ def command(
     m2: Annotated[str, typer.Option("--m2", help="mass of body 2")],
     v2: Annotated[str, typer.Option("--v2", help="velocity of body 2 (same form as --v1)")],
     restitution: Annotated[float, typer.Option("--restitution", help="e in [0, 1]: 1 elastic, 0 sticks")] = 1.0,
-    normal: Annotated[str | None, typer.Option(
-        "--normal", help="line of impact for vectors, e.g. '1,1' (default: along v1 - v2, the notes' model)")] = None,
+    line_of_impact: Annotated[str | None, typer.Option(
+        "--line-of-impact", help="line of impact for vectors, e.g. '1,1' (default: along v1 - v2, the notes' "
+        "model)")] = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
 ) -> None:
     """Velocities after, centre-of-mass velocity and kinetic energies of a collision (IX.vii-xiii)."""
-    from orbits import Collision, inputs
+    from orbits import Collision
+    from orbits._common import inputs
     from orbits_cli import render
 
     masses = inputs.parse_quantity(m1, "mass", "--m1"), inputs.parse_quantity(m2, "mass", "--m2")
@@ -33,12 +35,12 @@ def command(
     if first.ndim != second.ndim or first.size != second.size:
         raise typer.BadParameter("--v1 and --v2 must both be speeds along a line or both vectors of one size")
     if first.ndim == 0:
-        if normal is not None:
-            raise typer.BadParameter("--normal needs vector velocities ('3,4 m/s')")
+        if line_of_impact is not None:
+            raise typer.BadParameter("--line-of-impact needs vector velocities ('3,4 m/s')")
         result = Collision.head_on(masses[0], first, masses[1], second, restitution)
         title = "Head-on collision"
     else:
-        line = None if normal is None else _direction(normal, first.size)
+        line = None if line_of_impact is None else _direction(line_of_impact, first.size)
         result = Collision.oblique(masses[0], first, masses[1], second, restitution, normal=line)
         title = "Oblique collision"
     if plot:
@@ -49,8 +51,8 @@ def command(
 
 
 def velocity(text: str, option: str) -> "Quantity":
-    """A signed speed "3 m/s" or a 2-D / 3-D vector "3,4 m/s" (orbits.inputs rules: finite, a speed)."""
-    from orbits import inputs
+    """A signed speed "3 m/s" or a 2-D / 3-D vector "3,4 m/s" (orbits._common.inputs rules: finite, a speed)."""
+    from orbits._common import inputs
 
     numbers, _, unit = text.strip().partition(" ")
     count = numbers.count(",") + 1
@@ -65,7 +67,7 @@ def _direction(text: str, size: int) -> list[float]:
     try:
         values = [float(x) for x in text.split(",")]
     except ValueError:
-        raise typer.BadParameter(f"--normal {text!r}: write comma-separated numbers, e.g. '1,1'") from None
+        raise typer.BadParameter(f"--line-of-impact {text!r}: write comma-separated numbers, e.g. '1,1'") from None
     if len(values) != size:
-        raise typer.BadParameter(f"--normal {text!r} needs {size} components like the velocities")
+        raise typer.BadParameter(f"--line-of-impact {text!r} needs {size} components like the velocities")
     return values

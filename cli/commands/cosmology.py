@@ -11,7 +11,7 @@ if TYPE_CHECKING:
     import numpy
     from astropy.units import Quantity
 
-    from orbits.cosmology import Cosmology
+    from orbits.cosmology.models import Cosmology
 
 NOTES_HUBBLE = "0.5e-10 / yr"  # XXIV.iv's H, which gives the notes' age 1.33e10 yr
 MODELS = ("notes", "planck18", "planck18-radiation")
@@ -48,7 +48,7 @@ def command(
     the third follows from the sum 1. A closed universe (--Om 2 --Ok -1) runs through its turnaround to its big
     crunch. --plot draws a(t), the distances against z and the Hubble diagram.
     """
-    from orbits import inputs
+    from orbits._common import inputs
     from orbits_cli import render
 
     cosmology = build(h0, om, ol, orad, ok, model)
@@ -86,7 +86,7 @@ def build(
 
 def hubble_constant(text: str) -> "Quantity":
     """H0 Quantity from "VALUE UNIT" with units of 1 / time ("70 km/s/Mpc", "0.07 / Gyr")."""
-    from orbits import inputs
+    from orbits._common import inputs
 
     return inputs.parse_quantity(text, "rate", "--H0")
 
@@ -95,7 +95,7 @@ def epoch(z: str | None, t: str | None) -> "dict[str, Quantity | numpy.ndarray |
     """{"z": redshifts} or {"t": time} from the options (neither: today)."""
     import numpy as np
 
-    from orbits import inputs
+    from orbits._common import inputs
 
     if z is not None and t is not None:
         raise typer.BadParameter("give --z (a redshift) or --t (a time since the big bang), not both")

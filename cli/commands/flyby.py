@@ -4,11 +4,10 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from orbits_cli.commands.binary import MASS_HELP, mass_or_body
-from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
+from orbits_cli.options import MASS_HELP, Format, FormatOption, OnlyOption, PlotOption, mass_or_body, save_plot
 
 if TYPE_CHECKING:
-    from orbits.flyby import Flyby
+    from orbits.encounters.flyby import Flyby
 
 
 def command(
@@ -29,7 +28,7 @@ def command(
     plot: PlotOption = None,
 ) -> None:
     """Closest approach, speed there, eccentricity, semi-major axis and deflection of a flyby (XXI.vi, XXII.vi)."""
-    from orbits import inputs
+    from orbits._common import inputs
     from orbits_cli import render
 
     result, title = build(primary, v_inf, b, periapsis, mass, secondary)  # a collision is said, once, by Flyby
@@ -49,7 +48,8 @@ def build(
     primary: str, v_inf: str, b: str | None, periapsis: str | None, mass: str | None, secondary: str | None
 ) -> "tuple[Flyby, str]":
     """(Flyby, title) from the options; BadParameter for inconsistent combinations."""
-    from orbits import Flyby, inputs
+    from orbits import Flyby
+    from orbits._common import inputs
 
     if (b is None) == (periapsis is None):
         raise typer.BadParameter("give exactly one of --b (impact parameter) and --periapsis (closest approach)")

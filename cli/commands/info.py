@@ -22,7 +22,7 @@ def command(
 def show(fmt: str, sources: bool = False) -> None:
     """Print the facts as text within 80 columns (paths, which cannot be broken, on lines of their own) or as
     JSON (which always holds the sources)."""
-    from orbits.system import info
+    from orbits._common.system import info
     from orbits_cli import render
 
     facts = info()
@@ -39,13 +39,13 @@ def show(fmt: str, sources: bool = False) -> None:
 
 def _wrapped(label: str, text: str) -> list[str]:
     """`label: text` wrapped between words, continuation lines indented."""
-    from orbits.display import wrapped
+    from orbits._common.display import wrapped
 
     return wrapped(f"{label}: {text}", WIDTH, subsequent_indent="    ")
 
 
 def _summary(facts: dict) -> list[str]:
-    from orbits.display import wrapped
+    from orbits._common.display import wrapped
 
     versions = facts["versions"]
     others = ", ".join(f"{name} {version}" for name, version in versions.items() if name != "orbits")
@@ -61,7 +61,7 @@ def _summary(facts: dict) -> list[str]:
 
 
 def _sources(constants: dict) -> list[str]:
-    from orbits.display import wrapped
+    from orbits._common.display import wrapped
 
     lines = ["", "sources:"]
     for name, source in constants.items():
@@ -76,7 +76,7 @@ def _bodies(rows: list):
     from rich import box
     from rich.table import Table
 
-    from orbits.display import number
+    from orbits._common.display import number
 
     table = Table(box=box.SIMPLE, pad_edge=False, padding=(0, 0),
                   title="bodies (rot. < 0: retrograde; @ R: the reference radius of J2)")

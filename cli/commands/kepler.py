@@ -30,7 +30,8 @@ def command(
 def anomalies_from(e: float, mean: str | None, true: str | None) -> "dict[str, Quantity]":
     """{name: Quantity}: mean, eccentric / hyperbolic / parabolic and true anomalies for one e."""
 
-    from orbits import anomalies, inputs
+    from orbits import anomalies
+    from orbits._common import inputs
 
     if (mean is None) == (true is None):
         raise typer.BadParameter("give exactly one of --M (mean anomaly) and --nu (true anomaly)")

@@ -4,20 +4,18 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from orbits_cli.commands.binary import MASS_HELP, mass_or_body
-from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
+from orbits_cli.options import MASS_HELP, Format, FormatOption, OnlyOption, PlotOption, save_plot, three_body
 
 if TYPE_CHECKING:
-    from orbits.lagrange import RestrictedThreeBody
+    from orbits.threebody.lagrange import RestrictedThreeBody
 
 
 def command(
-    primary: Annotated[str, typer.Argument(help=f"the heavier body M: {MASS_HELP}")],
-    secondary: Annotated[str, typer.Argument(help=f"the lighter body m: {MASS_HELP}")],
-    r: Annotated[
-        str | None,
-        typer.Option("--r", help="separation, e.g. '384399 km' (default: the secondary's catalogued mean distance)"),
-    ] = None,
+    primary: Annotated[str, typer.Option("--primary", help=f"the heavier body M: {MASS_HELP}")],
+    secondary: Annotated[str, typer.Option("--secondary", help=f"the lighter body m: {MASS_HELP}")],
+    separation: Annotated[str | None, typer.Option(
+        "--separation", help="distance between the bodies, e.g. '384399 km' (default: the secondary's catalogued "
+        "mean distance)")] = None,
     points: Annotated[str, typer.Option("--points", help="comma-separated points, e.g. L1,L4")] = "L1,L2,L3,L4,L5",
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
@@ -28,10 +26,10 @@ def command(
     growth_rate is 0 for a linearly stable point; eigenvalues are (re, im) pairs in 1/s. --plot draws the
     rotating frame: the points, the zero-velocity curves through L1..L3 and the regions they forbid.
     """
-    from orbits import inputs
+    from orbits._common import inputs
     from orbits_cli import render
 
-    system = build(primary, secondary, r)
+    system = three_body(primary, secondary, separation)
     mu = float(system.mass_ratio.value)
     title = f"Lagrange points of {primary} and {secondary}, mu = {mu:.10g} (rotating frame, origin at the barycentre)"
     asked, listed = inputs.names(only), inputs.names(points)
@@ -106,13 +104,3 @@ def point_tables(system: "RestrictedThreeBody", quantities: dict, folding: list[
     if rest:
         tables.append(render.quantity_table("", rest))
     return tables
-
-
-def build(primary: str, secondary: str, r: str | None) -> "RestrictedThreeBody":
-    """The RestrictedThreeBody of the two bodies at separation r (None: the catalogued mean distance)."""
-    from orbits import RestrictedThreeBody, inputs
-
-    separation = None if r is None else inputs.parse_quantity(r, "length", "--r")
-    return RestrictedThreeBody.from_primaries(
-        mass_or_body(primary, "PRIMARY"), mass_or_body(secondary, "SECONDARY"), separation
-    )

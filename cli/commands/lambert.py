@@ -5,8 +5,7 @@ from typing import Annotated
 
 import typer
 
-from orbits_cli.commands.binary import MASS_HELP
-from orbits_cli.options import Ephemeris, EphemerisOption, Format, FormatOption, OnlyOption
+from orbits_cli.options import MASS_HELP, Ephemeris, EphemerisOption, Format, FormatOption, OnlyOption
 
 
 def command(
@@ -38,7 +37,8 @@ def command(
     """Velocities, transfer angle and elements of the conic from r1 to r2 in the time of flight (Izzo's method);
     between bodies (--from, --to, --depart, --arrive: positions from the ephemeris, exactly as orbits porkchop
     computes a cell) also the launch energy C3 and v_inf at both ends."""
-    from orbits import inputs, lambert
+    from orbits import lambert
+    from orbits._common import inputs
     from orbits_cli import render
 
     common = {"revolutions": revolutions, "branch": branch, "prograde": False if retrograde else None,
@@ -48,7 +48,7 @@ def command(
         transfer = between_bodies(departure, target, depart, arrive, ephemeris.value, primary,
                                   {"--r1": r1, "--r2": r2, "--tof": tof}, common)
         start, end = transfer.departure, transfer.arrival
-        from orbits.ephemeris import provenance, tdb_iso
+        from orbits.ephemeris.positions import provenance, tdb_iso
 
         source, stated = provenance(start, end)
 

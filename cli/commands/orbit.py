@@ -18,7 +18,7 @@ from orbits_cli.options import (
 if TYPE_CHECKING:
     from astropy.units import Quantity
 
-    from orbits.orbit import Orbit
+    from orbits.twobody.orbit import Orbit
 
 
 def command(
@@ -58,7 +58,7 @@ def command(
     U and K at a distance, with --area-between the area swept between two times. A body without an ephemeris
     (Ceres, Vesta, Pallas, Hygiea, Eris) is carried to --epoch from its published orbit by two-body propagation,
     and the title says how well."""
-    from orbits import inputs
+    from orbits._common import inputs
     from orbits_cli import render
 
     if body_name is None and epoch is not None:
@@ -88,7 +88,7 @@ def published_orbit(body_name: str) -> "tuple[str, dict[str, str]]":
     from astropy.time import Time
 
     from orbits import body
-    from orbits.catalogue_orbits import mean_elements
+    from orbits.ephemeris.catalogue import mean_elements
 
     el = mean_elements(body_name)
     when = Time(el.epoch, format="jd", scale="tdb").iso[:16]
@@ -104,7 +104,7 @@ def published_orbit(body_name: str) -> "tuple[str, dict[str, str]]":
 def course_quantities(orbit: "Orbit", at_r: str | None, area_between: str | None) -> "dict[str, Quantity]":
     """{name: Quantity} of what --at-r and --area-between ask: speed_at_r, potential_energy_at_r and
     kinetic_energy_at_r (with the orbit's mass), area_swept."""
-    from orbits.inputs import parse_quantity
+    from orbits._common.inputs import parse_quantity
 
     extra = {}
     if at_r is not None:
@@ -125,7 +125,8 @@ def course_quantities(orbit: "Orbit", at_r: str | None, area_between: str | None
 def at_epoch(body_name: str, epoch: str, source: str, others: list) -> "tuple[Orbit, str, dict[str, str]]":
     """(the body's osculating orbit at `epoch`, title naming the ephemeris that answered and its accuracy, the same
     for the JSON's "about")."""
-    from orbits import Orbit, OrbitDomainError, body, ephemeris
+    from orbits import Orbit, OrbitDomainError, body
+    from orbits.ephemeris import positions as ephemeris
 
     if any(x is not None for x in others):
         raise typer.BadParameter(f"with --epoch, {body_name}'s orbit comes from the ephemeris: drop the elements")
@@ -159,7 +160,7 @@ def build(
 ) -> "tuple[Orbit, str]":
     """(Orbit, title) from the command's options; BadParameter for inconsistent combinations."""
     from orbits import Orbit, body
-    from orbits.inputs import parse_primary, parse_quantity, parse_vector
+    from orbits._common.inputs import parse_primary, parse_quantity, parse_vector
     from orbits_cli import params
 
     mass_q = None if mass is None else parse_quantity(mass, "mass", "--mass")

@@ -23,7 +23,8 @@ def command(
 ) -> None:
     """Exact large-amplitude period 4 K(sin^2(theta0/2)) / omega0 (XXV.iv), or the vertical circle from the speed
     at the bottom: loops, leaves the circle or swings, with the turning and leaving angles (XXV.vi)."""
-    from orbits import Pendulum, VerticalCircle, inputs
+    from orbits import Pendulum, VerticalCircle
+    from orbits._common import inputs
     from orbits_cli import render
 
     size = inputs.parse_quantity(length, "length", "--length")

@@ -6,11 +6,10 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from orbits_cli.commands.binary import MASS_HELP
-from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
+from orbits_cli.options import MASS_HELP, Format, FormatOption, OnlyOption, PlotOption, save_plot, three_body
 
 if TYPE_CHECKING:
-    from orbits.periodic import PeriodicFamily
+    from orbits.periodic.family import PeriodicFamily
 
 
 class Family(StrEnum):
@@ -32,14 +31,9 @@ class Spacing(StrEnum):
     jacobi = "jacobi"
 
 
-#: the constructor of each family, and the targets it takes
-CONSTRUCTORS = {"lyapunov": "lyapunov", "halo": "halo", "vertical": "vertical", "dro": "distant_retrograde",
-                "nrho": "near_rectilinear"}
-
-
 def command(
-    primary: Annotated[str, typer.Argument(help=f"the heavier body M: {MASS_HELP}")],
-    secondary: Annotated[str, typer.Argument(help=f"the lighter body m: {MASS_HELP}")],
+    primary: Annotated[str, typer.Option("--primary", help=f"the heavier body M: {MASS_HELP}")],
+    secondary: Annotated[str, typer.Option("--secondary", help=f"the lighter body m: {MASS_HELP}")],
     family: Annotated[Family, typer.Option("--family", help="lyapunov (planar), halo, vertical, dro (distant "
                                            "retrograde) or nrho (the halo family near the secondary)")],
     point: Annotated[str | None, typer.Option("--point", help="L1, L2 or L3 (default: L1 for lyapunov and vertical, "
@@ -58,8 +52,9 @@ def command(
                                                          "secondary's centre (an NRHO's perilune radius)")] = None,
     resonance: Annotated[str | None, typer.Option("--resonance", help="nrho: p:q synodic resonance, period q/p "
                                                   "synodic periods (the Gateway's: 9:2)")] = None,
-    r: Annotated[str | None, typer.Option("--r", help="separation, e.g. '384399 km' (default: the secondary's "
-                                          "catalogued mean distance)")] = None,
+    separation: Annotated[str | None, typer.Option(
+        "--separation", help="distance between the bodies, e.g. '384399 km' (default: the secondary's catalogued "
+        "mean distance)")] = None,
     members: Annotated[int | None, typer.Option("--members", min=2, max=1000, help="a table of this many members "
                                                 "of the family, from its first to the requested one (or to its "
                                                 "end)")] = None,
@@ -74,14 +69,12 @@ def command(
     closest approach or resonance. With --members, a table of the family with its stability indices
     nu = lambda + 1/lambda (stable when both are real and |nu| <= 2) and its bifurcations.
     """
-    from orbits import inputs
-    from orbits.periodic import PeriodicFamily, PeriodicOrbit
+    from orbits._common import inputs
+    from orbits.periodic.family import PeriodicFamily, PeriodicOrbit
     from orbits_cli import render
-    from orbits_cli.commands.lagrange import build
-
-    system = build(primary, secondary, r)
-    targets = _targets(family.value, ax=ax, ay=ay, az=az, period=period, jacobi=jacobi,
-                       closest_approach=closest_approach, resonance=resonance)
+    system = three_body(primary, secondary, separation)
+    targets = _targets(ax=ax, ay=ay, az=az, period=period, jacobi=jacobi, closest_approach=closest_approach,
+                       resonance=resonance)
     chosen_branch = None if branch is None else branch.value
     if members is not None:
         result = PeriodicFamily.of(system, family.value, point, branch=chosen_branch, members=members,
@@ -97,50 +90,29 @@ def command(
         else:
             render.print_tables(family_tables(result, quantities), title)
         return
-    if chosen_branch is not None and family not in (Family.halo, Family.nrho):
-        from orbits import OrbitDomainError
-
-        raise OrbitDomainError(f"--branch {chosen_branch}: only halo families have a northern and a southern branch")
-    options = {} if chosen_branch is None else {"branch": chosen_branch}
-    constructor = getattr(PeriodicOrbit, CONSTRUCTORS[family.value])
-    orbit = constructor(system, **({} if family == Family.dro else {"point": point or _default_point(family)}),
-                        **options, **targets)
+    orbit = PeriodicOrbit.of(system, family.value, point, branch=chosen_branch, **targets)
     quantities = orbit.quantities(inputs.names(only))
     if plot:
         from orbits.plot import periodic_orbit
 
         save_plot(lambda: periodic_orbit(orbit), plot)
     if fmt == Format.json:
-        render.emit(repr(orbit), quantities, fmt.value)
+        render.emit(orbit.title, quantities, fmt.value)
     else:
-        render.print_tables(orbit_tables(quantities), f"{orbit!r} (rotating frame, origin at the barycentre)")
+        render.print_tables(orbit_tables(quantities), f"{orbit.title} (rotating frame, origin at the barycentre)")
 
 
-def _default_point(family: Family) -> str:
-    from orbits.periodic import DEFAULT_POINT
+def _targets(**given) -> dict:
+    """The targets given on the command line as Quantities (a resonance as its text); which of them picks a member
+    of the family is the library's rule (orbits.periodic.family.FAMILY_TARGETS)."""
+    from orbits._common import inputs
 
-    return DEFAULT_POINT[family.value]
-
-
-def _targets(family: str, **given) -> dict:
-    """The targets given on the command line as Quantities (a resonance as its text), checked for the family."""
-
-    from orbits import OrbitDomainError, inputs
-
-    allowed = {"lyapunov": ("ax", "ay", "period", "jacobi", "closest_approach"),
-               "halo": ("az", "ax", "period", "jacobi", "closest_approach"),
-               "vertical": ("az", "ay", "period", "jacobi"),
-               "dro": ("ax", "ay", "period", "jacobi", "closest_approach"),
-               "nrho": ("resonance", "period", "closest_approach")}[family]
     kinds = {"ax": "length", "ay": "length", "az": "length", "closest_approach": "length", "period": "time"}
     targets = {}
     for name, text in given.items():
         if text is None:
             continue
         option = "--" + name.replace("_", "-")
-        if name not in allowed:
-            choices = ", ".join("--" + a.replace("_", "-") for a in allowed)
-            raise OrbitDomainError(f"{option} does not select a {family} orbit; give one of {choices}")
         if name == "resonance":
             targets[name] = text
         elif name == "jacobi":

@@ -8,20 +8,29 @@ from typing import Annotated
 
 import typer
 
-from orbits_cli.commands.binary import MASS_HELP, mass_or_body
-from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, displays, reports_errors, save_plot
+from orbits_cli.options import (
+    MASS_HELP,
+    Format,
+    FormatOption,
+    OnlyOption,
+    PlotOption,
+    displays,
+    mass_or_body,
+    reports_errors,
+    save_plot,
+)
 
 app = typer.Typer(
     help="Perturbed orbits: J2 secular rates and designs, drag decay, Kozai-Lidov, the relativistic advance.",
     no_args_is_help=True,
 )
 
-BodyArgument = Annotated[str, typer.Argument(metavar="BODY", help="a catalogue body with J2 (Earth by default)")]
+PrimaryOption = Annotated[str, typer.Option("--primary", help="a catalogue body with J2")]
 SizeOption = Annotated[str | None, typer.Option("--a", help="semi-major axis, e.g. '7078 km'")]
 AltitudeOption = Annotated[str | None, typer.Option("--altitude", help="a - R_eq, e.g. '700 km'")]
 InclinationOption = Annotated[str | None, typer.Option("--inc", help="inclination ('98 deg'; bare numbers are "
                                                                      "degrees)")]
-RevolutionsOption = Annotated[int | None, typer.Option("--revolutions", min=1, max=2000,
+RevolutionsOption = Annotated[int | None, typer.Option("--plot-revolutions", min=1, max=2000,
                                                        help="revolutions the --plot integrates (default 30)")]
 
 
@@ -29,7 +38,8 @@ def _plot_only(plot, **given) -> None:
     """Refuse an option that only --plot reads, given without --plot (it would be ignored)."""
     for option, value in given.items():
         if value is not None and not plot:
-            raise typer.BadParameter(f"--{option} sets what --plot integrates; give --plot FILE with it")
+            raise typer.BadParameter(f"--{option.replace('_', '-')} sets what --plot integrates; give --plot FILE "
+                                     f"with it")
 
 #: the units tables use for these quantities unless --units si or --unit NAME=UNIT says otherwise
 NATURAL = {
@@ -57,19 +67,19 @@ def emit(title: str, quantities: dict, fmt: Format) -> None:
 
 
 def _length(text, option):
-    from orbits import inputs
+    from orbits._common import inputs
 
     return None if text is None else inputs.parse_quantity(text, "length", option)
 
 
 def _angle(text, option):
-    from orbits import inputs
+    from orbits._common import inputs
 
     return None if text is None else inputs.parse_angle(text, option)
 
 
 def rates(
-    primary: BodyArgument = "Earth",
+    primary: PrimaryOption = "Earth",
     a: SizeOption = None,
     altitude: AltitudeOption = None,
     e: Annotated[float, typer.Option("--e", help="eccentricity")] = 0.0,
@@ -78,25 +88,24 @@ def rates(
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
-    revolutions: RevolutionsOption = None,
+    plot_revolutions: RevolutionsOption = None,
 ) -> None:
     """J2's secular rates of the node, periapsis and mean anomaly (first order: good to J2 (R/p)**2 relative).
 
-    --plot integrates the orbit under the body's J2 and J4 with rebound and heyoka for --revolutions and draws its
-    node (and, for an eccentric orbit, its argument of periapsis) over the secular lines of these rates.
+    --plot integrates the orbit under the body's J2 and J4 with rebound and heyoka for --plot-revolutions and draws
+    its node (and, for an eccentric orbit, its argument of periapsis) over the secular lines of these rates.
     """
-    from orbits import Orbit, inputs
-    from orbits.perturbations import SecularOrbit, oblate_body
+    from orbits import SecularOrbit
+    from orbits._common import inputs
+    from orbits.perturb.secular import oblate_body
 
-    _plot_only(plot, revolutions=revolutions)
-    named = oblate_body(primary)
-    size = _size(named, a, altitude)
-    orbit = Orbit.from_elements(named, a=size, e=e, inc=_angle(inc, "--inc"), argp=_angle(argp, "--argp"))
-    secular = SecularOrbit.of(orbit, named)
-    emit(f"J2 secular rates about {named.name} (first order; accuracy J2 (R/p)^2)",
+    _plot_only(plot, plot_revolutions=plot_revolutions)
+    secular = SecularOrbit.about(primary, a=_length(a, "--a"), altitude=_length(altitude, "--altitude"), e=e,
+                                 inc=_angle(inc, "--inc"), argp=_angle(argp, "--argp"))
+    emit(f"J2 secular rates about {oblate_body(primary).name} (first order; accuracy J2 (R/p)^2)",
          secular.quantities(inputs.names(only)), fmt)
     if plot:
-        _plot_secular(orbit, revolutions, plot)
+        _plot_secular(secular.orbit, plot_revolutions, plot)
 
 
 def _plot_secular(orbit, revolutions: int | None, path):
@@ -108,16 +117,8 @@ def _plot_secular(orbit, revolutions: int | None, path):
     save_plot(lambda: secular_elements(history), path)
 
 
-def _size(named, a, altitude):
-    import astropy.units as u
-
-    if (a is None) == (altitude is None):
-        raise typer.BadParameter("give exactly one of --a and --altitude")
-    return _length(a, "--a") if a is not None else _length(altitude, "--altitude") + named.radius * u.m
-
-
 def sun_synchronous(
-    primary: BodyArgument = "Earth",
+    primary: PrimaryOption = "Earth",
     a: SizeOption = None,
     altitude: AltitudeOption = None,
     e: Annotated[float, typer.Option("--e", help="eccentricity")] = 0.0,
@@ -125,27 +126,27 @@ def sun_synchronous(
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
-    revolutions: RevolutionsOption = None,
+    plot_revolutions: RevolutionsOption = None,
 ) -> None:
     """The sun-synchronous orbit: its inclination for a size (or its size for an inclination).
 
-    --plot integrates the orbit under the body's J2 and J4 with rebound and heyoka for --revolutions and draws its
-    node turning with the mean Sun over the secular line.
+    --plot integrates the orbit under the body's J2 and J4 with rebound and heyoka for --plot-revolutions and draws
+    its node turning with the mean Sun over the secular line.
     """
-    from orbits import inputs
-    from orbits.perturbations import sun_synchronous as design
+    from orbits import sun_synchronous as design
+    from orbits._common import inputs
 
-    _plot_only(plot, revolutions=revolutions)
+    _plot_only(plot, plot_revolutions=plot_revolutions)
     result = design(primary, a=_length(a, "--a"), altitude=_length(altitude, "--altitude"), e=e,
                     inc=_angle(inc, "--inc"))
     emit(f"Sun-synchronous orbit about {result.primary.name} (node follows the mean Sun)",
          result.quantities(inputs.names(only)), fmt)
     if plot:
-        _plot_secular(result.secular.orbit, revolutions, plot)
+        _plot_secular(result.secular.orbit, plot_revolutions, plot)
 
 
 def frozen(
-    primary: BodyArgument = "Earth",
+    primary: PrimaryOption = "Earth",
     a: SizeOption = None,
     altitude: AltitudeOption = None,
     inc: Annotated[str, typer.Option("--inc", help="inclination")] = "98",
@@ -153,25 +154,25 @@ def frozen(
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
-    revolutions: Annotated[int | None, typer.Option("--revolutions", min=1, max=4000,
-                                                    help="revolutions the --plot integrates (default: one "
-                                                         "apsidal period)")] = None,
+    plot_revolutions: Annotated[int | None, typer.Option(
+        "--plot-revolutions", min=1, max=4000, help="revolutions the --plot integrates (default: one apsidal "
+        "period)")] = None,
 ) -> None:
     """The frozen orbit (J2 with J3): the eccentricity that keeps e and omega fixed.
 
     --plot integrates the design and a circular orbit of its size and inclination under the body's J2, J3 and J4
     with rebound and heyoka and draws their mean eccentricity vectors circling the frozen point (one apsidal period
     by default: about 1,700 revolutions, 15 s, at 700 km)."""
-    from orbits import inputs
-    from orbits.perturbations import frozen as design
+    from orbits import frozen as design
+    from orbits._common import inputs
 
-    _plot_only(plot, revolutions=revolutions)
+    _plot_only(plot, plot_revolutions=plot_revolutions)
     result = design(primary, a=_length(a, "--a"), altitude=_length(altitude, "--altitude"), inc=_angle(inc, "--inc"),
                     argp=_angle(argp, "--argp"))
     if plot:  # integrated first: a run too long for a picture is refused before anything is printed
         from orbits.validate.histories import frozen_history
 
-        history = frozen_history(result, revolutions)
+        history = frozen_history(result, plot_revolutions)
     emit(f"Frozen orbit about {result.primary.name} (J2 with J3, first order)", result.quantities(inputs.names(only)),
          fmt)
     if plot:
@@ -181,7 +182,7 @@ def frozen(
 
 
 def repeat(
-    primary: BodyArgument = "Earth",
+    primary: PrimaryOption = "Earth",
     revolutions: Annotated[int, typer.Option("--revolutions", help="revolutions (nodal periods) per cycle")] = 15,
     days: Annotated[int, typer.Option("--days", help="days (turns of the body under the node) per cycle")] = 1,
     inc: Annotated[str, typer.Option("--inc", help="inclination")] = "98",
@@ -194,8 +195,8 @@ def repeat(
 
     --plot integrates one cycle under the body's J2 and J4 with rebound and heyoka and draws the track over the
     turning body, with each ascending node against the closed form's place for it (at most 2000 revolutions)."""
-    from orbits import inputs
-    from orbits.perturbations import repeat_ground_track
+    from orbits._common import inputs
+    from orbits.perturb.secular import repeat_ground_track
 
     result = repeat_ground_track(primary, revolutions=revolutions, days=days, inc=_angle(inc, "--inc"), e=e)
     if plot:  # integrated first: a run too long for a picture is refused before anything is printed
@@ -211,7 +212,7 @@ def repeat(
 
 
 def decay(
-    primary: BodyArgument = "Earth",
+    primary: PrimaryOption = "Earth",
     altitude: Annotated[str, typer.Option("--altitude", help="altitude of the circular orbit")] = "400 km",
     ballistic: Annotated[str, typer.Option("--ballistic", help="C_D A / m, e.g. '0.01 m2/kg'")] = "0.01 m2/kg",
     density: Annotated[str | None, typer.Option("--density", help="the band's density at its base")] = None,
@@ -225,8 +226,8 @@ def decay(
 
     --plot draws the closed form's altitude against time to the end of the lifetime, where it stops holding.
     """
-    from orbits import inputs
-    from orbits.perturbations import DragDecay
+    from orbits._common import inputs
+    from orbits.perturb.secular import DragDecay
 
     mass = None if density is None else inputs.parse_quantity(density, "density", "--density")
     result = DragDecay.of(primary, altitude=_length(altitude, "--altitude"),
@@ -242,8 +243,8 @@ def decay(
 
 
 def kozai(
-    m0: Annotated[str, typer.Option("--m0", help=f"the central mass: {MASS_HELP}")] = "Sun",
-    m3: Annotated[str, typer.Option("--m3", help=f"the distant perturber: {MASS_HELP}")] = "Jupiter",
+    primary: Annotated[str, typer.Option("--primary", help=f"the central body: {MASS_HELP}")] = "Sun",
+    perturber: Annotated[str, typer.Option("--perturber", help=f"the distant perturber: {MASS_HELP}")] = "Jupiter",
     a: Annotated[str, typer.Option("--a", help="inner semi-major axis")] = "1 AU",
     a_out: Annotated[str, typer.Option("--a-out", help="the perturber's semi-major axis")] = "5.2 AU",
     inc: Annotated[str, typer.Option("--inc", help="inclination to the perturber's orbit")] = "65",
@@ -261,11 +262,12 @@ def kozai(
     --plot integrates the triple with rebound and heyoka for --cycles oscillations and draws e, i and the conserved
     sqrt(1 - e^2) cos i over the theory's marks; a triple whose cycles last more than 20,000 inner revolutions is
     refused (a nearer or heavier perturber, or fewer cycles)."""
-    from orbits import inputs
-    from orbits.perturbations import KozaiLidov
+    from orbits._common import inputs
+    from orbits.perturb.secular import KozaiLidov
 
     _plot_only(plot, cycles=cycles)
-    result = KozaiLidov.of(mass_or_body(m0, "--m0"), mass_or_body(m3, "--m3"), a=_length(a, "--a"),
+    result = KozaiLidov.of(mass_or_body(primary, "--primary"), mass_or_body(perturber, "--perturber"),
+                           a=_length(a, "--a"),
                            a_out=_length(a_out, "--a-out"), inc=_angle(inc, "--inc"), e=e, argp=_angle(argp, "--argp"),
                            e_out=e_out)
     if plot:  # integrated first: a run too long for a picture is refused before anything is printed
@@ -288,9 +290,10 @@ def relativity(
     """General relativity's periapsis advance 6 pi G M / (c^2 a (1 - e^2)) of a body's mean orbit."""
     import astropy.units as u
 
-    from orbits import Orbit, inputs
-    from orbits.perturbations import relativistic_periapsis_advance
-    from orbits.tables import check_names
+    from orbits import Orbit
+    from orbits._common import inputs
+    from orbits._common.tables import check_names
+    from orbits.perturb.secular import relativistic_periapsis_advance
 
     per_orbit, rate = relativistic_periapsis_advance(Orbit.from_body(name))
     table = {"advance_per_orbit": per_orbit, "advance_per_century": (rate * 36525 * u.day).to(u.rad),

@@ -20,9 +20,9 @@ def command(
         "--from", help="the departure body, e.g. Earth, or EMB (the Earth-Moon barycentre, whose C3 is "
                        "the one NASA's Earth-to-Mars handbook tabulates)")] = "Earth",
     target: Annotated[str, typer.Option("--to", help="the arrival body, e.g. Mars")] = "Mars",
-    launch: Annotated[str, typer.Option("--launch", help="launch dates START:END, e.g. 2026-09-01:2027-01-31")
+    depart: Annotated[str, typer.Option("--depart", help="departure dates START:END, e.g. 2026-09-01:2027-01-31")
                       ] = "2026-09-01:2027-01-31",
-    arrival: Annotated[str, typer.Option("--arrival", help="arrival dates START:END, e.g. 2027-06-01:2028-03-01")
+    arrive: Annotated[str, typer.Option("--arrive", help="arrival dates START:END, e.g. 2027-06-01:2028-03-01")
                        ] = "2027-06-01:2028-03-01",
     step: Annotated[str, typer.Option("--step", help="spacing of both date axes, e.g. '1 d'")] = "1 d",
     ephemeris: EphemerisOption = Ephemeris.auto,
@@ -35,10 +35,11 @@ def command(
     JSON adds each minimum's dates as TDB Julian dates (*_jd_tdb); --plot draws the porkchop. A least value on
     the grid's edge is flagged (in JSON under "about", e.g. min_c3_edge): the true minimum may lie outside the
     windows."""
-    from orbits import Porkchop, inputs
+    from orbits import Porkchop
+    from orbits._common import inputs
     from orbits_cli import render
 
-    chart = Porkchop.between(departure, target, _window(launch, "--launch"), _window(arrival, "--arrival"),
+    chart = Porkchop.between(departure, target, _window(depart, "--depart"), _window(arrive, "--arrive"),
                              inputs.parse_quantity(step, "time", "--step"), source=ephemeris.value)
     quantities = chart.quantities(inputs.names(only))
     if fmt.value != "json":

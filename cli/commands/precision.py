@@ -20,7 +20,7 @@ def command(
     """Sweep each integrator's accuracy knob on the same problems; error against run time, with a summary."""
     import dataclasses
 
-    from orbits.io import write_atomic
+    from orbits._common.io import write_atomic
     from orbits.tools import precision
     from orbits_cli import render
     from orbits_cli.render import precision_tables

@@ -37,7 +37,8 @@ def command(
     plot: PlotOption = None,
 ) -> None:
     """Time of flight, range, apex and landing speed of a projectile (XX.iii-v)."""
-    from orbits import Projectile, inputs
+    from orbits import Projectile
+    from orbits._common import inputs
     from orbits_cli import render
 
     shot = Projectile.launch(
@@ -72,7 +73,7 @@ TITLES = {Drag.none: "no drag", Drag.linear: "linear drag", Drag.quadratic: "qua
 
 def _quadratic(terminal_speed, mass, drag_coefficient, density, area):
     """Keyword arguments of Projectile.with_quadratic_drag from the options."""
-    from orbits import inputs
+    from orbits._common import inputs
 
     if terminal_speed is not None:
         return {"terminal_speed": inputs.parse_quantity(terminal_speed, "speed", "--terminal-speed")}
@@ -83,6 +84,6 @@ def _quadratic(terminal_speed, mass, drag_coefficient, density, area):
 
 def _rate(text):
     """A rate in 1/s from "0.1 1/s" (a bare number has no unit and is refused)."""
-    from orbits import inputs
+    from orbits._common import inputs
 
     return inputs.parse_quantity(text, "rate", "--rate")

@@ -4,8 +4,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from orbits_cli.commands.binary import MASS_HELP, mass_or_body
-from orbits_cli.options import Format, FormatOption, OnlyOption, PlotOption, save_plot
+from orbits_cli.options import MASS_HELP, Format, FormatOption, OnlyOption, PlotOption, mass_or_body, save_plot
 
 if TYPE_CHECKING:
     from orbits import Ring
@@ -13,10 +12,10 @@ if TYPE_CHECKING:
 
 def command(
     n: Annotated[int, typer.Argument(help="number of bodies on the ring (2 or more)")],
-    m: Annotated[str, typer.Option("--m", help=f"each body's mass: {MASS_HELP}")],
-    r: Annotated[str, typer.Option("--r", help="ring radius, e.g. '100000 km'")],
-    central_mass: Annotated[
-        str | None, typer.Option("--central-mass", help=f"mass at the centre (Maxwell's ring): {MASS_HELP}")
+    mass: Annotated[str, typer.Option("--mass", help=f"each body's mass: {MASS_HELP}")],
+    radius: Annotated[str, typer.Option("--radius", help="ring radius, e.g. '100000 km'")],
+    primary: Annotated[
+        str | None, typer.Option("--primary", help=f"the body at the centre (Maxwell's ring): {MASS_HELP}")
     ] = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
@@ -26,16 +25,17 @@ def command(
     break-up time from float64 round-off, and the central mass that makes a ring of n >= 7 stable. --plot
     integrates the ring with heyoka (or rebound) to 1.5 break-up times (20 periods if it is stable) and draws
     its shape deviation, the 1e-3 break-up level and snapshots."""
-    from orbits import OrbitsError, Ring, inputs
+    from orbits import OrbitsError, Ring
+    from orbits._common import inputs
     from orbits_cli import render
 
     ring = Ring.from_masses(
         n,
-        mass_or_body(m, "--m"),
-        inputs.parse_quantity(r, "length", "--r"),
-        central_mass=None if central_mass is None else mass_or_body(central_mass, "--central-mass"),
+        mass_or_body(mass, "--mass"),
+        inputs.parse_quantity(radius, "length", "--radius"),
+        central_mass=None if primary is None else mass_or_body(primary, "--primary"),
     )
-    title = f"Ring of {n} bodies" + ("" if central_mass is None else f" about {central_mass}")
+    title = f"Ring of {n} bodies" + ("" if primary is None else f" about {primary}")
     quantities = ring.quantities(inputs.names(only))
     about = None
     if only is None and "growth_rate" not in quantities:  # left out for a reason, which is said
@@ -65,5 +65,5 @@ def breakup_picture(ring: "Ring") -> tuple:
     result = backends.integrate(backend, problem)
     fig, axes = ring_snapshots(result.times, result.positions, expected.growth_rate, expected.breakup_time,
                                expected.first_body, period=ring.period)
-    fig.suptitle(f"{ring!r}, integrated by {backend}")
+    fig.suptitle(f"{ring.title}; integrated by {backend}")
     return fig, axes

@@ -28,7 +28,8 @@ def command(
     fmt: FormatOption = Format.table,
 ) -> None:
     """Delta-v of a rocket v_e ln(m0 / mf) per stage and in total, and burn times at constant thrust (X.ii)."""
-    from orbits import Rocket, inputs
+    from orbits import Rocket
+    from orbits._common import inputs
     from orbits_cli import render
 
     single = m0 is not None or mf is not None
@@ -69,7 +70,8 @@ def _each(texts, kind, option):
     """One Quantity array from a repeated option."""
     import astropy.units as u
 
-    from orbits import OrbitDomainError, inputs
+    from orbits import OrbitDomainError
+    from orbits._common import inputs
 
     values = [inputs.parse_quantity(text, kind, option) for text in texts]
     unit = values[0].unit

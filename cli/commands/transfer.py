@@ -6,8 +6,7 @@ from typing import Annotated
 
 import typer
 
-from orbits_cli.commands.binary import MASS_HELP, mass_or_body
-from orbits_cli.options import Format, FormatOption, OnlyOption, displays, reports_errors
+from orbits_cli.options import MASS_HELP, Format, FormatOption, OnlyOption, displays, mass_or_body, reports_errors
 
 app = typer.Typer(
     help="Impulsive manoeuvres: Hohmann, bi-elliptic, plane change, phasing, departure (delta-v budgets, times).",
@@ -15,22 +14,23 @@ app = typer.Typer(
 )
 
 PrimaryOption = Annotated[str, typer.Option("--primary", help=f"the central body: {MASS_HELP}")]
-R1Option = Annotated[str, typer.Option("--r1", help="initial circular orbit radius from the centre, e.g. '6678 km'")]
-R2Option = Annotated[str, typer.Option("--r2", help="final circular orbit radius, e.g. '42164 km'")]
+R1Option = Annotated[str, typer.Option(
+    "--radius1", help="initial circular orbit radius from the centre, e.g. '6678 km'")]
+R2Option = Annotated[str, typer.Option("--radius2", help="final circular orbit radius, e.g. '42164 km'")]
 OptionalR1 = Annotated[str | None, typer.Option(
-    "--r1", help="initial circular orbit radius from the centre, e.g. '6678 km'")]
-OptionalR2 = Annotated[str | None, typer.Option("--r2", help="final circular orbit radius, e.g. '42164 km'")]
-ROption = Annotated[str, typer.Option("--r", help="circular orbit radius from the centre, e.g. '7000 km'")]
+    "--radius1", help="initial circular orbit radius from the centre, e.g. '6678 km'")]
+OptionalR2 = Annotated[str | None, typer.Option("--radius2", help="final circular orbit radius, e.g. '42164 km'")]
+ROption = Annotated[str, typer.Option("--radius", help="circular orbit radius from the centre, e.g. '7000 km'")]
 
 
 def _length(text, option):
-    from orbits import inputs
+    from orbits._common import inputs
 
     return inputs.parse_quantity(text, "length", option)
 
 
 def _emit(title, manoeuvre, only, fmt):
-    from orbits import inputs
+    from orbits._common import inputs
     from orbits_cli import render
 
     render.emit(title, manoeuvre.quantities(inputs.names(only)), fmt.value)
@@ -40,9 +40,9 @@ def hohmann(
     r1: OptionalR1 = None,
     r2: OptionalR2 = None,
     departure: Annotated[str | None, typer.Option(
-        "--from", help="instead of --r1: a body whose mean orbit (about the same primary as --to's) is the start")
+        "--from", help="instead of --radius1: a body whose mean orbit (about the same primary as --to's) is the start")
     ] = None,
-    target: Annotated[str | None, typer.Option("--to", help="instead of --r2: the body whose orbit is the goal")
+    target: Annotated[str | None, typer.Option("--to", help="instead of --radius2: the body whose orbit is the goal")
                       ] = None,
     primary: Annotated[str | None, typer.Option(
         "--primary", help=f"the central body: {MASS_HELP} [default: Earth; with --from/--to their common primary]")
@@ -56,62 +56,67 @@ def hohmann(
     """Hohmann transfer: two tangential burns and half an ellipse, optionally turning the plane; the synodic period
     and the phase angle the target must lead by at departure. With --from and --to: between two bodies' mean
     orbits about their common primary, each taken as the circle of radius its semi-major axis."""
-    from orbits import Hohmann, body, inputs
+    from orbits import Hohmann, body
+    from orbits._common import inputs
 
     turn = inputs.parse_angle(inc, "--inc")
     if departure is not None or target is not None:
-        given = [name for name, value in (("--r1", r1), ("--r2", r2), ("--primary", primary)) if value is not None]
+        given = [name for name, value in (("--radius1", r1), ("--radius2", r2), ("--primary", primary))
+                 if value is not None]
         if given or departure is None or target is None:
-            raise typer.BadParameter("give both --from and --to (bodies), without --r1, --r2 or --primary: the "
-                                     "radii and the primary come from the bodies' mean orbits")
+            raise typer.BadParameter("give both --from and --to (bodies), without --radius1, --radius2 or "
+                                     "--primary: the radii and the primary come from the bodies' mean orbits")
         result = Hohmann.between_bodies(departure, target, inclination_change=turn)
-        from orbits.catalogue_orbits import mean_elements
+        from orbits.ephemeris.catalogue import mean_elements
 
         about = mean_elements(departure).primary
         _emit(f"Hohmann transfer from {body(departure).name}'s to {body(target).name}'s mean orbit about "
               f"{'the Sun' if about == 'Sun' else about}, each taken as the circle of radius its semi-major axis",
               result, only, fmt)
         return
-    for option, text in (("--r1", r1), ("--r2", r2)):
+    for option, text in (("--radius1", r1), ("--radius2", r2)):
         if text is not None and inputs.find_body(text) is not None:
             raise typer.BadParameter(f"{option} {text!r} is a body, not a radius: for the transfer between the orbits "
                                      f"of two bodies give --from and --to, e.g. --from Earth --to Mars")
     if r1 is None or r2 is None:
-        raise typer.BadParameter("give --r1 and --r2 (radii, e.g. '6678 km'), or --from and --to (bodies)")
-    result = Hohmann.between(mass_or_body(primary or "Earth", "--primary"), _length(r1, "--r1"), _length(r2, "--r2"),
-                             inclination_change=turn)
+        raise typer.BadParameter("give --radius1 and --radius2 (radii, e.g. '6678 km'), or --from and --to (bodies)")
+    result = Hohmann.between(mass_or_body(primary or "Earth", "--primary"), _length(r1, "--radius1"),
+                             _length(r2, "--radius2"), inclination_change=turn)
     _emit(f"Hohmann transfer about {primary or 'Earth'}", result, only, fmt)
 
 
 def bi_elliptic(
     r1: R1Option,
     r2: R2Option,
-    rb: Annotated[str, typer.Option("--rb", help="common apoapsis of the two ellipses, above both orbits")],
+    apoapsis: Annotated[str, typer.Option("--apoapsis", help="common apoapsis of the two ellipses, above both "
+                                          "orbits")],
     primary: PrimaryOption = "Earth",
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
 ) -> None:
-    """Bi-elliptic transfer: out to rb, periapsis moved to r2, circularised; compared with Hohmann."""
+    """Bi-elliptic transfer: out to the common apoapsis rb, periapsis moved to r2, circularised; compared with
+    Hohmann."""
     from orbits import BiElliptic
 
-    result = BiElliptic.between(mass_or_body(primary, "--primary"), _length(r1, "--r1"), _length(r2, "--r2"),
-                                _length(rb, "--rb"))
+    result = BiElliptic.between(mass_or_body(primary, "--primary"), _length(r1, "--radius1"),
+                                _length(r2, "--radius2"), _length(apoapsis, "--apoapsis"))
     _emit(f"Bi-elliptic transfer about {primary}", result, only, fmt)
 
 
 def plane_change(
     r: ROption,
-    angle: Annotated[str, typer.Option(
-        "--angle", help="turn of the orbit plane ('28.5 deg'; bare numbers are degrees)")],
+    inc: Annotated[str, typer.Option(
+        "--inc", help="turn of the orbit plane ('28.5 deg'; bare numbers are degrees)")],
     primary: PrimaryOption = "Earth",
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
 ) -> None:
     """Plane change on a circular orbit: one burn 2 v sin(di / 2) at a node."""
-    from orbits import PlaneChange, inputs
+    from orbits import PlaneChange
+    from orbits._common import inputs
 
-    result = PlaneChange.at(mass_or_body(primary, "--primary"), _length(r, "--r"),
-                            inputs.parse_angle(angle, "--angle"))
+    result = PlaneChange.at(mass_or_body(primary, "--primary"), _length(r, "--radius"),
+                            inputs.parse_angle(inc, "--inc"))
     _emit(f"Plane change about {primary}", result, only, fmt)
 
 
@@ -125,10 +130,11 @@ def phasing(
     fmt: FormatOption = Format.table,
 ) -> None:
     """Phasing: a burn onto a faster or slower orbit, k revolutions, a burn back, meeting the target."""
-    from orbits import Phasing, inputs
+    from orbits import Phasing
+    from orbits._common import inputs
 
-    result = Phasing.to(mass_or_body(primary, "--primary"), _length(r, "--r"), inputs.parse_angle(phase, "--phase"),
-                        revolutions)
+    result = Phasing.to(mass_or_body(primary, "--primary"), _length(r, "--radius"),
+                        inputs.parse_angle(phase, "--phase"), revolutions)
     _emit(f"Phasing on a circular orbit about {primary}", result, only, fmt)
 
 
@@ -140,15 +146,16 @@ def departure(
     fmt: FormatOption = Format.table,
 ) -> None:
     """Departure from a circular parking orbit onto the hyperbola with the given speed at infinity."""
-    from orbits import Departure, inputs
+    from orbits import Departure
+    from orbits._common import inputs
 
-    result = Departure.to_excess_speed(mass_or_body(primary, "--primary"), _length(r, "--r"),
+    result = Departure.to_excess_speed(mass_or_body(primary, "--primary"), _length(r, "--radius"),
                                        inputs.parse_quantity(v_inf, "speed", "--v-inf"))
     _emit(f"Departure from {primary}", result, only, fmt)
 
 
 def assist(
-    planet: Annotated[str, typer.Option("--planet", help=f"the planet flown past: {MASS_HELP}")],
+    primary: Annotated[str, typer.Option("--primary", help=f"the planet flown past: {MASS_HELP}")],
     v_in: Annotated[str, typer.Option("--v-in", help="the probe's heliocentric velocity before, 'X,Y,Z km/s'")],
     v_planet: Annotated[str, typer.Option("--v-planet", help="the planet's heliocentric velocity, 'X,Y,Z km/s'")],
     periapsis: Annotated[str, typer.Option(help="closest approach to the planet's centre, e.g. '200000 km'")],
@@ -159,14 +166,15 @@ def assist(
 ) -> None:
     """Gravity assist by patched conics (IX's elastic collision in the planet's frame): the excess velocity turns
     by the flyby's deflection; the heliocentric velocity after, its change and the energy gained."""
-    from orbits import GravityAssist, inputs
+    from orbits import GravityAssist
+    from orbits._common import inputs
 
     result = GravityAssist.past(
-        mass_or_body(planet, "--planet"), inputs.parse_vector(v_in, "speed", "--v-in"),
+        mass_or_body(primary, "--primary"), inputs.parse_vector(v_in, "speed", "--v-in"),
         inputs.parse_vector(v_planet, "speed", "--v-planet"), _length(periapsis, "--periapsis"),
         normal=None if normal is None else inputs.parse_direction(normal, "--normal"),
     )
-    _emit(f"Gravity assist past {planet}", result, only, fmt)
+    _emit(f"Gravity assist past {primary}", result, only, fmt)
 
 
 app.command("hohmann")(reports_errors(displays(hohmann)))

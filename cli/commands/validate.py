@@ -22,14 +22,19 @@ def command(
     scheduler: Annotated[
         str | None, typer.Option(help="with --sweep: dask scheduler address, e.g. tcp://host:8786 (default: local)")
     ] = None,
+    quiet: Annotated[bool, typer.Option("--quiet", help="print the one-screen summary alone (each scene's worst "
+                                                        "check per backend and its time), not every check")] = False,
 ) -> None:
-    """Cross-check the analytic answers of the built-in scenes (or the given ones) against N-body codes."""
+    """Cross-check the analytic answers of the built-in scenes (or the given ones) against N-body codes: every
+    check of every scene, then a one-screen summary (--quiet: the summary alone)."""
     import sys
 
-    from orbits.io import write_atomic
+    from orbits._common.io import write_atomic
     from orbits.validate import available, builtin_names, load, unavailable_builtins, validate
     from orbits_cli import render
 
+    if quiet and fmt == Format.json:
+        raise typer.BadParameter("--quiet shortens the table; the JSON is always whole (drop one of them)")
     names = scenes
     if not names:  # the built-in scenes this install can run; the others are named, with what they need
         skipped = unavailable_builtins()
@@ -55,10 +60,10 @@ def command(
         save_plot(lambda: validation_overview(report), plot)
     if fmt == Format.json:
         print(render.dumps(data))
+    elif quiet:
+        render.validation_summary(data)
     else:
-        from orbits_cli.render import validation_report
-
-        validation_report(data)
+        render.validation_report(data)
     if not report.passed:
         raise typer.Exit(1)
 
@@ -84,12 +89,12 @@ def _run(validate, scenes, backend_names, show_progress):
         return validate(scenes, backend_names)
     from rich.progress import BarColumn, Progress, TaskProgressColumn, TextColumn, TimeElapsedColumn
 
-    from orbits.nbody import reporting
+    from orbits.validate.nbody import reporting
 
     columns = (TextColumn("{task.description}"), BarColumn(), TaskProgressColumn(), TimeElapsedColumn())
     with Progress(*columns, transient=True) as progress:
         task = progress.add_task("validating", total=len(scenes))
-        from orbits.display import printable
+        from orbits._common.display import printable
 
         names = [scene.name for scene in scenes]
         current = {"index": 0, "runs": 0, "last": 0.0}  # scene, backends finished in it, last fraction

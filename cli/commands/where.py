@@ -32,8 +32,8 @@ def command(
     from the observer."""
     from astropy.time import Time
 
-    from orbits import ephemeris as eph
-    from orbits import inputs
+    from orbits._common import inputs
+    from orbits.ephemeris import positions as eph
     from orbits_cli import render
 
     when = eph.epoch(Time.now() if epoch is None else epoch)
@@ -49,10 +49,10 @@ def command(
     heliocentric = eph.states([body_name, observer, *points], when, "Sun", source=ephemeris.value)  # read once
     sighting = eph.sighting(heliocentric, body_name, observer)
     seen = sighting.from_observer
-    title = f"{seen.point} seen from {seen.center_point}, {eph.tdb_iso(when)} TDB (geometric); {seen.provenance}"
+    title = f"{seen.point} seen from {seen.center_point}, {eph.tdb_iso(when)} TDB (geometric)"
     about = {"body": seen.point, "observer": seen.center_point, "epoch_tdb": eph.tdb_iso(when), "source": seen.source,
              "accuracy": seen.accuracy}
     quantities = sighting.quantities(inputs.names(only))
     if plot:
         save_plot(lambda: pictures.solar_system(when, **drawn, states=heliocentric), plot)
-    render.emit(title, quantities, fmt.value, about=about)
+    render.emit(title, quantities, fmt.value, about=about, notes=f"Positions: {seen.provenance}.")

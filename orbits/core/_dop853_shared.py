@@ -1,5 +1,5 @@
 """Constants of the DOP853 integrator shared by its NumPy specification (orbits.core.dop853) and its compiled port for
-the restricted problem (orbits.core._fast_cr3bp): both sides import them from here, neither from the other.
+the restricted problem (orbits.core.periodic._fast_cr3bp): both sides import them from here, neither from the other.
 
 The coefficients are those of the published method (Hairer, Norsett and Wanner, Solving Ordinary Differential
 Equations I, 2nd ed., 1993, section II.10): the stages A, the 8th-order weights B and the error weights E5 and E3, to

@@ -1,14 +1,15 @@
 """Compiled kernels: loading numba lazily, its on-disk cache, and splitting a batch over the cores.
 
-The kernels (orbits/core/_fast_kepler.py, _fast_propagate.py) are numba functions compiled with
+The kernels (orbits/core/**/_fast_*.py) are numba functions compiled with
 ``cache=True``: the first call ever compiles them, once per machine and version; every later process
 loads the machine code from the on-disk cache. numba itself is imported only when a kernel is first
 needed, never by ``import orbits`` or ``orbits --help``; a first call in a fresh process still pays for
 importing numba and initialising its CPU target (timings: the README's Benchmarks section).
 
 Where the cache lives: a folder ``orbits-<digest>`` under the first writable of ``NUMBA_CACHE_DIR`` (if
-set), ``orbits/core/__pycache__``, the user cache (``$XDG_CACHE_HOME`` or ``~/.cache``)/numba and the
-system temporary folder; if none is writable (a read-only install with no writable home or /tmp) the
+set), the user's cache folder (``$XDG_CACHE_HOME`` or ``~/.cache`` on Linux)/orbits, the package's own
+``orbits/core/__pycache__`` (a fallback: a system-wide install cannot write there) and the system temporary folder;
+if none is writable (a read-only install with no writable home or /tmp) the
 kernels compile in memory for the session. The digest hashes the kernels' source files and the
 modules they take constants from: numba checks only the file that defines a cached function, so
 without it a change to a helper or a constant in another file would load stale machine code.
@@ -39,9 +40,9 @@ import numpy as np
 #: Smallest batch worth a second thread: below it the hand-off to the thread pool outweighs the gain.
 PARALLEL_MIN = 1 << 15
 
-#: Modules of orbits/core whose constants the kernels (orbits/core/_fast*.py) compile in.
-_KERNEL_DEPENDENCIES = ("_kepler_shared.py", "_propagate_shared.py", "_lambert_shared.py", "_dop853_shared.py",
-                        "_roots.py", "series.py")
+#: Modules of orbits/core (paths under it) whose constants the kernels (orbits/core/**/_fast*.py) compile in.
+_KERNEL_DEPENDENCIES = ("twobody/_kepler_shared.py", "twobody/_propagate_shared.py",
+                        "manoeuvres/_lambert_shared.py", "_dop853_shared.py", "_roots.py", "series.py")
 
 #: Kepler and propagation batches from this size on start the compiled kernels by themselves ("auto" mode); smaller
 #: ones, such as a calculator query, take the NumPy implementation (the same algorithm and accuracy:
@@ -160,18 +161,30 @@ def cache_dir():
     if _state["cache_dir"] is None:
         digest = hashlib.sha256()
         folder = Path(__file__).parent
-        for source in sorted(folder.glob("_fast*.py")) + [folder / name for name in _KERNEL_DEPENDENCIES]:
+        for source in sorted(folder.rglob("_fast*.py")) + [folder / name for name in _KERNEL_DEPENDENCIES]:
             digest.update(source.read_bytes())
         name = f"orbits-{digest.hexdigest()[:16]}"
-        user_cache = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
         roots = [
             os.environ.get("NUMBA_CACHE_DIR"),
+            os.path.join(user_cache_home(), "orbits"),
             os.path.join(os.path.dirname(__file__), "__pycache__"),
-            os.path.join(user_cache, "numba"),
             tempfile.gettempdir(),
         ]
         _state["cache_dir"] = first_writable([root for root in roots if root], name) or ""
     return _state["cache_dir"] or None
+
+
+def user_cache_home():
+    """The user's cache folder: $XDG_CACHE_HOME if set to an absolute path (the XDG base directory rule), else
+    ~/Library/Caches on macOS, %LOCALAPPDATA% on Windows and ~/.cache elsewhere."""
+    xdg = os.environ.get("XDG_CACHE_HOME", "")
+    if os.path.isabs(xdg):
+        return xdg
+    if sys.platform == "darwin":
+        return os.path.join(os.path.expanduser("~"), "Library", "Caches")
+    if sys.platform == "win32" and os.environ.get("LOCALAPPDATA"):
+        return os.environ["LOCALAPPDATA"]
+    return os.path.join(os.path.expanduser("~"), ".cache")
 
 
 def first_writable(roots, name):

@@ -52,7 +52,7 @@ def halley_step(
     """One safeguarded Halley step of an increasing function: (x, lo, hi, converged). The bracket [lo, hi] first
     moves to x by the sign of f = f(x); a step that leaves it is replaced by bisection. Converged when f == 0,
     when the Halley step was below 2**-26 relative, or when the bracket is down to 2**-52 relative. The compiled
-    solvers' _halley_step (orbits/core/_fast_kepler.py) is its port."""
+    solvers' _halley_step (orbits/core/twobody/_fast_kepler.py) is its port."""
     lo, hi = np.where(f < 0, x, lo), np.where(f > 0, x, hi)
     with np.errstate(all="ignore"):
         new = x - f / (df - 0.5 * f * d2f / df)

@@ -1,7 +1,7 @@
 """Input rules on float64 arrays, the one home of finiteness and positivity: every layer above calls these.
 
 Each error is an OrbitDomainError naming the quantity, its first offending value, the allowed range and the unit.
-The unit-aware rules (quantities, strings, primaries, size elements) build on these in orbits.inputs.
+The unit-aware rules (quantities, strings, primaries, size elements) build on these in orbits._common.inputs.
 """
 
 import numpy as np

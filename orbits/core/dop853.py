@@ -11,7 +11,7 @@ derivatives. The default tolerance, rtol = atol = 100 eps (2.2e-14), is the tigh
 (tests/core/test_periodic_core.py measures its global error on Kepler ellipses against Kepler's equation).
 
 The coefficients and the step-size rule's constants live in orbits.core._dop853_shared, which the compiled port
-(orbits/core/_fast_cr3bp.py) imports too.
+(orbits/core/periodic/_fast_cr3bp.py) imports too.
 """
 
 import math

@@ -47,6 +47,17 @@ class UnknownNameError(OrbitDomainError, KeyError):
     def __str__(self) -> str:
         return str(self.args[0]) if self.args else ""
 
+    @classmethod
+    def among(cls, what: str, name: object, known: "list[str]", note: str = "") -> "UnknownNameError":
+        """The error for `name`, which is not among `known`: "unknown body 'Marz'; did you mean Mars?" when some
+        names are close (the line stays short), else every known name."""
+        import difflib
+
+        close = difflib.get_close_matches(str(name).strip().lower(), [k.lower() for k in known], n=3, cutoff=0.6)
+        if close:
+            return cls(f"{what} {name!r}{note}; did you mean {' or '.join(k for k in known if k.lower() in close)}?")
+        return cls(f"{what} {name!r}{note}; known: {', '.join(known)}")
+
 
 class OrbitsWarning(UserWarning):
     """Base class of the warnings orbits gives on purpose: the answer stands, but something about it needs saying

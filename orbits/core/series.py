@@ -1,6 +1,7 @@
 """The one power-series family the core needs, and Horner's rule to evaluate it.
 
-x - sin x, sinh x - x (orbits.core.kepler), the Stumpff functions c2 and c3 (orbits.core.propagate) and the
+x - sin x, sinh x - x (orbits.core.twobody.kepler), the Stumpff functions c2 and c3 (orbits.core.twobody.propagate)
+and the
 compiled kernels' sine, cosine and exponential (orbits.core._fast_math) are all sums of the form
 
     sum_{k < terms} sign**k x**k / (2k + first)!

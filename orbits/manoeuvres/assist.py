@@ -3,7 +3,7 @@ flyby as an elastic collision with a moving planet).
 
 The planet-frame hyperbola is an orbits.Flyby, so v_inf keeps its size and turns by the flyby's deflection; the
 heliocentric speed changes by what the planet's motion lends. A Sun-planet-probe integration in rebound and heyoka
-agrees with the patched conic to the order of the planet's mass ratio (orbits.validate.impulses).
+agrees with the patched conic to the order of the planet's mass ratio (orbits.validate.manoeuvres).
 """
 
 from collections.abc import Iterable
@@ -13,12 +13,12 @@ from functools import cached_property
 import astropy.units as u
 import numpy as np
 
-from orbits import display, inputs, units
-from orbits.constants import Body
-from orbits.core import assist as assist_core
+from orbits._common import display, inputs, units
+from orbits._common.constants import Body
+from orbits._common.tables import attribute_table
 from orbits.core.errors import OrbitDomainError
-from orbits.flyby import Flyby
-from orbits.tables import attribute_table
+from orbits.core.manoeuvres import assist as assist_core
+from orbits.encounters.flyby import Flyby
 
 
 @dataclass(frozen=True, eq=False, repr=False)

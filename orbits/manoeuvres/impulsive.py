@@ -14,8 +14,9 @@ departure (the notes' third cosmic velocity as a burn, XXI.ix).
     <Quantity 16.648 km / s>
 
 Every burn is instant; a signed speed change counts along the motion. The speed differences are formed without
-cancellation (orbits.core.manoeuvres, <= 4 ulp against mpmath). Each manoeuvre's `impulse_plan()` lays it out as
-burns at times for orbits.validate.impulses, where rebound and heyoka fly it and land on the predicted orbit to
+cancellation (orbits.core.manoeuvres.impulsive, <= 4 ulp against mpmath). Each manoeuvre's `impulse_plan()` lays it
+out as
+burns at times for orbits.validate.manoeuvres, where rebound and heyoka fly it and land on the predicted orbit to
 1.5e-13 (tests/validation/test_manoeuvres_integration.py). Gravity assists live in orbits.manoeuvres.assist.
 """
 
@@ -26,16 +27,16 @@ from functools import cached_property
 import astropy.units as u
 import numpy as np
 
-from orbits import display, inputs, units
-from orbits.catalogue_orbits import mean_elements
-from orbits.constants import Body, body
-from orbits.core import manoeuvres as core
+from orbits._common import display, inputs, units
+from orbits._common.constants import Body, body
+from orbits._common.tables import quantity_table
 from orbits.core.checks import check_finite, first_where
 from orbits.core.errors import OrbitDomainError
-from orbits.core.twobody import circular_angular_velocity, circular_speed
-from orbits.escape import CosmicVelocities
-from orbits.orbit import PRIMARY, Orbit
-from orbits.tables import quantity_table
+from orbits.core.manoeuvres import impulsive as core
+from orbits.core.twobody.twobody import circular_angular_velocity, circular_speed
+from orbits.encounters.escape import CosmicVelocities
+from orbits.ephemeris.catalogue import mean_elements
+from orbits.twobody.orbit import PRIMARY, Orbit
 
 
 def _turn_angle(value, name):

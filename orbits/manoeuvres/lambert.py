@@ -8,12 +8,14 @@
     >>> transfer.transfer_angle.to(u.deg).round(6), transfer.eccentricity.round(4)
     (<Quantity 90. deg>, <Quantity 0.4819>)
 
-Izzo's algorithm with the cancellation-free forms of orbits.core.lambert (which says how a solution is chosen:
+Izzo's algorithm with the cancellation-free forms of orbits.core.manoeuvres.lambert (which says how a solution is
+chosen:
 revolutions, branch, prograde and the plane normal). Every argument broadcasts: arrays of positions, times of
 flight and revolution counts give arrays of transfers. The arrival point of the returned v1, propagated at 60
 digits, is within 1e-13 |r2| on the hard cases of tests/core/test_lambert.py.
 
-Between two bodies on two dates, the positions come from the ephemeris (orbits.ephemeris, heliocentric ICRF) and
+Between two bodies on two dates, the positions come from the ephemeris (orbits.ephemeris.positions, heliocentric
+ICRF) and
 the transfer adds the patched-conic C3 and v_inf at both ends, exactly as orbits.Porkchop computes a cell:
 
     >>> trip = lambert("Earth", "Mars", depart="2026-11-26", arrive="2027-08-15")
@@ -30,15 +32,17 @@ from typing import TYPE_CHECKING, Any
 import astropy.units as u
 import numpy as np
 
-from orbits import display, ephemeris, inputs, units
-from orbits.constants import SPEED_OF_LIGHT, Body
-from orbits.core import elements, frames
-from orbits.core import lambert as lambert_core
+from orbits._common import display, inputs, units
+from orbits._common.constants import SPEED_OF_LIGHT, Body
+from orbits._common.tables import quantity_table
+from orbits.core import frames
 from orbits.core.errors import ILL_CONDITIONED, IllConditionedWarning, OrbitDomainError
-from orbits.tables import quantity_table
+from orbits.core.manoeuvres import lambert as lambert_core
+from orbits.core.twobody import elements
+from orbits.ephemeris import positions as ephemeris
 
 if TYPE_CHECKING:
-    from orbits.orbit import Orbit
+    from orbits.twobody.orbit import Orbit
 
 #: the Sun's GM (m3/s2) of transfers between bodies: JPL DE430's, the mass that goes with the ephemeris
 SUN_GM = ephemeris.DE430_GM["Sun"]
@@ -52,7 +56,7 @@ class LambertTransfer(display.Displayed):
 
     r1, r2 (m), tof (s), mu (m3/s2): the problem; revolutions and branch: which solution; v1, v2 (m/s),
     angle (rad, in (0, 2 pi), not counting complete revolutions), x (Izzo's variable) and a (m): the solution;
-    kappa: its conditioning (orbits.core.lambert.arrival_conditioning).
+    kappa: its conditioning (orbits.core.manoeuvres.lambert.arrival_conditioning).
     departure, arrival: the bodies' ephemeris states (heliocentric ICRF) for a transfer between bodies, else None.
     """
 
@@ -120,7 +124,8 @@ class LambertTransfer(display.Displayed):
     @cached_property
     def conditioning(self) -> u.Quantity:
         """kappa (dimensionless): the shift of the arrival point, as a fraction of |r2|, when r1, v1 and the time of
-        flight move by their float64 rounding (orbits.core.lambert.arrival_conditioning). v1 reaches r2 within a few
+        flight move by their float64 rounding (orbits.core.manoeuvres.lambert.arrival_conditioning). v1 reaches r2
+        within a few
         kappa plus 1e-13; past 1e-8 its digits cannot all be flown, and solving it warned."""
         return self.kappa << u.one
 
@@ -158,7 +163,7 @@ class LambertTransfer(display.Displayed):
     def orbit(self) -> "Orbit":
         """The transfer conic as an Orbit at departure: in the ecliptic of J2000 between bodies (their ICRF states
         turned), else in the frame of r1 and r2."""
-        from orbits.orbit import Orbit
+        from orbits.twobody.orbit import Orbit
 
         r, v = self.r1, self.v1_si
         if self.departure is not None:
@@ -237,7 +242,7 @@ def lambert(
     Parameters
     ----------
     r1, r2 : Quantity ['length'], (..., 3), positions relative to the primary's centre; or two ephemeris bodies
-        by name ("Earth", "Mars", see orbits.ephemeris.points()), with `depart` and `arrive` instead of `tof`.
+        by name ("Earth", "Mars", see orbits.ephemeris.positions.points()), with `depart` and `arrive` instead of `tof`.
     tof : Quantity ['time'] > 0, time of flight.
     primary : a catalogue body (or its name), a mass or a GM (Quantity); default the Sun. Between bodies it is
         the Sun with DE430's GM (SUN_GM), the mass that goes with the ephemeris.
@@ -259,7 +264,7 @@ def lambert(
     energy and speeds, and its elements are in the ecliptic of J2000.
 
     Raises OrbitDomainError for an infeasible revolution count (naming the minimum time) or bad input, and
-    DegenerateOrbitError for collinear r1 and r2 without a usable normal. Accuracy: see orbits.core.lambert.
+    DegenerateOrbitError for collinear r1 and r2 without a usable normal. Accuracy: see orbits.core.manoeuvres.lambert.
     """
     branch, prograde = _sense(revolutions, branch, prograde, normal)
     if isinstance(r1, str) or isinstance(r2, str):

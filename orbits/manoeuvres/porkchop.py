@@ -16,9 +16,11 @@ J2000, the side the planets' orbits turn to. Then
     C3 = |v1 - v_departure_body(t1)|**2,   v_inf at arrival = |v2 - v_arrival_body(t2)|,
 
 the patched-conic hyperbolic excess energy at launch and speed at arrival (the planets' own gravity ignored).
-Positions and velocities are heliocentric ICRF from orbits.ephemeris (JPL DE421, or astropy's built-in ephemeris
+Positions and velocities are heliocentric ICRF from orbits.ephemeris.positions (JPL DE421, or astropy's built-in
+ephemeris
 without the extra); the frame does not change C3 or v_inf. The Sun's GM is DE430's (Folkner et al. 2014), the mass
-that goes with the ephemeris: orbits.ephemeris.DE430_GM["Sun"]. Cells whose arrival is not after the launch are
+that goes with the ephemeris: orbits.ephemeris.positions.DE430_GM["Sun"]. Cells whose arrival is not after the launch
+are
 invalid: masked in every grid, never a number.
 
 The C3 of NASA's Earth-to-Mars mission design handbook matches departures from the Earth-Moon barycentre ("EMB"
@@ -44,10 +46,11 @@ import numpy as np
 from astropy.time import Time, TimeDelta
 from astropy.utils.masked import Masked
 
-from orbits import display, ephemeris, inputs, units
+from orbits._common import display, inputs, units
+from orbits._common.tables import quantity_table
 from orbits.core.errors import OrbitDomainError
+from orbits.ephemeris import positions as ephemeris
 from orbits.manoeuvres.lambert import ECLIPTIC_POLE, SUN_GM, lambert, transfer_ends
-from orbits.tables import quantity_table
 
 #: the largest grid computed (cells): 4 million cells take about 0.5 GB of float64 arrays
 MAX_CELLS = 4_000_000
@@ -217,7 +220,7 @@ class Porkchop(display.Displayed):
 
         Parameters
         ----------
-        departure, target : ephemeris points (orbits.ephemeris.points()), different, neither the Sun nor the
+        departure, target : ephemeris points (orbits.ephemeris.positions.points()), different, neither the Sun nor the
             solar-system barycentre (any case: "earth", "Mars").
         launch, arrival : (start, end) dates, astropy Times or ISO strings (UTC unless they name a scale).
         step : Quantity ['time'] > 0, the spacing of both date axes (default 1 d).

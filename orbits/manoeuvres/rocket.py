@@ -25,12 +25,12 @@ from functools import cached_property
 import astropy.units as u
 import numpy as np
 
-from orbits import display, inputs, units
-from orbits.constants import STANDARD_GRAVITY
-from orbits.core import rocket as rocket_core
+from orbits._common import display, inputs, units
+from orbits._common.constants import STANDARD_GRAVITY
+from orbits._common.tables import quantity_table
 from orbits.core.checks import check_finite, first_where
 from orbits.core.errors import OrbitDomainError
-from orbits.tables import quantity_table
+from orbits.core.manoeuvres import rocket as rocket_core
 
 NEWTON = units.KG * units.M / units.S**2
 KG_PER_S = units.KG / units.S

@@ -4,7 +4,7 @@ Needs the optional extra ``pip install 'orbits[dask]'`` (dask and distributed); 
 by ``import orbits``.
 
 - propagate_dask(r0, v0, mu, dt): dask (or NumPy) arrays in, lazy dask arrays (r, v) out. Each chunk goes
-  through orbits.core.propagate.propagate, the same compiled kernel as a NumPy call, and every element
+  through orbits.core.twobody.propagate.propagate, the same compiled kernel as a NumPy call, and every element
   is computed independently, so the values are bit for bit those of the single-process call.
 - validate_sweep(scenes, client): one task per scene (orbits.validate.run.validate on that scene) on the
   client's workers; the report holds the same checks, values and errors as orbits.validate.run.validate (only
@@ -28,9 +28,9 @@ if TYPE_CHECKING:
     import dask.array as da
     from dask.distributed import Client
 
-    from orbits.scene import Scene
     from orbits.validate.models import ModelScene
     from orbits.validate.run import ValidationReport
+    from orbits.validate.scene import Scene
 
 #: LocalCluster default: two single-threaded workers. They are threads of this process by default: worker
 #: processes take longer to start, and each then imports orbits and compiles its heyoka integrators again,
@@ -40,7 +40,7 @@ LOCAL_WORKERS = 2
 
 
 def propagate_dask(r0: ArrayLike, v0: ArrayLike, mu: ArrayLike, dt: ArrayLike) -> "tuple[da.Array, da.Array]":
-    """Lazy (r [m], v [m/s]) dask arrays at t0 + dt [s], chunk by chunk through orbits.core.propagate.
+    """Lazy (r [m], v [m/s]) dask arrays at t0 + dt [s], chunk by chunk through orbits.core.twobody.propagate.
 
     r0, v0 have shape (..., 3) and broadcast with mu and dt over the batch shape, as in the NumPy call.
     The batch is chunked like the first input that spans it (dt, r0, v0, mu in that order), with the
@@ -69,7 +69,7 @@ def _batch_chunks(batch, candidates):
 
 def _propagate_block(r0, v0, mu, dt):
     """One chunk: (..., 6) array of r and v side by side."""
-    from orbits.core.propagate import propagate
+    from orbits.core.twobody.propagate import propagate
 
     r, v = propagate(r0, v0, mu[..., 0], dt[..., 0])
     return np.concatenate([r, v], axis=-1)

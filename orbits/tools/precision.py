@@ -21,11 +21,11 @@ from dataclasses import dataclass, field
 import mpmath
 import numpy as np
 
-from orbits.core import anomalies, elements
-from orbits.core.propagate import propagate
-from orbits.nbody import NBodyProblem
+from orbits.core.twobody import anomalies, elements
+from orbits.core.twobody.propagate import propagate
 from orbits.tools import reference
 from orbits.validate import backends
+from orbits.validate.nbody import NBodyProblem
 
 EARTH_MOON_MU = 0.012150585609624  # m / (M + m), JPL DE430 GM values
 EXTRA_TURN = 0.37  # runs end 0.37 period past the round number: a whole number of periods would return the

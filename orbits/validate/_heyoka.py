@@ -26,7 +26,7 @@ from collections.abc import Callable, Iterator
 import numpy as np
 
 from orbits.core.errors import OrbitDomainError
-from orbits.nbody import ExponentialDrag, NBodyProblem, NBodyResult, ZonalHarmonics, python_sigint, report
+from orbits.validate.nbody import ExponentialDrag, NBodyProblem, NBodyResult, ZonalHarmonics, python_sigint, report
 
 COMPACT_MODE_MIN_BODIES = 4
 

@@ -18,7 +18,7 @@ import time
 import numpy as np
 
 from orbits.core.errors import OrbitDomainError
-from orbits.nbody import ExponentialDrag, NBodyProblem, NBodyResult, ZonalHarmonics, python_sigint, report
+from orbits.validate.nbody import ExponentialDrag, NBodyProblem, NBodyResult, ZonalHarmonics, python_sigint, report
 
 INTEGRATORS = ("ias15", "whfast", "bs")
 #: IAS15's step-size rules. PRS23 (the default) stalls on a ring of small bodies about a dominant central mass
@@ -135,7 +135,7 @@ def _run_adaptive(rebound, problem: NBodyProblem, integrator: str, configure):
 
 def _integrate_to(sim, t: float) -> None:
     """sim.integrate(t, exact_finish_time=1), with Python's Ctrl-C handler back in place after it (rebound installs
-    its own during the call and leaves it behind: orbits.nbody.python_sigint)."""
+    its own during the call and leaves it behind: orbits.validate.nbody.python_sigint)."""
     with python_sigint():
         sim.integrate(t, exact_finish_time=1)
 

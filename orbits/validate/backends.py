@@ -12,8 +12,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from orbits.core.errors import OrbitDomainError
-from orbits.nbody import NBodyProblem, NBodyResult
 from orbits.validate import _heyoka, _rebound
+from orbits.validate.nbody import NBodyProblem, NBodyResult
 
 
 @dataclass(frozen=True)

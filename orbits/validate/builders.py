@@ -9,15 +9,22 @@ import math
 import operator
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike
 
-from orbits.core import lagrange, rings, sphere
 from orbits.core.checks import require_positive
+from orbits.core.cosmology import sphere
 from orbits.core.errors import OrbitDomainError
-from orbits.nbody import NBodyProblem
-from orbits.rings import BREAKUP_DEVIATION, ROUND_OFF_SEED
+from orbits.core.threebody import lagrange, rings
+from orbits.threebody.rings import BREAKUP_DEVIATION, ROUND_OFF_SEED
+from orbits.validate.nbody import NBodyProblem
+
+if TYPE_CHECKING:
+    import astropy.units as u
+
+    from orbits.threebody.lagrange import RestrictedThreeBody
 
 POINTS = lagrange.POINTS
 
@@ -240,12 +247,12 @@ DAY = 86_400.0
 
 def mercury_gr_advance() -> float:
     """Mercury's perihelion advance by general relativity (arcsec per Julian century): the public
-    orbits.perturbations.relativistic_periapsis_advance, 6 pi G M / (c**2 a (1 - e**2)) per orbit, of Standish's
+    orbits.perturb.secular.relativistic_periapsis_advance, 6 pi G M / (c**2 a (1 - e**2)) per orbit, of Standish's
     mean orbit; 42.98 (Clemence 1947; Will, Living Rev. Relativ. 17, 4, 2014)."""
     import astropy.units as u
 
-    from orbits.orbit import Orbit
-    from orbits.perturbations import relativistic_periapsis_advance
+    from orbits.perturb.secular import relativistic_periapsis_advance
+    from orbits.twobody.orbit import Orbit
 
     _, rate = relativistic_periapsis_advance(Orbit.from_body("Mercury"))
     return float((rate * 36525 * u.day).to_value(u.arcsec))
@@ -302,7 +309,7 @@ def solar_system_problem(epoch, years: float, post_newtonian: bool, outputs: int
     """
     import astropy.units as u
 
-    from orbits import ephemeris
+    from orbits.ephemeris import positions as ephemeris
 
     when = ephemeris.epoch(epoch, scale="tdb")
     gm_sun = ephemeris.DE430_GM["Sun"]
@@ -325,3 +332,29 @@ def solar_system_problem(epoch, years: float, post_newtonian: bool, outputs: int
         _eccentricity_vector(mercury, mercury_v, gm_sun + ephemeris.DE430_GM["Mercury"]),
         normal / np.linalg.norm(normal), years)
     return problem, expectation, (AU, gm_sun)
+
+
+def test_particle_problem(system: "RestrictedThreeBody", r: "u.Quantity", v: "u.Quantity",
+                          times: "u.Quantity") -> NBodyProblem:
+    """The binary of `system` and one massless particle started at the rotating-frame state r (length), v (speed),
+    shape (3,), as an NBodyProblem for orbits.validate.backends.integrate, in code units: G (M + m) = 1, r = 1,
+    n = 1 (the binary's period is 2 pi), output at n t for `times` (time Quantity, increasing, > 0).
+
+    Bodies: 0 = M at (-mu, 0, 0), 1 = m at (1 - mu, 0, 0), 2 = the particle; system.rotating_track turns the
+    result back into rotating-frame positions.
+    """
+    from orbits._common import inputs, units
+
+    if np.ndim(system.mu) != 0:
+        raise OrbitDomainError("test_particle_problem needs a single binary; this object holds an array of them")
+    mu, scale, n = float(system.mu), float(system.r), float(system.angular_velocity.to_value(units.RAD_PER_S))
+    speed = n * scale
+    r_in, v_in = lagrange.rotating_to_inertial(inputs.vector(r, units.M, "position r") / scale,
+                                               inputs.vector(v, units.M_PER_S, "velocity v") / speed, 0.0)
+    return NBodyProblem(
+        gm=[1.0 - mu, mu, 0.0],
+        positions=[[-mu, 0.0, 0.0], [1.0 - mu, 0.0, 0.0], r_in],
+        velocities=[[0.0, -mu, 0.0], [0.0, 1.0 - mu, 0.0], v_in],
+        n_active=2,
+        times=units.to_si(times, units.S, "times") * n,
+    )

@@ -1,7 +1,7 @@
-"""Integrations the pictures of perturbed orbits draw (orbits.plot.perturbations): an orbit's secular motion
+"""Integrations the pictures of perturbed orbits draw (orbits.perturb.plot): an orbit's secular motion
 under J2 and J4 (secular_history), a frozen design's eccentricity vector (frozen_history), a repeat ground track
 (ground_track), drag decay (decay_history) and Kozai-Lidov cycles (kozai_history), each with rebound and heyoka,
-each run bounded before it starts. The problems and the mean elements come from orbits.validate.perturbed, whose
+each run bounded before it starts. The problems and the mean elements come from orbits.validate.perturb, whose
 scenes test the same closed forms.
 """
 
@@ -10,11 +10,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from orbits.constants import body
-from orbits.core import oblateness, third_body
-from orbits.nbody import NBodyProblem, ZonalHarmonics
+from orbits._common.constants import body
+from orbits.core.perturb import oblateness, third_body
 from orbits.validate import models
-from orbits.validate.perturbed import (
+from orbits.validate.nbody import NBodyProblem, ZonalHarmonics
+from orbits.validate.perturb import (
     DAY,
     SAMPLES,
     block_averages,
@@ -106,9 +106,9 @@ def secular_history(orbit, revolutions: int = 30, backends=None) -> SecularHisto
     """Integrate `orbit` (an orbits.Orbit about a catalogue body with J2, one orbit; or the name of a J2 scene,
     J2_SCENES) under the body's J2 and J4 for `revolutions` (1 to 2000) with rebound and heyoka, and measure its
     node and periapsis: a SecularHistory. The orbit's elements are used as mean elements at t = 0."""
-    from orbits.constants import body_with_gm
+    from orbits._common.constants import body_with_gm
     from orbits.core.errors import OrbitDomainError
-    from orbits.perturbations import oblate_body
+    from orbits.perturb.secular import oblate_body
 
     if isinstance(orbit, str):
         orbit = scene_orbit(orbit)
@@ -174,7 +174,7 @@ MAX_FROZEN_REVOLUTIONS = 4000
 
 
 def frozen_revolutions(design) -> int:
-    """Revolutions of one apsidal period 2 pi / (domega/dt) of a frozen design (orbits.perturbations.Design): what
+    """Revolutions of one apsidal period 2 pi / (domega/dt) of a frozen design (orbits.perturb.secular.Design): what
     the circular start's eccentricity vector takes to circle the frozen point once."""
     primary, a_m = design.primary, design.semi_major_axis.to_value("m")
     e, inc = float(design.eccentricity.value), design.inclination.to_value("rad")
@@ -183,7 +183,7 @@ def frozen_revolutions(design) -> int:
 
 
 def frozen_history(design, revolutions: int | None = None, backends=None) -> FrozenHistory:
-    """Integrate a frozen design (orbits.perturbations.frozen) and a circular orbit of the same size and inclination
+    """Integrate a frozen design (orbits.perturb.secular.frozen) and a circular orbit of the same size and inclination
     under the body's J2, J3 and J4 with rebound and heyoka for `revolutions` (default: one apsidal period; at most
     MAX_FROZEN_REVOLUTIONS), and average their eccentricity vectors over each revolution: a FrozenHistory."""
     from orbits.core.errors import OrbitDomainError
@@ -248,7 +248,7 @@ def _ascending_nodes(times: np.ndarray, z: np.ndarray, longitude_unwrapped: np.n
 
 
 def ground_track(design, backends=None) -> GroundTrack:
-    """Integrate a repeat-ground-track design (orbits.perturbations.repeat_ground_track), started at its ascending
+    """Integrate a repeat-ground-track design (orbits.perturb.secular.repeat_ground_track), started at its ascending
     node on its mean orbit (oblateness.osculating_semi_major_axis), under the body's J2 and J4 with rebound and
     heyoka for its cycle (k nodal periods, at most MAX_TRACK_REVOLUTIONS), and follow it over the turning body: a
     GroundTrack."""
@@ -296,7 +296,7 @@ def ground_track(design, backends=None) -> GroundTrack:
 class DecayHistory:
     """A circular orbit decaying by drag as each backend integrates it, until the closed form's end (the band's
     base or the breakdown altitude): what orbits.plot.drag_decay draws over the closed form. `decay` is the
-    orbits.perturbations.DragDecay integrated; `times` (K,) in days; `altitude[backend]` (K,) the radius less the
+    orbits.perturb.secular.DragDecay integrated; `times` (K,) in days; `altitude[backend]` (K,) the radius less the
     body's equatorial radius, in km; `mean_times` (B,) and `mean_altitude[backend]` (B,) the same averaged over
     each revolution of the starting orbit (which removes the small eccentricity drag keeps)."""
 
@@ -308,7 +308,7 @@ class DecayHistory:
 
 
 def decay_history(decay=None, backends=None) -> DecayHistory:
-    """Integrate the circular orbit of `decay` (an orbits.perturbations.DragDecay; by default the drag_decay scene's)
+    """Integrate the circular orbit of `decay` (an orbits.perturb.secular.DragDecay; by default the drag_decay scene's)
     in its exponential band with rebound and heyoka from the start to the end of its lifetime, at most
     MAX_DECAY_REVOLUTIONS revolutions: a DecayHistory."""
     from orbits.core.errors import OrbitDomainError
@@ -376,7 +376,7 @@ def kozai_history(inc_deg: float = 65.0, cycles: float = 2.0, backends=None, tri
     """Integrate a hierarchical triple for `cycles` (0.1 to 4) oscillations of e with rebound and heyoka, output
     KOZAI_SAMPLES times an orbit of the perturber: a KozaiHistory. The triple is the kozai_lidov scene's (a test
     particle at a = 1, e0 = 0.01, omega = 90 deg, inclined inc_deg (45 to 80) to an equal mass's circular orbit
-    at 12) or `triple`, an orbits.perturbations.KozaiLidov, in units of its inner a and G m0. A triple whose run
+    at 12) or `triple`, an orbits.perturb.secular.KozaiLidov, in units of its inner a and G m0. A triple whose run
     would exceed MAX_KOZAI_REVOLUTIONS inner revolutions, or last less than one orbit of the perturber, is a
     one-line OrbitDomainError."""
     from orbits.core.errors import OrbitDomainError

@@ -3,7 +3,7 @@
 A model scene is an NBodyProblem in code units plus what the model predicts: positions at the output
 times and, optionally, model-specific Measurements (a measured quantity against its prediction). The
 problems are built in orbits.validate.builders; this module registers them under scene names, so
-`orbits validate` runs them beside the data scenes of orbits/scenes/, and a TOML/JSON file can ask for one
+`orbits validate` runs them beside the data scenes of orbits/validate/scene_files/, and a TOML/JSON file can ask for one
 with `model = "<name>"` and a `[parameters]` table passed to the builder. Every parameter is checked against
 PARAMETER_RULES (type and range, with upper bounds that keep a run bounded) before the builder runs.
 """
@@ -18,10 +18,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from orbits.core import lagrange
 from orbits.core.errors import OrbitsError, ParameterError, SceneError
-from orbits.nbody import NBodyProblem, check_states
-from orbits.scene import MODEL_KEYS, show, unknown_keys
+from orbits.core.threebody import lagrange
 from orbits.validate.builders import (
     POINTS,
     expanding_sphere_problem,
@@ -31,7 +29,9 @@ from orbits.validate.builders import (
     ring_problem,
     solar_system_problem,
 )
+from orbits.validate.nbody import NBodyProblem, check_states
 from orbits.validate.plan import CODE, CodeUnits, Measurement, Plan, Trajectory, plan
+from orbits.validate.scene import MODEL_KEYS, show, unknown_keys
 
 
 @dataclass(frozen=True, eq=False)
@@ -114,7 +114,7 @@ def _sphere_checks(problem):
 
 
 def _earth_moon_mass_ratio():
-    from orbits.constants import BODIES
+    from orbits._common.constants import BODIES
 
     moon, earth = BODIES["Moon"].gm, BODIES["Earth"].gm
     return moon / (earth + moon)
@@ -250,7 +250,7 @@ SOLAR_SYSTEM_AGREEMENT = 1e-11
 
 def _solar_system(epoch="2000-01-01 12:00", years=10.0, post_newtonian=True, outputs=120):
     """The Sun, planets, Earth and Moon from DE421 at `epoch` (TDB), integrated `years` against DE421."""
-    from orbits import ephemeris
+    from orbits.ephemeris import positions as ephemeris
 
     start = time.perf_counter()
     problem, expected, (length, gm) = solar_system_problem(epoch, years, post_newtonian, outputs)
@@ -313,7 +313,7 @@ NEEDS_REBOUNDX: set[str] = set()
 
 def register(builders: dict[str, Callable[..., ModelScene]], rules: dict[str, dict[str, Callable[[object], object]]],
              needs_reboundx: set[str] = frozenset()) -> None:
-    """Add model scenes defined in another module (orbits.validate.perturbed): their builders, the rules of their
+    """Add model scenes defined in another module (orbits.validate.perturb): their builders, the rules of their
     parameters (as PARAMETER_RULES) and which of them need REBOUNDx."""
     MODELS.update(builders)
     PARAMETER_RULES.update(rules)
@@ -328,7 +328,7 @@ def missing_extra(name: str) -> str | None:
         return "needs REBOUNDx: pip install 'orbits[ephemeris]'"
     if name != "solar_system":
         return None
-    from orbits import ephemeris
+    from orbits.ephemeris import positions as ephemeris
 
     needs = [] if ephemeris.available_source() == "de421" else ["JPL DE421 (skyfield-data, jplephem)"]
     if importlib.util.find_spec("reboundx") is None:
@@ -420,7 +420,7 @@ def _points(value: object) -> tuple[str, ...]:
 
 def _de421_epoch(value: object) -> str:
     """Rule of an epoch: a date string (TDB) inside DE421 (1899-07-29 to 2053-10-09)."""
-    from orbits import ephemeris
+    from orbits.ephemeris import positions as ephemeris
 
     if not isinstance(value, str):
         raise ValueError(f"{show(value)} must be a date string such as '2000-01-01 12:00' (TDB)")

@@ -21,10 +21,11 @@ from dataclasses import dataclass
 import astropy.units as u
 import numpy as np
 
-from orbits.core import cr3bp, lagrange
-from orbits.nbody import NBodyProblem
+from orbits.core.periodic import cr3bp
+from orbits.core.threebody import lagrange
 from orbits.validate import models
 from orbits.validate.models import ModelScene
+from orbits.validate.nbody import NBodyProblem
 from orbits.validate.plan import Measurement
 
 #: the departure is followed from its offset until the particles are DEPARTURE_END apart (units of r), its growth
@@ -91,7 +92,7 @@ class PeriodicExpectation:
 
 def periodic_orbit_problem(orbit, periods: int = 10, offset: float | None = None
                            ) -> tuple[NBodyProblem, PeriodicExpectation]:
-    """(NBodyProblem, PeriodicExpectation) of a PeriodicOrbit (orbits.periodic): the binary (G M = 1 - mu at
+    """(NBodyProblem, PeriodicExpectation) of a PeriodicOrbit (orbits.periodic.family): the binary (G M = 1 - mu at
     (-mu, 0, 0), G m = mu at (1 - mu, 0, 0), n = 1) and the orbit's particle, output at 1 .. `periods` periods and
     just before the first; with `offset` (units of r) a second particle that far along the unstable eigenvector,
     output at every period until the predicted separation passes DEPARTURE_END."""
@@ -182,7 +183,7 @@ def _timed(build):
 
 def lyapunov_scene(periods: int = 10) -> ModelScene:
     """The Earth-Moon L1 planar Lyapunov orbit of Ax = 20,000 km."""
-    from orbits.periodic import PeriodicOrbit
+    from orbits.periodic.family import PeriodicOrbit
 
     orbit, seconds = _timed(lambda: PeriodicOrbit.lyapunov(_earth_moon(), "L1", ax=20_000 * u.km))
     return periodic_scene("periodic_lyapunov", f"The {orbit.describe()} orbit of Ax = 20,000 km (T = "
@@ -192,7 +193,7 @@ def lyapunov_scene(periods: int = 10) -> ModelScene:
 
 def halo_scene(periods: int = 10) -> ModelScene:
     """The Earth-Moon L2 southern halo orbit of Az = 20,000 km."""
-    from orbits.periodic import PeriodicOrbit
+    from orbits.periodic.family import PeriodicOrbit
 
     orbit, seconds = _timed(lambda: PeriodicOrbit.halo(_earth_moon(), "L2", az=20_000 * u.km, branch="southern"))
     return periodic_scene("periodic_halo", f"The {orbit.describe()} orbit of Az = 20,000 km (T = "
@@ -202,7 +203,7 @@ def halo_scene(periods: int = 10) -> ModelScene:
 
 def dro_scene(periods: int = 10) -> ModelScene:
     """The Earth-Moon distant retrograde orbit of Ax = 70,000 km."""
-    from orbits.periodic import PeriodicOrbit
+    from orbits.periodic.family import PeriodicOrbit
 
     orbit, seconds = _timed(lambda: PeriodicOrbit.distant_retrograde(_earth_moon(), ax=70_000 * u.km))
     return periodic_scene("periodic_dro", f"The {orbit.describe()} orbit of Ax = 70,000 km (T = "
@@ -212,7 +213,7 @@ def dro_scene(periods: int = 10) -> ModelScene:
 
 def nrho_scene(periods: int = 10) -> ModelScene:
     """The Earth-Moon L2 southern 9:2 synodic-resonant near-rectilinear halo orbit."""
-    from orbits.periodic import PeriodicOrbit
+    from orbits.periodic.family import PeriodicOrbit
 
     orbit, seconds = _timed(lambda: PeriodicOrbit.near_rectilinear(_earth_moon(), resonance="9:2"))
     perilune = orbit.closest_approaches[1].to_value(u.km)

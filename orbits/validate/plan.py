@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from orbits.nbody import NBodyProblem, NBodyResult
+from orbits.validate.nbody import NBodyProblem, NBodyResult
 
 #: how a check's error is formed from its measured value: |measured - predicted| / |predicted| ("relative error"),
 #: or the measured value itself, which is already a drift from an initial value ("relative drift", "absolute drift")

@@ -21,8 +21,8 @@ from orbits.validate import scenes as _scenes  # noqa: F401  (registers the plan
 from orbits.validate.plan import CodeUnits, Measurement, plan
 
 if TYPE_CHECKING:
-    from orbits.scene import Scene
     from orbits.validate.models import ModelScene
+    from orbits.validate.scene import Scene
 
 DEFAULT_SETTINGS = {
     "rebound": {"integrator": "ias15", "epsilon": 1e-9},
@@ -103,7 +103,7 @@ class ValidationReport:
         return f"ValidationReport({len(self.scenes)} scenes: {', '.join(s.name for s in self.scenes)}; {verdict})"
 
     def _repr_html_(self):
-        from orbits.display import validation_html
+        from orbits._common.display import validation_html
 
         return validation_html(self)
 

@@ -1,8 +1,8 @@
 """Scenes for `orbits validate`: the one loader for both kinds, and the plan of a data scene.
 
 `load` reads a scene once: a model name (orbits.validate.models), a built-in data scene name, or a .toml/.json
-file, which is a model scene when it names a `model` and a data scene otherwise (orbits.scene). The plan of a
-data scene predicts it analytically (orbits.predict), poses it to the integrators in code units (G = 1, length
+file, which is a model scene when it names a `model` and a data scene otherwise (orbits.validate.scene). The plan of a
+data scene predicts it analytically (orbits.validate.predict), poses it to the integrators in code units (G = 1, length
 unit L = the largest initial separation, GM unit = the total GM, time unit sqrt(L**3 / GM)) at the scene's
 output times plus the instants a check needs (t = T for a period, the periapsis time for a closest approach),
 and measures what the scene asks for on each backend's trajectory.
@@ -15,15 +15,14 @@ from pathlib import Path
 
 import numpy as np
 
-from orbits import predict
-from orbits import scene as data_scenes
 from orbits.core.errors import SceneError
-from orbits.nbody import NBodyProblem
-from orbits.scene import Scene
-from orbits.validate import models
+from orbits.validate import models, predict
 from orbits.validate import periodic as _periodic  # noqa: F401  (registers the periodic-orbit model scenes)
-from orbits.validate import perturbed as _perturbed  # noqa: F401  (registers the perturbed-orbit model scenes)
+from orbits.validate import perturb as _perturbed  # noqa: F401  (registers the perturbed-orbit model scenes)
+from orbits.validate import scene as data_scenes
+from orbits.validate.nbody import NBodyProblem
 from orbits.validate.plan import CodeUnits, Measurement, Plan, Trajectory, plan
+from orbits.validate.scene import Scene
 
 
 def builtin_names() -> list[str]:

@@ -14,12 +14,12 @@ import mpmath
 import numpy as np
 import pytest
 
-import orbits.binary
+import orbits.encounters.binary
 from orbits import BODIES, Binary, Orbit, OrbitDomainError
-from orbits.constants import G
-from orbits.core import twobody
-from orbits.nbody import NBodyProblem
+from orbits._common.constants import G
+from orbits.core.twobody import twobody
 from orbits.validate.backends import integrate
+from orbits.validate.nbody import NBodyProblem
 
 GM = u.m**3 / u.s**2
 GM1, GM2 = 1.0, 0.3
@@ -355,7 +355,7 @@ def test_bad_input_names_quantity_value_range_and_unit(kwargs, error, fragment):
 def test_quantities_table_names_and_only():
     pair = Binary.from_elements("Earth", "Moon", a=384399 * u.km, e=0.0549, inc=90 * u.deg)
     table = pair.quantities()
-    assert list(table) == orbits.binary.QUANTITY_NAMES
+    assert list(table) == orbits.encounters.binary.QUANTITY_NAMES
     assert all(name == name.lower() for name in table)
     only = pair.quantities(["star2_periapsis_speed", "covertex_time_apoapsis_side"])
     assert only["star2_periapsis_speed"] == pair.star2.periapsis_speed
@@ -365,7 +365,7 @@ def test_quantities_table_names_and_only():
 
 
 def test_module_examples_run():
-    assert doctest.testmod(orbits.binary).failed == 0
+    assert doctest.testmod(orbits.encounters.binary).failed == 0
 
 
 def test_without_an_inclination_the_sky_quantities_ask_for_it():

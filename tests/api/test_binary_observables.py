@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 
 from orbits import OrbitDomainError
-from orbits.binary import Binary, SpectroscopicBinary
-from orbits.constants import G
+from orbits._common.constants import G
+from orbits.encounters.binary import Binary, SpectroscopicBinary
 
 hy = pytest.importorskip("heyoka")
 
@@ -109,7 +109,7 @@ def test_radial_velocities_follow_the_closed_form_and_the_integration(pair):
     k2 = pair.rv_semi_amplitude2.to_value(u.m / u.s)
     np.testing.assert_allclose(v2.to_value(u.m / u.s), states[:, 11], rtol=0, atol=3e-13 * k2)  # measured 3.7e-14
     # gamma + K_i (cos(omega_i + nu) + e cos omega_i), star 1's omega = star 2's + pi
-    from orbits.core.binary import radial_velocity
+    from orbits.core.encounters.binary import radial_velocity
 
     nu = np.array([float(pair.relative.at(t).nu) for t in dt * u.s])
     k2 = pair.rv_semi_amplitude2.to_value(u.m / u.s)

@@ -1,4 +1,4 @@
-"""orbits.catalogue_orbits: the published orbits of Ceres, Vesta and the moons against their sources, a second
+"""orbits.ephemeris.catalogue: the published orbits of Ceres, Vesta and the moons against their sources, a second
 published element set, or their published periods, each at the accuracy the catalogue states.
 
 Sources quoted here (besides those the module cites): JPL Horizons' osculating elements of 1 Ceres, solution JPL#48
@@ -14,10 +14,12 @@ import astropy.units as u
 import numpy as np
 import pytest
 
-from orbits import Orbit, OrbitDomainError, ephemeris
-from orbits.catalogue_orbits import DRIFT_KM_PER_YEAR, JPL_SUN_GM, mean_elements, reference_to_ecliptic
-from orbits.constants import AU, BODIES
-from orbits.core import anomalies, frames
+from orbits import Orbit, OrbitDomainError
+from orbits._common.constants import AU, BODIES
+from orbits.core import frames
+from orbits.core.twobody import anomalies
+from orbits.ephemeris import positions as ephemeris
+from orbits.ephemeris.catalogue import DRIFT_KM_PER_YEAR, JPL_SUN_GM, mean_elements, reference_to_ecliptic
 
 EPOCH_2025 = 2460787.0  # 2025-04-21 12:00 TDB, the epoch of the Ceres and Vesta states
 
@@ -60,7 +62,7 @@ def test_the_small_bodies_give_back_their_published_state_at_the_epoch(name, r_a
     assert orbit.mu == BODIES["Sun"].gm  # the catalogue's IAU Sun, 3e-10 from JPL's k**2: 1 mm over a day
     el = mean_elements(name)
     nu = anomalies.true_from_mean(el.mean_anomaly, el.e)
-    from orbits.core import elements
+    from orbits.core.twobody import elements
 
     r, v = elements.elements_to_state(el.a * (1 - el.e**2), el.e, el.inc, el.raan, el.argp, nu, JPL_SUN_GM)
     np.testing.assert_allclose(frames.ecliptic_to_equatorial(r) / AU, r_au, rtol=0, atol=2e-15)  # measured 4e-16
@@ -183,8 +185,8 @@ def _with_the_planets(jd: float, r_ecliptic: np.ndarray, v_ecliptic: np.ndarray,
     their DE421 states at `jd` (backward by reversing every velocity), in au and days."""
     from astropy.time import Time
 
-    from orbits.nbody import NBodyProblem
     from orbits.validate.backends import integrate
+    from orbits.validate.nbody import NBodyProblem
 
     read = {point: ephemeris.barycentric(point, Time(jd, format="jd", scale="tdb"), "de421") for point in _PULLING}
     sun_r, sun_v = read["Sun"]

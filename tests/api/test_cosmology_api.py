@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 from astropy.cosmology import FlatLambdaCDM, LambdaCDM, Planck18
 
-import orbits.cosmology
+import orbits.cosmology.models
 from orbits import Cosmology, ExpandingSphere, OrbitDomainError
 
 KM_S_MPC = u.km / u.s / u.Mpc
@@ -335,7 +335,7 @@ def test_sphere_from_mass_and_its_errors():
 
 
 def test_docstring_examples_run():
-    assert doctest.testmod(orbits.cosmology).failed == 0
+    assert doctest.testmod(orbits.cosmology.models).failed == 0
 
 
 # ---- values beyond float64, and times beyond z = -1 -----------------------------------------------------------
@@ -362,7 +362,7 @@ def test_the_distance_modulus_stays_finite_where_the_luminosity_distance_does_no
     for z in (1.0, 1e10, 1e300):
         transverse = model.comoving_distance(z).to_value(u.m)  # flat: D_M = D_C
         with mpmath.workdps(40):
-            ten_parsecs = mpmath.mpf(orbits.cosmology.TEN_PARSECS)
+            ten_parsecs = mpmath.mpf(orbits.cosmology.models.TEN_PARSECS)
             exact = 5 * mpmath.log10((1 + mpmath.mpf(z)) * mpmath.mpf(transverse) / ten_parsecs)
         assert model.distance_modulus(z).value == pytest.approx(float(exact), rel=4e-16, abs=0)  # measured 1 ulp
 

@@ -11,8 +11,9 @@ import pytest
 from astropy.coordinates import get_body_barycentric_posvel
 from astropy.time import Time
 
-from orbits import BODIES, Orbit, OrbitDomainError, UnknownNameError, body, ephemeris
+from orbits import BODIES, Orbit, OrbitDomainError, UnknownNameError, body
 from orbits.core import frames
+from orbits.ephemeris import positions as ephemeris
 
 PLANETS = ["Mercury", "Venus", "Earth", "Mars", "Jupiter", "Saturn", "Uranus", "Neptune", "Pluto"]
 RNG_EPOCHS = np.random.default_rng(20261125).uniform(2415021.0, 2469807.0, 200)  # 1900-01-01 .. 2049-12-31
@@ -367,7 +368,8 @@ def test_the_ephemeris_is_imported_only_when_asked():
     import subprocess
     import sys
 
-    code = "import sys, orbits; orbits.Orbit; print('jplephem' in sys.modules, 'orbits.ephemeris' in sys.modules)"
+    code = ("import sys, orbits; orbits.Orbit; "
+            "print('jplephem' in sys.modules, 'orbits.ephemeris.positions' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.split() == ["False", "False"]
 

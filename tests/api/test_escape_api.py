@@ -7,7 +7,7 @@ import astropy.units as u
 import numpy as np
 import pytest
 
-import orbits.escape
+import orbits.encounters.escape
 from orbits import (
     BODIES,
     Binary,
@@ -100,7 +100,7 @@ def test_synchronous_orbits_of_any_rotating_body():
     custom = SynchronousOrbit.of(6.4171e23 * u.kg, period=88642.66 * u.s, radius=3396.2 * u.km)  # Mars
     assert round(custom.altitude.to_value(u.km)) == 17032
     with pytest.warns(InsideBodyWarning, match=r"radius r = 5076\.85 km lies inside the body \(radius 6378\.1 km\)"):
-        fast = SynchronousOrbit.of("Earth", period=1 * u.h)  # 'escape geo --period "1 min"' said nothing
+        fast = SynchronousOrbit.of("Earth", period=1 * u.h)  # 'escape geo --rotation-period "1 min"' said nothing
     assert "altitude" not in fast.quantities()
     with pytest.raises(OrbitDomainError, match="lies inside the body"):
         _ = fast.altitude
@@ -121,4 +121,4 @@ def test_maximum_elongation_of_venus_and_of_the_earth_from_jupiter():
 
 
 def test_module_examples_run():
-    assert doctest.testmod(orbits.escape).failed == 0
+    assert doctest.testmod(orbits.encounters.escape).failed == 0

@@ -1,4 +1,4 @@
-"""Every written file goes through orbits.io: a write that fails reports one line and leaves no temporary file,
+"""Every written file goes through orbits._common.io: a write that fails reports one line and leaves no temporary file,
 links are followed and never replaced, targets where no file can be made are refused before any work."""
 
 import errno
@@ -9,7 +9,7 @@ import pytest
 from typer.testing import CliRunner
 
 from orbits import OutputError
-from orbits.io import check_target, write_atomic
+from orbits._common.io import check_target, write_atomic
 from orbits_cli.main import app
 
 runner = CliRunner()

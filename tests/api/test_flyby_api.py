@@ -16,11 +16,11 @@ import mpmath
 import numpy as np
 import pytest
 
-import orbits.flyby
+import orbits.encounters.flyby
 from orbits import BODIES, Flyby, OrbitDomainError
-from orbits.constants import G
-from orbits.nbody import NBodyProblem
+from orbits._common.constants import G
 from orbits.validate.backends import integrate
+from orbits.validate.nbody import NBodyProblem
 
 GM = u.m**3 / u.s**2
 FAR = 1e8  # impact parameters: where the outgoing and reversed incoming velocities are read
@@ -214,13 +214,13 @@ def test_quantities_tables():
     assert "energy" not in fixed.quantities() and "star1_periapsis_speed" not in fixed.quantities()
     with pytest.warns(orbits.InsideBodyWarning, match="they collide"):
         pair = Flyby.between("Sun", "Jupiter", 1 * u.km / u.s, 1 * u.AU)
-    assert list(pair.quantities()) == orbits.flyby.QUANTITY_NAMES
+    assert list(pair.quantities()) == orbits.encounters.flyby.QUANTITY_NAMES
     assert pair.quantities(["star2_periapsis_speed"])["star2_periapsis_speed"] == pair.star2.periapsis_speed
     assert math.isclose(pair.mass.item(), BODIES["Sun"].mass * BODIES["Jupiter"].mass / (pair.mu.item() / G))
 
 
 def test_module_examples_run():
-    assert doctest.testmod(orbits.flyby).failed == 0
+    assert doctest.testmod(orbits.encounters.flyby).failed == 0
 
 
 def test_a_flyby_inside_the_bodies_is_a_collision_said_once():

@@ -10,7 +10,7 @@ import pytest
 from mpmath import mp, mpf
 
 from orbits import BODIES, Binary, G, OrbitDomainError, RestrictedThreeBody, Ring
-from orbits.core import lagrange
+from orbits.core.threebody import lagrange
 
 
 @pytest.fixture(scope="module")

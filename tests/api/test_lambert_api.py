@@ -7,8 +7,8 @@ import pytest
 
 import orbits
 from orbits import DegenerateOrbitError, OrbitDomainError, lambert
-from orbits.constants import BODIES
-from orbits.core import lambert as core
+from orbits._common.constants import BODIES
+from orbits.core.manoeuvres import lambert as core
 from orbits.tools.bench.lambert import arrival_error
 
 
@@ -101,7 +101,8 @@ def test_between_bodies_on_dates_is_the_porkchop_cell_and_reaches_mars():
     from astropy.coordinates import get_body_barycentric_posvel
     from astropy.time import Time
 
-    from orbits import Porkchop, ephemeris
+    from orbits import Porkchop
+    from orbits.ephemeris import positions as ephemeris
     from orbits.tools.reference import propagate
 
     trip = lambert("Earth", "Mars", depart="2026-11-26", arrive="2027-08-15", source="de421")

@@ -8,10 +8,10 @@ import astropy.units as u
 import numpy as np
 import pytest
 
-import orbits.collisions
-import orbits.oscillations
-import orbits.projectile
-import orbits.rotation
+import orbits.mechanics.collisions
+import orbits.mechanics.oscillations
+import orbits.mechanics.projectile
+import orbits.mechanics.rotation
 from orbits import (
     BODIES,
     Collision,
@@ -31,8 +31,8 @@ from orbits import (
 )
 
 
-@pytest.mark.parametrize("module", [orbits.collisions, orbits.rotation, orbits.projectile,
-                                    orbits.oscillations])
+@pytest.mark.parametrize("module", [orbits.mechanics.collisions, orbits.mechanics.rotation, orbits.mechanics.projectile,
+                                    orbits.mechanics.oscillations])
 def test_docstring_examples(module):
     assert doctest.testmod(module).failed == 0
 
@@ -237,8 +237,8 @@ def test_edge_cases_at_the_ends_of_the_ranges():
     """A vertical incline is refused (no normal force, so no rolling); a shot straight down from the ground lands at
     once (0, not -8.5e-16 s); an undamped oscillator driven at resonance lags by pi/2, the limit b -> 0; an
     amplitude beyond 180 deg is reported as given, sign and unit."""
-    from orbits.core import oscillations as core_oscillations
-    from orbits.core import projectile as core_projectile
+    from orbits.core.mechanics import oscillations as core_oscillations
+    from orbits.core.mechanics import projectile as core_projectile
 
     with pytest.raises(OrbitDomainError, match=r"incline angle = 1.5707963267948966 rad is outside .* \[0, pi/2\)"):
         RigidBody.thin_hoop(1 * u.kg, 0.5 * u.m).rolling_down(90 * u.deg)
@@ -255,7 +255,7 @@ def _period_and_conditioning(length_m, degrees):
     dK/dm = (E - (1 - m) K) / (2 m (1 - m)), dm/dtheta0 = sin(theta0) / 2."""
     import mpmath
 
-    from orbits.constants import STANDARD_GRAVITY
+    from orbits._common.constants import STANDARD_GRAVITY
 
     with mpmath.workdps(40):
         theta = mpmath.mpf(degrees) * mpmath.pi / 180

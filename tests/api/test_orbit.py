@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from orbits import BODIES, Orbit, OrbitDomainError
-from orbits.constants import G
+from orbits._common.constants import G
 
 
 def test_circular_leo_period_matches_keplers_third_law():

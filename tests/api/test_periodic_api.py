@@ -8,8 +8,9 @@ import numpy as np
 import pytest
 
 from orbits import OrbitDomainError, PeriodicFamily, PeriodicOrbit
-from orbits.core import continuation, cr3bp, lagrange
-from orbits.periodic import QUANTITY_NAMES, resonance_period, synodic_period
+from orbits.core.periodic import continuation, cr3bp
+from orbits.core.threebody import lagrange
+from orbits.periodic.family import QUANTITY_NAMES, resonance_period, synodic_period
 
 
 @pytest.fixture(scope="module")

@@ -1,5 +1,5 @@
-"""The pictures of perturbed orbits (orbits.plot.perturbations), drawn from records shaped as the integrations give
-them (orbits.validate.perturbed), for what they draw: the closed form's lines and marks where the theory puts them,
+"""The pictures of perturbed orbits (orbits.perturb.plot), drawn from records shaped as the integrations give
+them (orbits.validate.perturb), for what they draw: the closed form's lines and marks where the theory puts them,
 each backend's curves, each legend entry once, Greek letters typeset, and no text over other text or outside the
 figure."""
 
@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from picture_checks import legend_labels, problems
 
-from orbits.perturbations import DragDecay
+from orbits.perturb.secular import DragDecay
 from orbits.plot import drag_decay, frozen_eccentricity, ground_track, kozai_cycles, save, secular_elements
 from orbits.validate.histories import DecayHistory, FrozenHistory, GroundTrack, KozaiHistory, SecularHistory
 

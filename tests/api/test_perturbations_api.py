@@ -1,11 +1,11 @@
-"""orbits.perturbations: the unit-aware designs, decay and Kozai-Lidov objects, their one-line errors."""
+"""orbits.perturb.secular: the unit-aware designs, decay and Kozai-Lidov objects, their one-line errors."""
 
 import astropy.units as u
 import numpy as np
 import pytest
 
 from orbits import Orbit, OrbitDomainError
-from orbits.perturbations import (
+from orbits.perturb.secular import (
     DragDecay,
     KozaiLidov,
     SecularOrbit,

@@ -10,6 +10,8 @@ import astropy.units as u
 import matplotlib
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from picture_checks import legend_labels, legends, overlapping_texts, problems, titles, untypeset
 
 from orbits import (
@@ -50,8 +52,36 @@ def test_the_checks_find_overlaps_text_outside_and_untypeset_powers():
     ax.plot([], [], label=r"b = 1.287$\times10^{6}$ km, x [$10^{3}$ km], C3 [km$^{2}$/s$^{2}$], $\theta_0$")
     ax.legend()
     assert untypeset(fig) == ["b = 1.287 1e+06 km", "x [10^3 km]", "C3 [km2/s2]", "theta0"]
-    assert set(problems(fig)) == {"no title", "legend entry twice: 'x'", *(
+    assert set(problems(fig)) == {"no title", "legend entry twice: 'x'", "blank panel: 'an untitled panel'",
+                                  "blank figure: no panel draws anything", *(
         f"not typeset: {text!r}" for text in ("b = 1.287 1e+06 km", "x [10^3 km]", "C3 [km2/s2]", "theta0"))}
+
+
+def test_the_checks_find_a_blank_figure_an_invisible_curve_and_a_legend_entry_with_nothing_drawn():
+    """A sentence on a panel with its axes off is a blank figure; an orbit 1/1000 of the frame across, a curve
+    wholly outside the view and a transparent one leave no mark, and their legend entries name nothing; a
+    legend's proxy (no points, standing for marks drawn unlabelled) and a single visible marker are fine."""
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots()
+    ax.text(0.1, 0.5, "nothing to draw", transform=ax.transAxes)
+    ax.set_axis_off()
+    fig.suptitle("a title")
+    assert problems(fig) == ["blank figure: no panel draws anything"]
+    fig, ax = plt.subplots()
+    angle = np.linspace(0, 2 * np.pi, 200)
+    ax.plot(1e3 * np.cos(angle), 1e3 * np.sin(angle), label="star 2")
+    ax.plot(np.cos(angle), np.sin(angle), label="star 1")  # 1/1000 of the frame: under 2 pixels
+    ax.plot([5e3, 6e3], [5e3, 6e3], label="off the view")
+    ax.plot([0, 500], [0, 500], alpha=0.0, label="transparent")
+    ax.plot([], [], "o", label="a proxy")
+    ax.plot([0.0], [0.0], "+", label="centre")
+    ax.set_xlim(-1100, 1100)
+    ax.set_ylim(-1100, 1100)
+    ax.legend()
+    ax.set_title("a binary")
+    assert problems(fig) == ["nothing drawn for 'star 1'", "nothing drawn for 'off the view'",
+                             "nothing drawn for 'transparent'"]
 
 
 # ---- one small case of every picture -------------------------------------------------------------------------
@@ -288,18 +318,21 @@ def test_every_picture_of_a_computed_object_is_fit_for_a_talk(name, request, tmp
 
 
 def test_the_pictures_format_no_numbers_themselves():
-    """Numbers in titles, legends and labels come from orbits.display (natural units, sensible digits, typeset):
+    """Numbers in titles, legends and labels come from orbits._common.display (natural units, sensible digits, typeset):
     no format specification in the picture code ('{x:.4g}', '%.3g')."""
     import re
     from pathlib import Path
 
-    import orbits.plot
+    import orbits
 
+    root = Path(orbits.__file__).parent
+    modules = sorted(root.rglob("plot.py")) + [root / "_common" / "frame.py"]
+    assert len(modules) >= 10  # each subject's pictures, the validation's and the shared frame
     found = []
-    for path in Path(orbits.plot.__file__).parent.glob("*.py"):
+    for path in modules:
         for number, line in enumerate(path.read_text().splitlines(), 1):
             if re.search(r"\{[^{}]*:[+ ]?[\d.]*[dgfe%]\}|%[\d.]*[dgf]\b", line.replace('"%Y-%m-%d"', "")):
-                found.append(f"{path.name}:{number}: {line.strip()}")
+                found.append(f"{path.relative_to(root)}:{number}: {line.strip()}")
     assert found == []
 
 
@@ -423,3 +456,41 @@ def test_an_asteroid_or_dwarf_planet_is_drawn_beside_the_planets(name, part, tmp
     if part == "all":
         assert ax.get_title() == "out to Eris"
     assert problems(fig) == []
+
+
+# ---- titles wrapped evenly ---------------------------------------------------------------------------------------
+
+_WORDS = st.lists(st.text("abcdefghij", min_size=1, max_size=12), min_size=1, max_size=30)
+
+
+@settings(max_examples=300, deadline=None)
+@given(words=_WORDS, characters=st.integers(8, 90))
+def test_a_title_takes_the_fewest_lines_made_as_even_as_they_can_be(words, characters):
+    """The words in order, no line wider than the room (unless one word is), as few lines as a greedy fill, and
+    the narrowest such layout: one character less would take another line. So "period" is never left alone on
+    a last line when the line above could give it company."""
+    from orbits._common.frame import wrapped
+
+    text = " ".join(words)
+    lines = wrapped(text, characters).split("\n")
+    assert " ".join(lines).split() == words
+    assert all(len(line) <= characters or " " not in line for line in lines)
+    greedy, line = [], ""
+    for word in words:
+        if line and len(line) + 1 + len(word) > characters:
+            greedy.append(line)
+            line = word
+        else:
+            line = f"{line} {word}" if line else word
+    assert len(lines) == len(greedy) + 1
+    widest = max(len(line) for line in lines)
+    if widest > max(len(word) for word in words):
+        assert len(wrapped(text, widest - 1).split("\n")) > len(lines)
+
+
+def test_the_pendulum_title_leaves_no_word_alone():
+    from orbits._common.frame import wrapped
+
+    text = "Period of a pendulum against its amplitude, in units of its small-angle period"
+    first, second = wrapped(text, 75).split("\n")
+    assert len(second.split()) > 1 and abs(len(first) - len(second)) < 15

@@ -5,10 +5,13 @@ import matplotlib
 import numpy as np
 import pytest
 from astropy.time import Time
+from picture_checks import problems
 
 import orbits
-from orbits import Orbit, display, scene
+from orbits import Orbit
+from orbits._common import display
 from orbits.plot import orbit_plane, save, validation_residuals
+from orbits.validate import scene
 from orbits.validate.run import validate
 
 matplotlib.use("Agg")
@@ -119,18 +122,26 @@ def test_validation_residuals_count_time_in_each_scenes_own_period(validated, tm
         save(fig, tmp_path / "r.gif")
 
 
-def test_validation_overview_of_scenes_without_predicted_positions_says_so():
+def test_validation_overview_of_scenes_without_predicted_positions_draws_each_check_against_its_tolerance():
     from orbits.plot import validation_overview
     from orbits.validate import load
 
-    _, panels = validation_overview(validate([load("ring_3")]))  # a ring checks its break-up, not positions
+    report = validate([load("ring_3")])  # a ring checks its break-up, not positions
+    fig, panels = validation_overview(report)
     (only,) = panels
-    assert only.texts[0].get_text() == "no positions are predicted in ring_3: the report's checks are all"
+    checks = report.scenes[0].checks
+    assert [label.get_text() for label in only.get_yticklabels()] == [check.quantity for check in checks]
+    assert only.get_xscale() == "log" and "ring_3" in only.get_title()
+    for line in only.get_lines()[:2]:  # one marker a check for each backend, at its error / tolerance
+        backend = line.get_label()
+        assert list(line.get_xdata()) == pytest.approx(
+            [max(check.errors[backend] / check.tolerance, 1e-6) for check in checks])
+    assert problems(fig) == []
 
 
 def test_validation_json_says_in_which_unit_its_times_are(validated):
     """A data scene's residual times and period are in seconds, a model scene's in G = 1 code time units."""
-    from orbits.constants import BODIES
+    from orbits._common.constants import BODIES
 
     scenes = {scene["name"]: scene for scene in validated.to_dict()["scenes"]}
     circular, sphere = scenes["circular"], scenes["expanding_universe"]
@@ -463,7 +474,7 @@ def _astropy_heliocentric_ecliptic_au(name, when):
     """astropy reading the same DE421 file, Sun-centred, turned about the equinox to the ecliptic of J2000."""
     from astropy.coordinates import get_body_barycentric
 
-    from orbits import ephemeris
+    from orbits.ephemeris import positions as ephemeris
 
     kernel = ephemeris.kernel_path()
     r = (get_body_barycentric(name.lower(), when, ephemeris=kernel)
@@ -509,7 +520,7 @@ def test_solar_system_inner_names_every_planet_and_highlights_one_with_its_line_
     sight = _by_gid(ax, "line of sight")[0].get_xydata()
     dots = {line.get_color(): line.get_xydata()[0] for line in _by_gid(ax, "position")}
     np.testing.assert_array_equal(sight, [dots[curves["Earth"].get_color()], dots[curves["Mars"].get_color()]])
-    from orbits import ephemeris
+    from orbits.ephemeris import positions as ephemeris
 
     seen = ephemeris.where("Mars", "2026-11-25")  # the sight line's length in 3D is the Earth-Mars distance
     when = Time("2026-11-25", scale="utc")

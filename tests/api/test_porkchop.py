@@ -20,7 +20,8 @@ import numpy as np
 import pytest
 from astropy.time import Time
 
-from orbits import OrbitDomainError, Porkchop, ephemeris
+from orbits import OrbitDomainError, Porkchop
+from orbits.ephemeris import positions as ephemeris
 from orbits.manoeuvres import porkchop
 from orbits.tools.reference import propagate
 

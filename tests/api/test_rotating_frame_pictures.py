@@ -10,7 +10,7 @@ import pytest
 from orbits import RestrictedThreeBody
 from orbits.core.errors import OrbitDomainError, UnknownNameError
 from orbits.plot import coorbital_plane, lagrange_departure, lagrange_plane, ring_snapshots
-from orbits.validate import backends
+from orbits.validate import backends, builders
 from orbits.validate.builders import fitted_growth_rate, ring_problem
 
 matplotlib.use("Agg")
@@ -45,7 +45,7 @@ def at_rest_on_the_unit_circle(system, degrees_from_secondary, radius=1.0, circu
 
 def integrate_track(system, r, v, periods, outputs):
     times = np.linspace(0, periods, outputs + 1)[1:] * system.period
-    result = backends.integrate("heyoka", system.test_particle_problem(r, v, times))
+    result = backends.integrate("heyoka", builders.test_particle_problem(system, r, v, times))
     return system.rotating_track(result.positions)
 
 
@@ -107,7 +107,7 @@ def test_a_particle_leaves_l1_at_the_eigenvalue_rate(earth_moon):
     # grows, so its quadratic form is zero there): measured 1.1e-16
     assert earth_moon.jacobi_constant(r0, v0).value == pytest.approx(earth_moon.jacobi_constants[0].value, rel=1e-15)
     times = np.linspace(0, 30, 1501)[1:] * u.day
-    result = backends.integrate("heyoka", earth_moon.test_particle_problem(r0, v0, times))
+    result = backends.integrate("heyoka", builders.test_particle_problem(earth_moon, r0, v0, times))
     track = earth_moon.rotating_track(result.positions)
     _, (plane, distance) = lagrange_departure(earth_moon, "L1", offset, times, track)
     away = [line for line in distance.get_lines() if line.get_gid() == "trajectory"][0].get_ydata()

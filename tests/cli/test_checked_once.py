@@ -1,7 +1,7 @@
 """Each value is checked once on its way down: the command line reads the text, the public API checks the value at
-its edge (orbits.inputs), and the core below trusts it on that path.
+its edge (orbits._common.inputs), and the core below trusts it on that path.
 
-A profiler records every call of a rule function (orbits.core.checks, orbits.inputs, and the core's check_* and
+A profiler records every call of a rule function (orbits.core.checks, orbits._common.inputs, and the core's check_* and
 require_* functions) while a command runs in this process; a rule called inside another rule, or inside the
 command line's text parsers, is part of that one check. Each outermost call is charged to the quantity it names.
 """
@@ -52,13 +52,13 @@ def _is_rule(frame) -> bool:
         return False
     if module == "orbits.core.checks":
         return True
-    if module == "orbits.inputs":
+    if module == "orbits._common.inputs":
         return not name.startswith(("parse_", "_")) and name not in ("names", "find_body", "named_body")
     return module.startswith("orbits.core.") and name.startswith(("check_", "require_"))
 
 
 def _is_text_parser(frame) -> bool:
-    return _module(frame) == "orbits.inputs" and frame.f_code.co_name.startswith("parse_")
+    return _module(frame) == "orbits._common.inputs" and frame.f_code.co_name.startswith("parse_")
 
 
 def _importing(frame) -> bool:
@@ -113,7 +113,7 @@ def test_orbit_from_elements_checks_each_input_once():
 
 def test_the_ledger_sees_the_core_checks():
     """The record is not vacuous: a direct core call (which keeps its own checks) is charged to each element."""
-    from orbits.core.elements import elements_to_state
+    from orbits.core.twobody.elements import elements_to_state
 
     counts = checks_during(lambda: elements_to_state(7e6, 0.5, 0.9, 0.1, 0.2, 0.3, 3.986e14))
     assert {key: counts[key] for key in ("size", "e", "i", "nu", "mu")} == dict.fromkeys(("size", "e", "i", "nu",
@@ -146,7 +146,7 @@ def ephemeris_work_during(call) -> Counter:
         if code.co_name == "_set_scale" and module.startswith("astropy.time"):
             if frame.f_locals.get("scale") == "tdb" and frame.f_locals["self"].scale != "tdb":
                 counts["to TDB"] += 1
-        elif module == "orbits.ephemeris":
+        elif module == "orbits.ephemeris.positions":
             if code.co_name == "_require_de421_span":
                 counts["span check"] += 1
             elif code.co_name == "_de421_from_ssb":

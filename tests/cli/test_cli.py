@@ -120,11 +120,23 @@ def test_validate_default_runs_every_builtin_scene_and_writes_json(tmp_path):
     target = tmp_path / "report.json"
     result = run("validate", "--output", str(target))
     assert result.exit_code == 0, result.output
-    assert "all checks passed" in result.stdout
     data = json.loads(target.read_text())
     assert data["passed"] is True and len(data["scenes"]) >= 5
     first = data["scenes"][0]
     assert {"rebound", "heyoka"} <= set(first["versions"]) and "analytic" in first["wall_time_s"]
+    checks = sum(len(scene["checks"]) for scene in data["scenes"])
+    summary = result.stdout[result.stdout.rindex("worst error / tolerance per scene"):].splitlines()
+    assert summary[-1] == f"all {checks} checks of {len(data['scenes'])} scenes passed"
+    assert len(summary) <= len(data["scenes"]) + 6  # one screen: a row a scene, a header, the verdict
+    rows = {line.split()[0]: line.split()[1:] for line in summary[4:-2]}
+    assert list(rows) == [scene["name"] for scene in data["scenes"]]
+    for scene in data["scenes"]:  # each backend's worst error as a fraction of its tolerance, then the time
+        for k, backend in enumerate(("rebound", "heyoka")):
+            worst = max(c["errors"][backend] / c["tolerance"] for c in scene["checks"] if backend in c["errors"])
+            assert float(rows[scene["name"]][1 + k]) == pytest.approx(worst, rel=0.06)  # 2 digits shown
+    quiet = run("validate", "circular", "binary", "--quiet")
+    lines = quiet.stdout.strip().splitlines()
+    assert quiet.exit_code == 0 and lines[0].startswith("worst error / tolerance per scene") and len(lines) == 8
 
 
 def test_validate_without_the_ephemeris_extra_skips_solar_system_and_says_so(monkeypatch):
@@ -132,7 +144,8 @@ def test_validate_without_the_ephemeris_extra_skips_solar_system_and_says_so(mon
     leaves out, with what it needs; the scene list is cut to two so the run stays short."""
     import importlib.util
 
-    from orbits import ephemeris, validate
+    from orbits import validate
+    from orbits.ephemeris import positions as ephemeris
     from orbits.validate import scenes
 
     monkeypatch.setattr(ephemeris, "available_source", lambda: "builtin")
@@ -140,7 +153,7 @@ def test_validate_without_the_ephemeris_extra_skips_solar_system_and_says_so(mon
     monkeypatch.setattr(importlib.util, "find_spec", lambda name, *a: None if name == "reboundx" else
                         real_find_spec(name, *a))
     monkeypatch.setattr(validate, "builtin_names", lambda: ["circular", "solar_system"])
-    from orbits.validate import perturbed
+    from orbits.validate import perturb as perturbed
 
     assert scenes.unavailable_builtins() == {
         "solar_system": "needs JPL DE421 (skyfield-data, jplephem) and REBOUNDx: pip install 'orbits[ephemeris]'",
@@ -165,6 +178,8 @@ def test_validate_exits_1_when_a_check_fails(tmp_path):
     result = run("validate", str(scene_file), "--backend", "rebound", "--format", "json")
     assert result.exit_code == 1
     assert json.loads(result.stdout)["passed"] is False
+    summary = run("validate", str(scene_file), "--backend", "rebound", "--quiet")
+    assert summary.exit_code == 1 and summary.stdout.strip().endswith("1 of 1 scenes FAILED: strict")
 
 
 def test_validate_bad_scene_exits_2_before_running(tmp_path):

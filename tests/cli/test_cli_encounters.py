@@ -99,18 +99,19 @@ def test_escape_cosmic_velocities_of_the_notes():
     speeds = [round(data[n]["value"] / 1e3, 3) for n in ("first_cosmic_velocity", "second_cosmic_velocity")]
     assert speeds == [7.904, 11.178]
     assert round(data["third_cosmic_velocity"]["value"] / 1e3, 2) == 16.65
-    jupiter = run_json("escape", "cosmic", "Jupiter", "--only", "second_cosmic_velocity")
+    jupiter = run_json("escape", "cosmic", "--primary", "Jupiter", "--only", "second_cosmic_velocity")
     assert round(jupiter["second_cosmic_velocity"]["value"] / 1e3, 1) == 59.5
 
 
 def test_escape_speed_geo_and_elongation():
-    speed = run_json("escape", "speed", "Earth")
+    speed = run_json("escape", "speed", "--primary", "Earth")
     assert speed["escape_speed"]["unit"] == "km / s" and round(speed["escape_speed"]["value"], 3) == 11.18
-    far = run_json("escape", "speed", "5.9722e24 kg", "--distance", "42164 km")
+    far = run_json("escape", "speed", "--primary", "5.9722e24 kg", "--at-r", "42164 km")
     assert round(far["escape_speed"]["value"], 3) == 4.348
     geo = run_json("escape", "geo")
     assert round(geo["altitude"]["value"] / 1e3) == 35786
-    mars = run_json("escape", "geo", "6.4171e23 kg", "--period", "88642.66 s", "--radius", "3396.2 km")
+    mars = run_json("escape", "geo", "--primary", "6.4171e23 kg", "--rotation-period", "88642.66 s",
+                    "--body-radius", "3396.2 km")
     assert round(mars["altitude"]["value"] / 1e3) == 17032
     venus = run_json("escape", "elongation", "--inner", "0.723 AU", "--outer", "Earth")
     assert venus["max_elongation"]["unit"] == "deg" and round(venus["max_elongation"]["value"], 1) == 46.3
@@ -139,10 +140,10 @@ def test_escape_speed_geo_and_elongation():
             ["flyby", "--primary", "Sun", "--v-inf", "1 km/s", "--b", "1 AU", "--mass", "1 kg", "--secondary", "Earth"],
             "not both",
         ),
-        (["escape", "geo", "--period", "-1 h"], "rotation period T = -3600.0 s is outside the allowed range"),
-        (["escape", "speed", "5 kg"], "has no surface"),
+        (["escape", "geo", "--rotation-period", "-1 h"], "rotation period T = -3600.0 s is outside the allowed range"),
+        (["escape", "speed", "--primary", "5 kg"], "has no surface"),
         (["escape", "cosmic", "--g", "9.8"], "has no unit"),
-        (["escape", "cosmic", "Earth", "--g", "9.8 m/s2"], "not both"),
+        (["escape", "cosmic", "--primary", "Earth", "--g", "9.8 m/s2"], "not both"),
         (["escape", "elongation", "--inner", "2 AU", "--outer", "1 AU"], "outside the allowed range (0, R)"),
     ],
 )

@@ -7,7 +7,8 @@ import astropy.units as u
 import pytest
 from typer.testing import CliRunner
 
-from orbits import Orbit, ephemeris
+from orbits import Orbit
+from orbits.ephemeris import positions as ephemeris
 from orbits_cli.main import app
 
 runner = CliRunner()

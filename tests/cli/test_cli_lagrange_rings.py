@@ -16,7 +16,7 @@ def run(*args):
 
 
 def test_lagrange_earth_moon_json_has_coordinates_and_stability():
-    result = run("lagrange", "Earth", "Moon", "--format", "json")
+    result = run("lagrange", "--primary", "Earth", "--secondary", "Moon", "--format", "json")
     assert result.exit_code == 0, result.output
     data = json.loads(result.stdout)
     assert data["separation"] == {"value": 384399000.0, "unit": "m"}
@@ -31,9 +31,11 @@ def test_lagrange_earth_moon_json_has_coordinates_and_stability():
 def test_lagrange_given_masses_points_and_only():
     result = run(
         "lagrange",
+        "--primary",
         "1 solMass",
+        "--secondary",
         "0.1 solMass",
-        "--r",
+        "--separation",
         "1 AU",
         "--points",
         "L4,L5",
@@ -49,7 +51,7 @@ def test_lagrange_given_masses_points_and_only():
 
 
 def test_lagrange_table():
-    result = run("lagrange", "Sun", "Earth", "--points", "L2")
+    result = run("lagrange", "--primary", "Sun", "--secondary", "Earth", "--points", "L2")
     assert result.exit_code == 0, result.output
     assert "mu = 3.0034" in result.stdout and "to m [km]" in result.stdout  # one row per point
     assert any(line.split()[:1] == ["L2"] and "1501" in line for line in result.stdout.splitlines())
@@ -58,16 +60,17 @@ def test_lagrange_table():
 @pytest.mark.parametrize(
     "args, fragment",
     [
-        (["lagrange", "Moon", "Earth"], "pass the heavier body as the primary"),
-        (["lagrange", "1 kg", "0 kg", "--r", "1 m"], "outside the allowed range (0, inf) kg"),
-        (["lagrange", "Earth", "1e20 kg"], "separation r is needed"),
-        (["lagrange", "Earth", "Moon", "--r", "5"], "has no unit"),
-        (["lagrange", "Earth", "Moon", "--points", "L6"], "unknown points"),
-        (["lagrange", "Earth", "Vulcan"], "SECONDARY"),
-        (["ring", "1", "--m", "1 kg", "--r", "1 m"], "outside [2, inf)"),
-        (["ring", "3", "--m", "1 kg", "--r", "-1 m"], "ring radius r = -1.0 m"),
-        (["ring", "3", "--m", "1 kg", "--r", "1 m", "--only", "breakup"], "unknown quantities"),
-        (["ring", "8", "--m", "1 kg", "--r", "1 m", "--central-mass", "1e6 kg", "--only", "breakup_time"], "stable"),
+        (["lagrange", "--primary", "Moon", "--secondary", "Earth"], "pass the heavier body as the primary"),
+        (["lagrange", "--primary", "1 kg", "--secondary", "0 kg", "--separation", "1 m"],
+         "outside the allowed range (0, inf) kg"),
+        (["lagrange", "--primary", "Earth", "--secondary", "1e20 kg"], "separation r is needed"),
+        (["lagrange", "--primary", "Earth", "--secondary", "Moon", "--separation", "5"], "has no unit"),
+        (["lagrange", "--primary", "Earth", "--secondary", "Moon", "--points", "L6"], "unknown points"),
+        (["lagrange", "--primary", "Earth", "--secondary", "Vulcan"], "--secondary"),
+        (["ring", "1", "--mass", "1 kg", "--radius", "1 m"], "outside [2, inf)"),
+        (["ring", "3", "--mass", "1 kg", "--radius", "-1 m"], "ring radius r = -1.0 m"),
+        (["ring", "3", "--mass", "1 kg", "--radius", "1 m", "--only", "breakup"], "unknown quantities"),
+        (["ring", "8", "--mass", "1 kg", "--radius", "1 m", "--primary", "1e6 kg", "--only", "breakup_time"], "stable"),
     ],
 )
 def test_errors_are_one_line_with_status_2(args, fragment):
@@ -77,14 +80,15 @@ def test_errors_are_one_line_with_status_2(args, fragment):
 
 
 def test_ring_json_with_and_without_central_mass():
-    result = run("ring", "8", "--m", "1e20 kg", "--r", "100000 km", "--format", "json")
+    result = run("ring", "8", "--mass", "1e20 kg", "--radius", "100000 km", "--format", "json")
     assert result.exit_code == 0, result.output
     data = json.loads(result.stdout)
     assert data["unstable_mode"]["value"] == 4 and data["breakup_time"]["unit"] == "s"
     assert math.isclose(data["potential_energy"]["value"], -2 * data["kinetic_energy"]["value"], rel_tol=1e-15)
     threshold = data["central_mass_threshold"]["value"]
     stable = run(
-        "ring", "8", "--m", "1e20 kg", "--r", "100000 km", "--central-mass", f"{1.1 * threshold} kg", "--format", "json"
+        "ring", "8", "--mass", "1e20 kg", "--radius", "100000 km", "--primary", f"{1.1 * threshold} kg",
+            "--format", "json"
     )
     assert stable.exit_code == 0, stable.output
     data = json.loads(stable.stdout)
@@ -92,16 +96,16 @@ def test_ring_json_with_and_without_central_mass():
 
 
 def test_ring_table_and_non_integer_count():
-    result = run("ring", "7", "--m", "1e20 kg", "--r", "1e5 km", "--central-mass", "Earth")
+    result = run("ring", "7", "--mass", "1e20 kg", "--radius", "1e5 km", "--primary", "Earth")
     assert result.exit_code == 0, result.output
     assert "Ring of 7 bodies about Earth" in result.stdout and "central_mass_threshold" in result.stdout
-    assert run("ring", "2.5", "--m", "1 kg", "--r", "1 m").exit_code == 2
+    assert run("ring", "2.5", "--mass", "1 kg", "--radius", "1 m").exit_code == 2
 
 
 @pytest.mark.parametrize("args", [
-    ["lagrange", "Earth", "Moon", "--only", "period"],
-    ["ring", "5", "--m", "1e20 kg", "--r", "1e5 km", "--only", "breakup_time"],
-    ["ring", "8", "--m", "1e20 kg", "--r", "1e5 km", "--central-mass", "3e22 kg", "--only", "period"],
+    ["lagrange", "--primary", "Earth", "--secondary", "Moon", "--only", "period"],
+    ["ring", "5", "--mass", "1e20 kg", "--radius", "1e5 km", "--only", "breakup_time"],
+    ["ring", "8", "--mass", "1e20 kg", "--radius", "1e5 km", "--primary", "3e22 kg", "--only", "period"],
 ])
 def test_lagrange_and_ring_draw_their_pictures(tmp_path, args):
     target = tmp_path / "picture.png"
@@ -111,5 +115,5 @@ def test_lagrange_and_ring_draw_their_pictures(tmp_path, args):
 
 
 def test_lagrange_plot_refuses_a_bad_suffix_before_any_work(tmp_path):
-    result = run("lagrange", "Earth", "Moon", "--plot", str(tmp_path / "x.jpg"))
+    result = run("lagrange", "--primary", "Earth", "--secondary", "Moon", "--plot", str(tmp_path / "x.jpg"))
     assert result.exit_code == 2 and "must end in .png, .svg or .pdf" in result.output

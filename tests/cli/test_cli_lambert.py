@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from orbits.constants import BODIES
-from orbits.core import lambert as core
+from orbits._common.constants import BODIES
+from orbits.core.manoeuvres import lambert as core
 from orbits_cli.main import app
 
 AU = 149597870700.0

@@ -32,7 +32,7 @@ def test_collide_head_on_json_is_the_library_bit_for_bit():
 
 
 def test_collide_with_vectors_and_a_contact_normal():
-    data = run_json("collide", "--m1", "1 kg", "--v1", "2,0 m/s", "--m2", "1 kg", "--v2", "0,0 m/s", "--normal",
+    data = run_json("collide", "--m1", "1 kg", "--v1", "2,0 m/s", "--m2", "1 kg", "--v2", "0,0 m/s", "--line-of-impact",
                     "1,1", "--only", "velocity1_after,velocity2_after")
     v1, v2 = data["velocity1_after"]["value"], data["velocity2_after"]["value"]
     assert v1 == pytest.approx([1.0, -1.0]) and v2 == pytest.approx([1.0, 1.0])

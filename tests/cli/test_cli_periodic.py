@@ -16,7 +16,8 @@ def run(*args):
 
 def test_the_gateway_orbit_as_json():
     """The 9:2 NRHO: period 6.5527 d (2/9 of the catalogue binary's synodic month), perilune 3223 km."""
-    result = run("periodic", "Earth", "Moon", "--family", "nrho", "--resonance", "9:2", "--format", "json")
+    result = run("periodic", "--primary", "Earth", "--secondary", "Moon", "--family", "nrho", "--resonance", "9:2",
+                 "--format", "json")
     assert result.exit_code == 0, result.output
     data = json.loads(result.stdout)
     assert data["period"]["unit"] == "s" and abs(data["period"]["value"] / 86400 - 6.5527) < 1e-4
@@ -26,17 +27,19 @@ def test_the_gateway_orbit_as_json():
 
 
 def test_the_orbit_table_fits_80_columns():
-    result = run("periodic", "Earth", "Moon", "--family", "halo", "--point", "L2", "--az", "20000 km")
+    result = run("periodic", "--primary", "Earth", "--secondary", "Moon", "--family", "halo", "--point", "L2",
+                 "--az", "20000 km")
     assert result.exit_code == 0, result.output
     lines = result.stdout.splitlines()
-    assert lines[0].startswith("PeriodicOrbit(Earth-Moon L2 northern halo, Az = 20000 km, T = 14.73445 d")
+    assert lines[0].startswith("Earth-Moon L2 northern halo orbit: Az = 20000 km, T = 14.73445 d")
     assert max(map(len, lines)) <= 80
     assert any(line.split()[:2] == ["az", "20000"] for line in lines)
     assert any(line.split()[0] == "nu_1" for line in lines if line.split())
 
 
 def test_only_and_given_masses():
-    result = run("periodic", "1 solMass", "0.001 solMass", "--r", "5.2 AU", "--family", "lyapunov", "--point", "L1",
+    result = run("periodic", "--primary", "1 solMass", "--secondary", "0.001 solMass", "--separation", "5.2 AU",
+                 "--family", "lyapunov", "--point", "L1",
                  "--ax", "0.01 AU", "--only", "period,ax", "--format", "json")
     assert result.exit_code == 0, result.output
     data = json.loads(result.stdout)
@@ -45,7 +48,8 @@ def test_only_and_given_masses():
 
 def test_the_family_table_lists_members_and_bifurcations(tmp_path):
     path = tmp_path / "family.png"
-    result = run("periodic", "Earth", "Moon", "--family", "nrho", "--resonance", "9:2", "--members", "6", "--plot",
+    result = run("periodic", "--primary", "Earth", "--secondary", "Moon", "--family", "nrho", "--resonance", "9:2",
+                 "--members", "6", "--plot",
                  str(path))
     assert result.exit_code == 0, result.output
     lines = result.stdout.splitlines()
@@ -55,13 +59,15 @@ def test_the_family_table_lists_members_and_bifurcations(tmp_path):
 
 
 def test_the_family_as_json_and_a_picture_of_one_orbit(tmp_path):
-    result = run("periodic", "Earth", "Moon", "--family", "dro", "--ax", "70000 km", "--members", "3",
+    result = run("periodic", "--primary", "Earth", "--secondary", "Moon", "--family", "dro", "--ax", "70000 km",
+                 "--members", "3",
                  "--format", "json")
     assert result.exit_code == 0, result.output
     data = json.loads(result.stdout)
     assert data["about"]["members"] == "3" and len(data["period"]["value"]) == 3
     path = tmp_path / "dro.png"
-    assert run("periodic", "Earth", "Moon", "--family", "dro", "--ax", "70000 km", "--plot", str(path)).exit_code == 0
+    assert run("periodic", "--primary", "Earth", "--secondary", "Moon", "--family", "dro", "--ax", "70000 km",
+               "--plot", str(path)).exit_code == 0
     assert path.stat().st_size > 10_000
 
 
@@ -72,14 +78,18 @@ def test_the_family_as_json_and_a_picture_of_one_orbit(tmp_path):
     (["--family", "halo", "--az", "900000 km"], "Az = 900000 km is beyond"),
     (["--family", "nrho", "--resonance", "3-1"], "must read 'p:q'"),
     (["--family", "halo", "--ax", "1 km", "--az", "1 km"], "give exactly one of"),
-    (["--family", "halo", "--resonance", "9:2"], "--resonance does not select a halo orbit"),
+    (["--family", "halo", "--resonance", "9:2"], "resonance does not pick a halo orbit"),
     (["--family", "halo", "--az", "1000"], "has no unit"),
     (["--family", "halo", "--jacobi", "3 km"], "is not a speed squared"),
     (["--family", "dro", "--branch", "northern", "--ax", "1000 km"], "only halo families have a northern"),
+    (["--family", "lyapunov", "--branch", "northern", "--ax", "10000 km"], "only halo families have a northern"),
+    (["--family", "dro", "--point", "L1", "--ax", "70000 km"], "the dro family lies about the secondary"),
+    (["--family", "vertical", "--closest-approach", "9000 km"], "closest_approach does not pick a vertical orbit"),
+    (["--family", "lyapunov", "--ax", "10000 km", "--members", "3", "--az", "1 km"], "az does not pick a lyapunov"),
     (["--family", "spiral"], "'spiral' is not one of"),
 ])
 def test_bad_requests_are_one_line_errors_with_exit_status_2(args, fragment):
-    result = run("periodic", "Earth", "Moon", *args)
+    result = run("periodic", "--primary", "Earth", "--secondary", "Moon", *args)
     assert result.exit_code == 2
     message = result.stderr.strip() if result.stderr else result.output.strip()
     assert fragment in message and len(message.splitlines()) == 1, message

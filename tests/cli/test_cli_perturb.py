@@ -40,14 +40,15 @@ def test_verbs(args, shown):
     ("decay", "--altitude", "300 km", "--density", "1e-11 kg/m3", "--scale-height", "50 km", "--base-altitude",
      "350 km"),
     ("decay", "--altitude", "160 km", "--ballistic", "0.1 m2/kg"),
-    ("rates", "--altitude", "400 km", "--plot", "rates.png", "--revolutions", "0"),
+    ("rates", "--altitude", "400 km", "--plot", "rates.png", "--plot-revolutions", "0"),
     ("rates", "--altitude", "400 km", "--plot", "rates.txt"),
-    ("frozen", "--altitude", "700 km", "--inc", "98.19", "--plot", "f.png", "--revolutions", "4001"),
+    ("frozen", "--altitude", "700 km", "--inc", "98.19", "--plot", "f.png", "--plot-revolutions", "4001"),
     ("repeat", "--revolutions", "2001", "--days", "137", "--inc", "98", "--plot", "t.png"),
     ("kozai", "--plot", "kozai.png"),  # 2 cycles of Jupiter's pull on a 1 AU orbit: 472,500 revolutions
-    ("kozai", "--m0", "1 solMass", "--m3", "1 solMass", "--a-out", "12 AU", "--cycles", "5", "--plot", "k.png"),
-    ("kozai", "--m0", "1 solMass", "--m3", "1e-9 solMass", "--a-out", "1.5 AU", "--cycles", "0.1", "--plot",
+    ("kozai", "--primary", "1 solMass", "--perturber", "1 solMass", "--a-out", "12 AU", "--cycles", "5", "--plot",
      "k.png"),
+    ("kozai", "--primary", "1 solMass", "--perturber", "1e-9 solMass", "--a-out", "1.5 AU", "--cycles", "0.1",
+     "--plot", "k.png"),
 ])
 def test_bad_inputs_exit_2_with_one_line(args, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
@@ -60,22 +61,20 @@ def test_bad_inputs_exit_2_with_one_line(args, tmp_path, monkeypatch):
 def test_plots_are_written_where_a_picture_exists(tmp_path):
     """rates and sun-synchronous integrate the orbit (rebound and heyoka) for their picture, kozai the triple; decay
     draws the closed form. Each writes its PNG, and the table is printed as without --plot."""
-    molniya = ("rates", "--a", "26554 km", "--e", "0.74", "--inc", "63.43", "--argp", "270", "--revolutions", "3")
-    for args, name in ((molniya, "rates.png"), (("sun-synchronous", "--altitude", "700 km", "--revolutions", "2"),
+    molniya = ("rates", "--a", "26554 km", "--e", "0.74", "--inc", "63.43", "--argp", "270", "--plot-revolutions", "3")
+    for args, name in ((molniya, "rates.png"), (("sun-synchronous", "--altitude", "700 km", "--plot-revolutions", "2"),
                                                  "sso.png"),
                        (("decay", "--altitude", "280 km", "--ballistic", "0.022 m2/kg"), "decay.png"),
-                       (("kozai", "--m0", "1 solMass", "--m3", "1 solMass", "--a-out", "12 AU", "--e", "0.01",
-                         "--cycles", "0.6"), "kozai.png"),
-                       (("frozen", "--altitude", "700 km", "--inc", "98.19", "--revolutions", "20"), "frozen.png"),
+                       (("kozai", "--primary", "1 solMass", "--perturber", "1 solMass", "--a-out", "12 AU",
+                         "--e", "0.01", "--cycles", "0.6"), "kozai.png"),
+                       (("frozen", "--altitude", "700 km", "--inc", "98.19", "--plot-revolutions", "20"), "frozen.png"),
                        (("repeat", "--revolutions", "15", "--days", "1", "--inc", "98"), "track.png")):
         path = tmp_path / name
         result = run("perturb", *args, "--plot", str(path))
         assert result.exit_code == 0, result.output
         assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-        table_only = [x for k, x in enumerate(args) if x not in ("--revolutions", "--cycles")
-                      and (k == 0 or args[k - 1] not in ("--revolutions", "--cycles"))]
-        if args[0] == "repeat":  # its --revolutions is the design's, not the picture's
-            table_only = list(args)
+        table_only = [x for k, x in enumerate(args) if x not in ("--plot-revolutions", "--cycles")
+                      and (k == 0 or args[k - 1] not in ("--plot-revolutions", "--cycles"))]
         assert result.stdout == run("perturb", *table_only).stdout
         if table_only != list(args):  # the options only --plot reads are refused without it
             assert run("perturb", *args).exit_code == 2

@@ -9,7 +9,7 @@ from typer.testing import CliRunner
 from orbits import Porkchop
 from orbits_cli.main import app
 
-COARSE = ["--launch", "2026-09-01:2027-01-31", "--arrival", "2027-06-01:2028-03-01", "--step", "10 d"]
+COARSE = ["--depart", "2026-09-01:2027-01-31", "--arrive", "2027-06-01:2028-03-01", "--step", "10 d"]
 
 
 def run(*args):
@@ -45,9 +45,9 @@ def test_plot_file(tmp_path):
 
 @pytest.mark.parametrize("args, message", [
     (["--to", "Vulcan", *COARSE], "no ephemeris for 'Vulcan'"),
-    (["--launch", "2026-09-01", "--step", "10 d"], "--launch '2026-09-01': write START:END"),
-    (["--launch", "2028-01-01:2028-02-01", "--arrival", "2027-01-01:2027-03-01"], "no transfer has a positive"),
-    (["--launch", "2060-01-01:2060-02-01", "--arrival", "2060-06-01:2060-09-01", "--step", "10 d"], "outside DE421"),
+    (["--depart", "2026-09-01", "--step", "10 d"], "--depart '2026-09-01': write START:END"),
+    (["--depart", "2028-01-01:2028-02-01", "--arrive", "2027-01-01:2027-03-01"], "no transfer has a positive"),
+    (["--depart", "2060-01-01:2060-02-01", "--arrive", "2060-06-01:2060-09-01", "--step", "10 d"], "outside DE421"),
     ([*COARSE[:4], "--step", "-1 d"], "date step"),
     ([*COARSE[:4], "--step", "5 kg"], "--step"),
 ])
@@ -59,7 +59,7 @@ def test_bad_input_is_one_line_and_exit_2(args, message):
 
 
 def test_a_least_value_on_the_grid_edge_is_flagged_in_the_table_and_the_json():
-    edge = ["--launch", "2026-09-01:2026-10-15", "--arrival", "2027-06-01:2027-11-01", "--step", "15 d"]
+    edge = ["--depart", "2026-09-01:2026-10-15", "--arrive", "2027-06-01:2027-11-01", "--step", "15 d"]
     table = run(*edge)
     assert table.exit_code == 0, table.output
     assert "least C3 on the grid's edge (last launch date): the minimum may lie outside" in " ".join(

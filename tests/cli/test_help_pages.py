@@ -8,7 +8,7 @@ import pytest
 from typer.testing import CliRunner
 
 from orbits_cli.main import app
-from orbits_cli.pages import EXAMPLES, SUMMARY
+from orbits_cli.pages import EXAMPLE_WIDTH, EXAMPLES, SUMMARY, example_lines
 
 WIDTH = 80
 
@@ -63,7 +63,31 @@ def test_help_pages_fit_80_columns_and_wrap_between_words(path):
         first = " ".join(doc.strip().split("\n\n")[0].split())
         text = " ".join(result.output.split())  # the page's words in order, whatever the line breaks
         assert first in text, "the description's first paragraph is broken inside a word or reordered"
-        assert text.rstrip().endswith(" ".join(EXAMPLES[path][-1].split())), "the examples end the page"
+        last = " ".join(" ".join(example_lines(EXAMPLES[path][-1])).split())
+        assert text.rstrip().endswith(last), "the examples end the page"
+
+
+@pytest.mark.parametrize("path", PATHS)
+def test_every_example_is_shown_as_lines_a_shell_reads_as_the_example(path):
+    """Each example is broken into lines that fit the page, each but the last continued with " \\", never inside a
+    quoted value: the lines, copied into a shell, are the example's words."""
+    for example in EXAMPLES[path]:
+        lines = example_lines(example)
+        assert all(len(line) <= EXAMPLE_WIDTH for line in lines), lines
+        commands = [line for line in lines if not line.startswith("#")]
+        assert all(line.endswith(" \\") for line in commands[:-1]) and not commands[-1].endswith("\\"), lines
+        command = " ".join(line.removesuffix(" \\") for line in commands)
+        assert shlex.split(command, comments=True) == shlex.split(example, comments=True)
+
+
+def test_a_long_example_is_broken_between_options_and_never_inside_quotes():
+    """A hostile example: quoted values with spaces on every option, longer than a line several times."""
+    example = "orbits x " + " ".join(f'--opt{k} "{k} words in one value"' for k in range(9)) + "  # a comment"
+    lines = example_lines(example)
+    assert len(lines) > 3 and all(len(line) <= EXAMPLE_WIDTH for line in lines)
+    assert all(line.count('"') % 2 == 0 for line in lines)
+    command = " ".join(line.removesuffix(" \\") for line in lines if not line.startswith("#"))
+    assert shlex.split(command, comments=True) == shlex.split(example, comments=True)
 
 
 def examples():
@@ -96,7 +120,7 @@ def test_validate_help_lists_every_built_in_scene():
 
 def test_info_is_a_summary_within_80_columns_and_the_sources_follow_on_request():
     """orbits info fits 80 columns without breaking a word; the sources (every constant's) come with --sources."""
-    from orbits.system import info
+    from orbits._common.system import info
 
     short, full = run(["info"]), run(["info", "--sources"])
     assert short.exit_code == full.exit_code == 0

@@ -18,7 +18,7 @@ COMMANDS = [
     "escape cosmic",
     'pendulum --length "1 m" --amplitude "170 deg"',
     'perturb rates --altitude "400 km" --inc 51.64',
-    "periodic Earth Moon --family nrho --resonance 9:2",
+    "periodic --primary Earth --secondary Moon --family nrho --resonance 9:2",
 ]
 
 

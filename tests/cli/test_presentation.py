@@ -11,7 +11,7 @@ import pytest
 from typer.testing import CliRunner
 
 import orbits
-from orbits.display import shown
+from orbits._common.display import shown
 from orbits_cli.main import app
 
 runner = CliRunner()
@@ -28,15 +28,15 @@ README_EXAMPLES = [
     'flyby --primary Jupiter --v-inf "5.6 km/s" --periapsis "200000 km"',
     'flyby --primary Sun --secondary Jupiter --v-inf "1 km/s" --b "1 AU"',
     "escape cosmic",
-    "escape geo Jupiter",
-    'escape speed Moon --distance "384399 km"',
+    "escape geo --primary Jupiter",
+    'escape speed --primary Moon --at-r "384399 km"',
     'escape elongation --inner "0.723 AU" --outer Earth',
     "cosmology",
     'cosmology --H0 "67.66 km/s/Mpc" --Om 0.30966 --z 0.5,1,1100',
     'cosmology --Om 0.3 --Ol 0.8 --t "1 Gyr"',
-    "lagrange Earth Moon --points L1,L2",
-    'lagrange "1 solMass" "0.1 solMass" --r "1 AU" --only growth_rate',
-    'ring 7 --m "1e20 kg" --r "1e5 km" --central-mass Earth',
+    "lagrange --primary Earth --secondary Moon --points L1,L2",
+    'lagrange --primary "1 solMass" --secondary "0.1 solMass" --separation "1 AU" --only growth_rate',
+    'ring 7 --mass "1e20 kg" --radius "1e5 km" --primary Earth',
 ]
 
 

@@ -21,7 +21,8 @@ def refused(args: list[str]) -> str:
 @pytest.mark.parametrize("args, fragment", [
     (["orbit", "--primary", "Earth", "--a", "7000 km", "--a", "8000 km"], "--a '7000 km', --a '8000 km'"),
     (["orbit", "--primary", "Earth", "--a=7000 km", "--e", "0.1", "--a", "8000 km"], "given 2 times"),
-    (["escape", "geo", "Earth", "--period", "1 d", "--period", "2 d"], "--period '1 d', --period '2 d'"),
+    (["escape", "geo", "--primary", "Earth", "--rotation-period", "1 d", "--rotation-period", "2 d"],
+     "--rotation-period '1 d', --rotation-period '2 d'"),
     (["validate", "circular", "--sweep", "--no-sweep"], "--sweep, --no-sweep: a switch, given 2 times"),
 ])
 def test_an_option_of_one_value_given_twice_is_refused(args, fragment):
@@ -40,14 +41,14 @@ def test_repeatable_options_still_repeat():
 
 
 @pytest.mark.parametrize("args, fragment", [
-    (["bench", "kepler", "--repeats", "0"], "'--repeats': 0 is outside [1, 1,000]"),  # was UnboundLocalError
-    (["bench", "kepler", "--easy", "-5"], "'--easy': -5 is outside [1, 10,000,000]"),  # 'negative dimensions ...'
-    (["bench", "kepler", "--easy", "10000000000000"], "'--easy': 10000000000000 is outside"),  # 73 TiB attempted
-    (["bench", "kepler", "--hard", "0"], "'--hard': 0 is outside [1, 10,000,000]"),  # an empty set printed nan
-    (["bench", "kepler", "--reference", "0"], "'--reference': 0 is outside [1, 100,000]"),
-    (["bench", "propagate", "--states", "0"], "'--states': 0 is outside"),
+    (["bench", "kepler", "--repeats", "0"], "--repeats: 0 is outside [1, 1,000]"),  # was UnboundLocalError
+    (["bench", "kepler", "--easy", "-5"], "--easy: -5 is outside [1, 10,000,000]"),  # 'negative dimensions ...'
+    (["bench", "kepler", "--easy", "10000000000000"], "--easy: 10000000000000 is outside"),  # 73 TiB attempted
+    (["bench", "kepler", "--hard", "0"], "--hard: 0 is outside [1, 10,000,000]"),  # an empty set printed nan
+    (["bench", "kepler", "--reference", "0"], "--reference: 0 is outside [1, 100,000]"),
+    (["bench", "propagate", "--states", "0"], "--states: 0 is outside"),
     (["bench", "api", "--sizes", "1,0"], "--sizes: 0 is outside [1, 10,000,000]"),
-    (["bench", "cli", "--runs", "0"], "'--runs': 0 is outside [1, 1,000]"),
+    (["bench", "cli", "--runs", "0"], "--runs: 0 is outside [1, 1,000]"),
     (["bench", "precision", "--target", "-1"], "error target = -1.0 is outside the allowed range (0, inf)"),
     (["bench", "precision", "--target", "nan"], "error target = nan is not finite"),
 ])
@@ -66,17 +67,18 @@ def test_the_harness_refuses_to_time_nothing():
 def test_a_ring_too_large_to_sum_is_refused_with_its_limit():
     """ring 99999999999999999999999 said only 'Maximum allowed size exceeded'."""
     assert "n = 99999999999999999999999 is outside [2, 10000000]" in refused(
-        ["ring", "99999999999999999999999", "--m", "1 kg", "--r", "1 km"])
+        ["ring", "99999999999999999999999", "--mass", "1 kg", "--radius", "1 km"])
 
 
 def test_a_ring_beyond_the_stability_analysis_says_what_it_left_out():
     """A ring of n > 4096 dropped its stability rows without a note."""
-    result = runner.invoke(app, ["ring", "5000", "--m", "1 kg", "--r", "1 km"])
+    result = runner.invoke(app, ["ring", "5000", "--mass", "1 kg", "--radius", "1 km"])
     assert result.exit_code == 0 and "growth_rate and the break-up are not computed" in result.stdout
     assert "n = 5000 is outside [2, 4096] for the linear-stability analysis" in " ".join(result.stdout.split())
-    data = json.loads(runner.invoke(app, ["ring", "5000", "--m", "1 kg", "--r", "1 km", "--format", "json"]).stdout)
+    data = json.loads(runner.invoke(app, ["ring", "5000", "--mass", "1 kg", "--radius", "1 km", "--format",
+                      "json"]).stdout)
     assert "growth_rate" not in data and "linear-stability" in data["about"]["not computed"]
-    quiet = runner.invoke(app, ["ring", "7", "--m", "1 kg", "--r", "1 km", "--format", "json"]).stdout
+    quiet = runner.invoke(app, ["ring", "7", "--mass", "1 kg", "--radius", "1 km", "--format", "json"]).stdout
     assert "about" not in json.loads(quiet) and "growth_rate" in json.loads(quiet)
 
 
@@ -138,8 +140,8 @@ def test_a_one_dimensional_collision_of_equal_velocities_is_refused_as_in_two():
 
 
 def test_a_synchronous_orbit_inside_the_body_is_said():
-    """escape geo Earth --period '1 min' returned an orbit inside the Earth with no warning."""
-    result = runner.invoke(app, ["escape", "geo", "Earth", "--period", "1 min"])
+    """escape geo --primary Earth --rotation-period '1 min' returned an orbit inside the Earth with no warning."""
+    result = runner.invoke(app, ["escape", "geo", "--primary", "Earth", "--rotation-period", "1 min"])
     assert result.exit_code == 0 and "orbit_radius" in result.stdout
     assert result.stderr.strip() == ("orbits: warning: the synchronous orbit radius r = 331.2533 km lies inside the "
                                      "body (radius 6378.1 km): no orbit of this period exists above its surface")

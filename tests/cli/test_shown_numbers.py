@@ -6,7 +6,7 @@ import pytest
 from typer.testing import CliRunner
 
 from orbits import Orbit
-from orbits.display import shown, unit_text
+from orbits._common.display import shown, unit_text
 from orbits_cli.main import app
 
 runner = CliRunner()
@@ -53,9 +53,9 @@ def test_a_display_unit_without_a_positive_finite_scale_is_refused(unit, fragmen
 def test_the_lagrange_table_shows_e_folding_times_only_when_asked_and_then_for_every_point():
     """--only growth_rate used to add an e-folding column of inf (L1 e-folds in 1.48 d); --only e_folding_time used to
     print the title and no rows."""
-    result = runner.invoke(app, ["lagrange", "Earth", "Moon", "--only", "growth_rate"])
+    result = runner.invoke(app, ["lagrange", "--primary", "Earth", "--secondary", "Moon", "--only", "growth_rate"])
     assert result.exit_code == 0 and "inf" not in result.stdout and "e-folding" not in result.stdout
-    result = runner.invoke(app, ["lagrange", "Earth", "Moon", "--only", "e_folding_time"])
+    result = runner.invoke(app, ["lagrange", "--primary", "Earth", "--secondary", "Moon", "--only", "e_folding_time"])
     lines = {line.split()[0]: line.split()[1:] for line in result.stdout.splitlines() if line.split()[:1] and
              line.split()[0] in ("L1", "L2", "L3", "L4", "L5")}
     assert float(lines["L1"][0]) == pytest.approx(1.48103, rel=1e-5)  # d, the JSON's 1.4810 d
@@ -63,7 +63,8 @@ def test_the_lagrange_table_shows_e_folding_times_only_when_asked_and_then_for_e
 
 
 def test_a_point_quantity_asked_for_some_points_is_shown_for_them_and_dashed_for_the_others():
-    result = runner.invoke(app, ["lagrange", "Earth", "Moon", "--only", "L1_e_folding_time,L4_position,L2_eigenvalues"])
+    result = runner.invoke(app, ["lagrange", "--primary", "Earth", "--secondary", "Moon", "--only",
+                           "L1_e_folding_time,L4_position,L2_eigenvalues"])
     rows = {line.split()[0]: line.split()[1:] for line in result.stdout.splitlines() if line.split()[:1] and
             line.split()[0] in ("L1", "L2", "L4")}
     assert rows["L4"][:2] == ["0.4878494", "0.8660254"] and rows["L4"][-1] == "-"

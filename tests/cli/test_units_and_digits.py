@@ -1,4 +1,4 @@
-"""Units and digits as astronomers write them, decided in orbits.display: composite units written km / s / Mpc,
+"""Units and digits as astronomers write them, decided in orbits._common.display: composite units written km / s / Mpc,
 headers that never break inside a unit, magnitudes in mag, a zero in its table's unit, small and large numbers
 readable, a published model named, a title that names its source once, RA and Dec in h m s and d m s."""
 
@@ -9,7 +9,8 @@ import astropy.units as u
 import pytest
 from typer.testing import CliRunner
 
-from orbits import Cosmology, display
+from orbits import Cosmology
+from orbits._common import display
 from orbits_cli.main import app
 
 
@@ -73,10 +74,12 @@ def test_a_published_model_is_named_in_its_title():
     assert run("cosmology --model planck18").splitlines()[0].startswith("Planck 2018: flat matter + Lambda")
 
 
-def test_a_title_names_its_source_once():
+def test_the_answer_comes_first_and_its_source_once_after_it():
     lines = run("where Mars --epoch 2026-11-25").splitlines()
     title = " ".join(lines[:lines.index(next(line for line in lines if not line.strip()))])
-    assert title.count("DE421") == 1 and len(title) <= 2 * 80
+    assert "DE421" not in title and len(title) <= 80
+    after = " ".join(lines[max(k for k, line in enumerate(lines) if "declination" in line) + 1:])
+    assert after.count("DE421") == 1 and after.strip().startswith("Positions:")
 
 
 def test_right_ascension_and_declination_in_hours_and_degrees_minutes_seconds():

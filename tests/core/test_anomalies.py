@@ -9,8 +9,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from orbits.core import anomalies
 from orbits.core.errors import OrbitDomainError
+from orbits.core.twobody import anomalies
 
 
 @given(E=st.floats(min_value=-math.pi, max_value=math.pi), e=st.floats(min_value=0, max_value=1 - 2**-53))

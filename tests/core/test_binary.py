@@ -14,8 +14,10 @@ import mpref
 import numpy as np
 import pytest
 
-from orbits.core import binary, checks, elements, twobody
+from orbits.core import checks
+from orbits.core.encounters import binary
 from orbits.core.errors import OrbitDomainError
+from orbits.core.twobody import elements, twobody
 
 DPS = 50
 RATIOS = [1e-15, 1e-8, 0.012300037, 0.3, 1.0, 2.5, 7.3e3]
@@ -242,7 +244,7 @@ def test_companion_scales_with_the_primary_and_the_inclination():
 @pytest.mark.parametrize("e", [0.0, 0.3, 0.9])
 def test_radial_velocity_is_the_line_of_sight_kepler_velocity(e):
     """K (cos(omega + nu) + e cos omega) with K = 2 pi a sin i / (P sqrt(1 - e**2)) equals the z component of the
-    velocity of orbits.core.elements (an independent form: the perifocal velocity rotated), to 1e-15 of K."""
+    velocity of orbits.core.twobody.elements (an independent form: the perifocal velocity rotated), to 1e-15 of K."""
     mu, a, inc, raan, argp = 3.986e14, 7.0e6, 1.1, 0.4, 2.3
     nu = np.linspace(-np.pi, np.pi, 25)
     _, v = elements.elements_to_state(a * (1 - e * e), e, inc, raan, argp, nu, mu)

@@ -8,8 +8,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from orbits.core import collisions
 from orbits.core.errors import OrbitDomainError
+from orbits.core.mechanics import collisions
 
 masses = st.floats(1e-6, 1e6)
 speeds = st.floats(-1e3, 1e3)

@@ -15,9 +15,9 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from orbits.core import friedmann, sphere
+from orbits.core.cosmology import friedmann, sphere
+from orbits.core.cosmology.friedmann import Friedmann
 from orbits.core.errors import OrbitDomainError
-from orbits.core.friedmann import Friedmann
 
 EDS_ULPS = 4  # EdS comoving distance, age and lookback time against mpmath: measured worst 1.57 ulp
 SPHERE_ULPS = 1  # correctly rounded cube roots (_dd.cbrt) plus 1/3 of the argument's 2 roundings; measured 0.70
@@ -145,7 +145,8 @@ EDS_SUBNORMAL_FAILURES = {1e-309: "27 ulp", 1e-310: "431 ulp", 1e-315: "2.8e7 ul
             marks=pytest.mark.xfail(
                 strict=True,
                 raises=AssertionError,
-                reason=f"a limit orbits.core.friedmann states: below the smallest normal z the EdS lookback and "
+                reason=f"a limit orbits.core.cosmology.friedmann states: below the smallest normal z the EdS "
+                f"lookback and "
                 f"distance lose bits (z = {z:g}: {ulps})",
             ),
         )

@@ -8,9 +8,9 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from orbits.core import elements
 from orbits.core.errors import DegenerateOrbitError, OrbitDomainError
-from orbits.core.propagate import propagate
+from orbits.core.twobody import elements
+from orbits.core.twobody.propagate import propagate
 
 
 def angle_diff(a, b):

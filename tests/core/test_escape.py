@@ -12,8 +12,9 @@ import mpref
 import numpy as np
 import pytest
 
-from orbits.constants import AU, BODIES, EARTH_MEAN_RADIUS, SIDEREAL_DAY, STANDARD_GRAVITY
-from orbits.core import escape, twobody
+from orbits._common.constants import AU, BODIES, EARTH_MEAN_RADIUS, SIDEREAL_DAY, STANDARD_GRAVITY
+from orbits.core.encounters import escape
+from orbits.core.twobody import twobody
 
 EARTH_ORBIT_SPEED = math.sqrt(BODIES["Sun"].gm / BODIES["Earth"].orbit.a)
 

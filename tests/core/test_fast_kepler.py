@@ -1,4 +1,4 @@
-"""Compiled Kepler kernels (orbits/core/_fast_kepler.py) and their NumPy fallback, side by side.
+"""Compiled Kepler kernels (orbits/core/twobody/_fast_kepler.py) and their NumPy fallback, side by side.
 
 tests/core/test_kepler.py runs against whichever implementation is active (the compiled one when numba
 is installed); here the NumPy fallback is checked against mpmath as well, the two are compared on large
@@ -15,8 +15,9 @@ import mpref
 import numpy as np
 import pytest
 
-from orbits.core import _fast, kepler
+from orbits.core import _fast
 from orbits.core.errors import OrbitDomainError
+from orbits.core.twobody import kepler
 from orbits.tools.reference import kepler_E_ulps, kepler_H_ulps
 
 pytest.importorskip("numba")
@@ -158,22 +159,24 @@ def run_python(code, **env):
 
 
 def test_import_orbits_and_the_core_do_not_import_numba():
-    code = "import sys, orbits, orbits.core.kepler, orbits.core.propagate; print('numba' in sys.modules)"
+    code = ("import sys, orbits, orbits.core.twobody.kepler, orbits.core.twobody.propagate; "
+            "print('numba' in sys.modules)")
     assert run_python(code).strip() == "False"
 
 
 def test_orbits_jit_0_runs_numpy_without_numba():
-    code = "import sys; from orbits.core import kepler; kepler.eccentric_anomaly(1, 0.5); print('numba' in sys.modules)"
+    code = ("import sys; from orbits.core.twobody import kepler; kepler.eccentric_anomaly(1, 0.5); "
+            "print('numba' in sys.modules)")
     assert run_python(code, ORBITS_JIT="0").strip() == "False"
 
 
 def test_a_small_query_never_imports_numba_and_a_large_batch_compiles_once_with_a_word(tmp_path):
     """The default ("auto"): a calculator query takes the NumPy path; a batch of AUTO_MIN_BATCH elements starts
     the kernels, saying so once on stderr when nothing is cached yet."""
-    small = ("import sys; from orbits.core import kepler; kepler.eccentric_anomaly([0.1, 1.0], 0.5); "
+    small = ("import sys; from orbits.core.twobody import kepler; kepler.eccentric_anomaly([0.1, 1.0], 0.5); "
              "kepler.hyperbolic_anomaly(3.0, 2.0); kepler.parabolic_anomaly(1.0); print('numba' in sys.modules)")
     assert run_python(small).strip() == "False"
-    large = ("import sys, numpy as np; from orbits.core import kepler, _fast; "
+    large = ("import sys, numpy as np; from orbits.core import _fast; from orbits.core.twobody import kepler; "
              "kepler.eccentric_anomaly(np.linspace(0, 3, _fast.AUTO_MIN_BATCH), 0.5); print('numba' in sys.modules)")
     result = subprocess.run([sys.executable, "-c", large], capture_output=True, text=True, check=True,
                             env={**os.environ, "NUMBA_CACHE_DIR": str(tmp_path)})
@@ -183,7 +186,8 @@ def test_a_small_query_never_imports_numba_and_a_large_batch_compiles_once_with_
 
 def test_disk_cache_is_written_then_loaded(tmp_path):
     code = (
-        "import json; from orbits.core import kepler, _fast, _fast_kepler; kepler.parabolic_anomaly(1.0); "
+        "import json; from orbits.core import _fast; from orbits.core.twobody import kepler, _fast_kepler; "
+        "kepler.parabolic_anomaly(1.0); "
         "print(json.dumps([_fast.cache_dir(), sum(_fast_kepler.parabolic.stats.cache_hits.values())]))"
     )
     folder, hits = json.loads(run_python(code, NUMBA_CACHE_DIR=str(tmp_path), ORBITS_JIT="1"))
@@ -209,7 +213,7 @@ def test_read_only_install_falls_back_to_the_temporary_folder(tmp_path):
         "import os, orbits.core._fast as f; real = f.first_writable; "
         "home = os.path.dirname(f.__file__); "
         "f.first_writable = lambda roots, name: real([r for r in roots if not r.startswith(home)], name); "
-        "from orbits.core import kepler; print(kepler.parabolic_anomaly(1.0), f.cache_dir())"
+        "from orbits.core.twobody import kepler; print(kepler.parabolic_anomaly(1.0), f.cache_dir())"
     )
     value, folder = run_python(
         code, NUMBA_CACHE_DIR=str(blocker / "x"), XDG_CACHE_HOME=str(blocker / "y"), TMPDIR=str(tmp_path)
@@ -217,8 +221,31 @@ def test_read_only_install_falls_back_to_the_temporary_folder(tmp_path):
     assert float(value) == kepler.parabolic_anomaly(1.0) and folder.startswith(str(tmp_path / "orbits-"))
 
 
+def cache_folder(**env):
+    """The kernels' cache folder a fresh process picks, with NUMBA_CACHE_DIR unset and `env` set."""
+    environment = {k: v for k, v in os.environ.items() if k not in ("NUMBA_CACHE_DIR", "XDG_CACHE_HOME")}
+    code = "import orbits.core._fast as f; print(f.cache_dir())"
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                            env={**environment, **env}, check=True)
+    return result.stdout.strip()
+
+
+def test_the_cache_lives_in_the_users_cache_folder(tmp_path):
+    """XDG on Linux: $XDG_CACHE_HOME/orbits, else ~/.cache/orbits (a relative XDG_CACHE_HOME is invalid and
+    ignored); never the package folder while the user's folder is writable (a system-wide install cannot write
+    there)."""
+    assert cache_folder(XDG_CACHE_HOME=str(tmp_path / "xdg")).startswith(str(tmp_path / "xdg" / "orbits" / "orbits-"))
+    home = tmp_path / "home"
+    assert cache_folder(HOME=str(home)).startswith(str(home / ".cache" / "orbits" / "orbits-"))
+    assert cache_folder(HOME=str(home), XDG_CACHE_HOME="relative/cache").startswith(str(home / ".cache" / "orbits"))
+    blocker = tmp_path / "a-file"
+    blocker.write_text("not a folder")
+    package = os.path.dirname(_fast.__file__)
+    assert cache_folder(XDG_CACHE_HOME=str(blocker)).startswith(os.path.join(package, "__pycache__", "orbits-"))
+
+
 def test_one_compilation_for_read_only_and_broadcast_inputs():
-    from orbits.core import _fast_kepler
+    from orbits.core.twobody import _fast_kepler
 
     M = np.linspace(0.0, 3.0, 10)
     M.flags.writeable = False
@@ -231,7 +258,7 @@ def test_one_compilation_for_read_only_and_broadcast_inputs():
 def test_results_do_not_depend_on_where_the_arrays_lie():
     """Inputs and outputs adjacent in one buffer, offset by 0 to 3 elements, give the results of separate arrays
     (the kernels loop over views, whatever the layout; their speed is the benchmark's alignment row)."""
-    from orbits.core import _fast_kepler
+    from orbits.core.twobody import _fast_kepler
 
     rng = np.random.default_rng(61)
     n = 5000

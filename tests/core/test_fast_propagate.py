@@ -1,4 +1,4 @@
-"""Compiled universal-variable propagator (orbits/core/_fast_propagate.py) against NumPy and mpmath."""
+"""Compiled universal-variable propagator (orbits/core/twobody/_fast_propagate.py) against NumPy and mpmath."""
 
 import math
 
@@ -6,9 +6,10 @@ import mpref
 import numpy as np
 import pytest
 
-from orbits.core import _fast, elements
+from orbits.core import _fast
 from orbits.core.errors import DegenerateOrbitError, OrbitDomainError
-from orbits.core.propagate import propagate
+from orbits.core.twobody import elements
+from orbits.core.twobody.propagate import propagate
 
 pytest.importorskip("numba")
 
@@ -74,7 +75,7 @@ def test_mixed_conics_against_mpmath(jit):
 
 def test_safeguarded_pass_matches_the_vectorised_pass():
     """Pass 2 (bracketed Halley from the same starter) gives the pass-1 root, checked state by state."""
-    from orbits.core import _fast_universal as kernel
+    from orbits.core.twobody import _fast_universal as kernel
 
     r0, v0, dt = mixed_states(np.random.default_rng(63), 300)
     mu = np.full(len(dt), MU)
@@ -105,7 +106,7 @@ def test_invalid_input_raises_the_numpy_message(args, error, fragment):
 
 
 def test_one_compilation_for_every_input_layout():
-    from orbits.core import _fast_propagate as kernel
+    from orbits.core.twobody import _fast_propagate as kernel
 
     r0, v0 = np.array([7e6, 1e5, 0.0]), np.array([0.0, 7.5e3, 10.0])
     propagate(r0, v0, MU, 10.0)

@@ -12,7 +12,8 @@ import mpref
 import numpy as np
 import pytest
 
-from orbits.core import elements, flyby
+from orbits.core.encounters import flyby
+from orbits.core.twobody import elements
 
 MU = 1.26686534e17  # Jupiter's G M (m3/s2)
 K_VALUES = np.logspace(-8, 8, 33)  # k = b u**2 / mu: from slow grazing passes to fast distant ones

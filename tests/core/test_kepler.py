@@ -9,9 +9,9 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from orbits.core import kepler
-from orbits.core._kepler_shared import TWO_PI_1, TWO_PI_2, TWO_PI_3
 from orbits.core.errors import OrbitDomainError
+from orbits.core.twobody import kepler
+from orbits.core.twobody._kepler_shared import TWO_PI_1, TWO_PI_2, TWO_PI_3
 
 ELLIPTIC_ULPS = 4
 HYPERBOLIC_ULPS = 4

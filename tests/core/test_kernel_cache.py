@@ -9,7 +9,7 @@ import pytest
 
 pytest.importorskip("numba")
 
-SOLVE = ("import numpy as np; from orbits.core import kepler; "
+SOLVE = ("import numpy as np; from orbits.core.twobody import kepler; "
          "print(repr(float(kepler.eccentric_anomaly(np.array([0.3, 1.0]), np.array([0.5, 0.9]))[1])))")
 
 

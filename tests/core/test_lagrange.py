@@ -1,6 +1,6 @@
 """Lagrange points (XXII.viii) against mpmath roots of the raw force balance, published values and identities.
 
-The references never use the quintics of orbits.core.lagrange: the collinear points are roots of the signed
+The references never use the quintics of orbits.core.threebody.lagrange: the collinear points are roots of the signed
 rotating-frame force x - (1 - mu)(x + mu)/|x + mu|**3 - mu (x - 1 + mu)/|x - 1 + mu|**3 (ERRATA #78), taken
 in the offset from the nearer star and solved by mpmath with enough digits for the cancellation at tiny mu;
 eigenvalues come from mpmath's eig of the 6 x 6 linearisation built from second derivatives of
@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 from mpmath import mp, mpf
 
-from orbits.core import lagrange
 from orbits.core.errors import OrbitDomainError
+from orbits.core.threebody import lagrange
 
 SUN_EARTH = 3.0034893488507934e-06  # GM_Earth / (GM_Sun + GM_Earth), IAU 2015 nominal values
 EARTH_MOON = 0.012150584269940356

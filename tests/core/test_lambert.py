@@ -1,4 +1,5 @@
-"""Lambert's problem (orbits/core/lambert.py and its compiled port orbits/core/_fast_lambert.py) against mpmath.
+"""Lambert's problem (orbits/core/manoeuvres/lambert.py and its compiled port
+orbits/core/manoeuvres/_fast_lambert.py) against mpmath.
 
 References, independent of the solver: T(x) from Lagrange's equation in mpmath (the two halves
 alpha - sin alpha and beta - sin beta, which the solver never forms), and the returned v1 propagated at 60
@@ -16,8 +17,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from orbits.core import _fast, lambert
+from orbits.core import _fast
 from orbits.core.errors import DegenerateOrbitError, OrbitDomainError
+from orbits.core.manoeuvres import lambert
 from orbits.tools.bench.lambert import _mp_lagrange_time, arrival_error, hard_cases
 from orbits.tools.reference import propagate
 

@@ -1,8 +1,9 @@
-"""Impulsive manoeuvres and gravity assists in the numeric core (orbits.core.manoeuvres, orbits.core.assist).
+"""Impulsive manoeuvres and gravity assists in the numeric core (orbits.core.manoeuvres.impulsive,
+orbits.core.manoeuvres.assist).
 
 References: the vis-viva law evaluated in mpmath at 50 digits (the naive differences, which mpmath can afford),
 published values (Wikipedia's Hohmann example, the bi-elliptic thresholds 11.94 and 15.58 of Vallado), the notes'
-collision formulas (IX.vii) and identities (energy, period, the third cosmic velocity of orbits.core.escape).
+collision formulas (IX.vii) and identities (energy, period, the third cosmic velocity of orbits.core.encounters.escape).
 """
 
 import math
@@ -12,9 +13,12 @@ import mpref
 import numpy as np
 import pytest
 
-from orbits.constants import BODIES, EARTH_MEAN_RADIUS, STANDARD_GRAVITY
-from orbits.core import assist, collisions, escape, manoeuvres
-from orbits.core.flyby import deflection_angle, impact_parameter
+from orbits._common.constants import BODIES, EARTH_MEAN_RADIUS, STANDARD_GRAVITY
+from orbits.core.encounters import escape
+from orbits.core.encounters.flyby import deflection_angle, impact_parameter
+from orbits.core.manoeuvres import assist
+from orbits.core.manoeuvres import impulsive as manoeuvres
+from orbits.core.mechanics import collisions
 
 MU_EARTH = 398600.4418e9
 mp = mpmath.mpf

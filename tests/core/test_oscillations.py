@@ -7,7 +7,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from orbits.core import oscillations
+from orbits.core.mechanics import oscillations
 
 G0 = 9.80665
 

@@ -2,7 +2,7 @@
 the local coordinates against the barycentric field, the correctors' closure and Jacobi constant, the small-amplitude
 and Richardson limits at their orders, the monodromy's identities and the continuation's stops.
 
-Units of orbits.core.cr3bp: r = 1, n = 1. Mass ratios from the IAU 2015 nominal GMs of the catalogue.
+Units of orbits.core.periodic.cr3bp: r = 1, n = 1. Mass ratios from the IAU 2015 nominal GMs of the catalogue.
 """
 
 import math
@@ -10,8 +10,10 @@ import math
 import numpy as np
 import pytest
 
-from orbits.core import continuation, cr3bp, dop853, families, kepler, libration, shooting
+from orbits.core import dop853
 from orbits.core.errors import ConvergenceError, OrbitDomainError
+from orbits.core.periodic import continuation, cr3bp, families, libration, shooting
+from orbits.core.twobody import kepler
 
 EARTH_MOON = 0.012150584269940356
 SUN_EARTH = 3.0034893488507934e-06
@@ -149,7 +151,7 @@ def test_richardsons_halo_is_within_its_stated_bounds_of_the_corrected_orbit():
     halo's through the same crossing by at most 4 A**4, A = sqrt(Ax**2 + Az**2) / gamma (measured ratio up to 3.78,
     Earth-Moon and Sun-Earth, L1 and L2, Az = 0.01 .. 0.3 gamma), the state by at most 10 A**3 (measured 9.1).
     These are bounds, not orders: Ax stays near its smallest value (0.10 to 0.18 gamma), so A cannot go to zero
-    along the family (the docstring of orbits.core.libration says so)."""
+    along the family (the docstring of orbits.core.periodic.libration says so)."""
     worst_period, worst_state = 0.0, 0.0
     for mu in (EARTH_MOON, SUN_EARTH):
         for point in ("L1", "L2"):

@@ -1,4 +1,4 @@
-"""The closed forms of perturbed orbits (orbits.core.oblateness, drag, third_body, relativity) against published
+"""The closed forms of perturbed orbits (orbits.core.perturb.oblateness, drag, third_body, relativity) against published
 values, identities, mpmath and a numerical integration of the averaged equations."""
 
 import math
@@ -7,8 +7,8 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from orbits.core import drag, oblateness, relativity, third_body
 from orbits.core.errors import OrbitDomainError
+from orbits.core.perturb import drag, oblateness, relativity, third_body
 
 # the IERS Earth: GM (IERS 2010, 3.986004418e14), J2 and its reference radius (IERS Conventions 2010, Table 1.1)
 MU, R, J2 = 3.986004418e14, 6_378_136.6, 1.0826359e-3

@@ -7,8 +7,8 @@ import mpmath
 import numpy as np
 import pytest
 
-from orbits.core import projectile, rotation
 from orbits.core.errors import OrbitDomainError
+from orbits.core.mechanics import projectile, rotation
 
 G0 = 9.80665
 

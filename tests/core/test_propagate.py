@@ -13,9 +13,9 @@ import mpref
 import numpy as np
 import pytest
 
-from orbits.core import elements
 from orbits.core.errors import DegenerateOrbitError, OrbitDomainError
-from orbits.core.propagate import _elliptic_pass, _propagate_compiled, _propagate_numpy, propagate, stumpff
+from orbits.core.twobody import elements
+from orbits.core.twobody.propagate import _elliptic_pass, _propagate_compiled, _propagate_numpy, propagate, stumpff
 
 MU_EARTH = 3.986004418e14
 EPS = 2.0**-52
@@ -114,7 +114,7 @@ def elliptic_pass_leaves(path, r0, v0, mu, dt):
     if path == "numpy":
         return int(np.sum(~_elliptic_pass(r0, v0, mu, dt)[2]))
     pytest.importorskip("numba")
-    from orbits.core import _fast_propagate as kernel
+    from orbits.core.twobody import _fast_propagate as kernel
 
     r, v, pending = np.empty_like(r0), np.empty_like(v0), np.empty(len(dt), np.int64)
     scratch = np.empty((kernel._ROWS, kernel._BLOCK))

@@ -1,7 +1,7 @@
 """Both propagation paths against the mpmath universal-variable reference (orbits.tools.reference) on long
 near-parabolic flights and hyperbolic flybys, and the rule that small batches never import numba.
 
-"numpy" calls orbits.core.propagate._propagate_numpy (what small batches and ORBITS_JIT=0 run); "compiled" calls
+"numpy" calls orbits.core.twobody.propagate._propagate_numpy (what small batches and ORBITS_JIT=0 run); "compiled" calls
 the numba kernel through _propagate_compiled, which must not hand the batch back to NumPy. Position and velocity
 are bounded separately, each relative to the reference's own norm; the two paths meet the same bounds.
 """
@@ -16,8 +16,8 @@ import mpref
 import numpy as np
 import pytest
 
-from orbits.core import anomalies, elements
-from orbits.core.propagate import _propagate_compiled, _propagate_numpy
+from orbits.core.twobody import anomalies, elements
+from orbits.core.twobody.propagate import _propagate_compiled, _propagate_numpy
 
 MU_EARTH = 3.986004418e14
 PATHS = ["compiled", "numpy"]
@@ -101,7 +101,7 @@ def test_small_batches_never_import_numba():
     """The default (auto) mode propagates a calculator-sized batch in NumPy without importing numba."""
     code = (
         "import sys, numpy as np\n"
-        "from orbits.core.propagate import propagate\n"
+        "from orbits.core.twobody.propagate import propagate\n"
         "r, v = propagate(np.array([7e6, 1e5, 0.0]), np.array([0.0, 7.5e3, 10.0]), 3.986004418e14,"
         " np.linspace(-1e4, 1e4, 500))\n"
         "assert r.shape == (500, 3) and np.all(np.isfinite(r))\n"

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 from mpmath import mp, mpf
 
-from orbits.core import rings
 from orbits.core.errors import OrbitDomainError
+from orbits.core.threebody import rings
 
 
 def csc_sum_euler_maclaurin(n, terms=12):

@@ -11,7 +11,7 @@ import mpref
 import numpy as np
 import pytest
 
-from orbits.core import rocket
+from orbits.core.manoeuvres import rocket
 
 
 def ulps(x, ref):

@@ -8,8 +8,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from orbits.core import rotation
 from orbits.core.errors import OrbitDomainError
+from orbits.core.mechanics import rotation
 
 components = st.floats(-10, 10)
 axes = st.tuples(components, components, components).filter(lambda v: math.hypot(*v) > 1e-3)

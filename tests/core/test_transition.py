@@ -1,4 +1,4 @@
-"""The state-transition matrix (orbits/core/transition.py and its compiled port) against mpmath central
+"""The state-transition matrix (orbits/core/twobody/transition.py and its compiled port) against mpmath central
 differences at 50 digits, heyoka's variational equations and the symplectic identity, on both paths."""
 
 import mpref
@@ -7,9 +7,9 @@ import pytest
 import seeds
 from flights import grazing_flight
 
-from orbits.core import transition
-from orbits.core.elements import elements_to_state
 from orbits.core.errors import DegenerateOrbitError, OrbitDomainError
+from orbits.core.twobody import transition
+from orbits.core.twobody.elements import elements_to_state
 
 MU = 3.986004418e14
 EPS = 2.0**-52

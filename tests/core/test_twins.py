@@ -12,8 +12,9 @@ import pytest
 
 pytest.importorskip("numba")
 
-TWINS = [("kepler", "_fast_kepler", "_kepler_shared"), ("propagate", "_fast_propagate", "_propagate_shared"),
-         ("lambert", "_fast_lambert", "_lambert_shared")]
+TWINS = [("twobody.kepler", "twobody._fast_kepler", "twobody._kepler_shared"),
+         ("twobody.propagate", "twobody._fast_propagate", "twobody._propagate_shared"),
+         ("manoeuvres.lambert", "manoeuvres._fast_lambert", "manoeuvres._lambert_shared")]
 
 PROBE = """
 import builtins, importlib, json
@@ -32,9 +33,10 @@ def record(name, globals=None, locals=None, fromlist=(), level=0):
 
 
 builtins.__import__ = record
-for name in ("kepler", "propagate", "lambert"):
-    importlib.import_module("orbits.core." + name)
-    importlib.import_module("orbits.core._fast_" + name)
+for spec, port in (("twobody.kepler", "twobody._fast_kepler"), ("twobody.propagate", "twobody._fast_propagate"),
+                   ("manoeuvres.lambert", "manoeuvres._fast_lambert")):
+    importlib.import_module("orbits.core." + spec)
+    importlib.import_module("orbits.core." + port)
 print(json.dumps(sorted(edges)))
 """
 

@@ -6,9 +6,9 @@ import mpmath
 import numpy as np
 import pytest
 
-from orbits.constants import BODIES, SIDEREAL_DAY, STANDARD_GRAVITY
-from orbits.core import elements, twobody
-from orbits.core.propagate import propagate
+from orbits._common.constants import BODIES, SIDEREAL_DAY, STANDARD_GRAVITY
+from orbits.core.twobody import elements, twobody
+from orbits.core.twobody.propagate import propagate
 
 MU = 3.986004418e14
 

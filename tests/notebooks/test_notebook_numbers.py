@@ -341,8 +341,7 @@ def test_closed_universe_turnaround_and_crunch_are_the_cycloids():
 
 @pytest.fixture(scope="module")
 def four_scenes():
-    from orbits import scene
-    from orbits.validate import validate
+    from orbits.validate import scene, validate
 
     return validate([scene.load(name) for name in ("circular", "eccentric", "near_parabolic", "flyby")])
 

@@ -9,10 +9,11 @@ import numpy as np
 import pytest
 
 from orbits import Binary, Cosmology, Orbit, Ring, escape_speed
-from orbits.constants import G
-from orbits.core import anomalies, elements, kepler, lagrange, rings
+from orbits._common.constants import G
 from orbits.core.errors import DegenerateOrbitError, OrbitDomainError
-from orbits.core.propagate import propagate
+from orbits.core.threebody import lagrange, rings
+from orbits.core.twobody import anomalies, elements, kepler
+from orbits.core.twobody.propagate import propagate
 from orbits.tools import reference
 
 NAN, INF = float("nan"), float("inf")

@@ -7,7 +7,7 @@ import mpref
 import numpy as np
 import pytest
 
-from orbits.core import kepler
+from orbits.core.twobody import kepler
 from orbits.tools import reference
 
 #: the README's bounds, in ulps of the exact root (worst measured over 15 fresh samples of 2e4 each, both paths,

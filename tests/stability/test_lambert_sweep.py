@@ -4,7 +4,7 @@ no ill-conditioned answer given without a word.
 The sample: r1 and r2 in any directions with radii from 0.1 to 10 (mu = 1), flights from 1e-9 to 1e3 periods of
 the circular orbit at r1, up to 20 complete revolutions where the flight allows them, either branch, either sense.
 The reference is v1 propagated at 60 digits and more (orbits.tools.reference.propagate); the conditioning kappa is
-the solver's own (orbits.core.lambert.arrival_conditioning), the arrival's shift under the inputs' rounding.
+the solver's own (orbits.core.manoeuvres.lambert.arrival_conditioning), the arrival's shift under the inputs' rounding.
 """
 
 import warnings
@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 
 from orbits import IllConditionedWarning, lambert
-from orbits.core import lambert as lambert_core
 from orbits.core.errors import ILL_CONDITIONED, OrbitDomainError
+from orbits.core.manoeuvres import lambert as lambert_core
 from orbits.tools.bench.lambert import arrival_error
 
 #: transfers drawn a run on each path (the README's figure)

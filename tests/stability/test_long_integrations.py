@@ -9,11 +9,11 @@ span uses the next longer row. Spans beyond 1e4 periods (ORBITS_SLOW_SCALE > 1) 
 import numpy as np
 import pytest
 
-from orbits.core import elements
-from orbits.core.propagate import propagate
-from orbits.nbody import NBodyProblem
+from orbits.core.twobody import elements
+from orbits.core.twobody.propagate import propagate
 from orbits.tools import precision
 from orbits.validate import backends
+from orbits.validate.nbody import NBodyProblem
 
 pytestmark = pytest.mark.slow
 

@@ -24,10 +24,10 @@ import numpy as np
 import pytest
 from flights import grazing_flight
 
-from orbits.core import elements
 from orbits.core.errors import OrbitDomainError
-from orbits.core.propagate import _propagate_compiled, _propagate_numpy
-from orbits.core.transition import transition_matrix
+from orbits.core.twobody import elements
+from orbits.core.twobody.propagate import _propagate_compiled, _propagate_numpy
+from orbits.core.twobody.transition import transition_matrix
 
 MU_EARTH = 3.986004418e14
 EPS = 2.0**-53

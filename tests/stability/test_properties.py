@@ -9,8 +9,8 @@ from hypothesis import assume, given
 from hypothesis import strategies as st
 
 from orbits import Orbit
-from orbits.core import elements
-from orbits.core.propagate import propagate
+from orbits.core.twobody import elements
+from orbits.core.twobody.propagate import propagate
 
 eccentricity = st.one_of(st.floats(0, 0.99), st.floats(1.0 + 1e-9, 5.0))
 

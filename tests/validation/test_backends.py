@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 
 from orbits.core.errors import OrbitDomainError
-from orbits.nbody import Kick, NBodyProblem
 from orbits.validate import _heyoka, _rebound, backends
+from orbits.validate.nbody import Kick, NBodyProblem
 
 TWO_PI = 2.0 * math.pi
 DT = TWO_PI / 100.0
@@ -312,7 +312,7 @@ def _problem(**changes) -> NBodyProblem:
         ({"times": [0.0, 1.0, 1.0]}, "not strictly increasing at index 2"),
         ({"times": [0.0, math.inf]}, "times[1] = inf is not finite"),
         ({"times": "soon"}, "times cannot be read as a float64 array"),
-        ({"kicks": ((0.5, 1, [0, 1, 0]),)}, "is not an orbits.nbody.Kick"),
+        ({"kicks": ((0.5, 1, [0, 1, 0]),)}, "is not an orbits.validate.nbody.Kick"),
         ({"kicks": (Kick(0.5, 2, [0, 1, 0]),)}, "body index in [0, N = 2)"),
         ({"kicks": (Kick(3.0, 1, [0, 1, 0]),)}, "after the last output time 2.0"),
         ({"kicks": (Kick(1.0, 1, [0, 1, 0]), Kick(0.5, 1, [0, 1, 0]))}, "list kicks in time order"),
@@ -343,7 +343,7 @@ def test_kicks_change_the_orbit_where_and_when_they_act(name):
     t = 2.5; outputs before a kick follow the circle, an output at a kick time shows the kicked state, and every
     output equals the closed-form propagation of the kicked states (the library's propagator, good to 1e-15)
     within 1e-14 (measured 1.5e-15 rebound, 6.7e-16 heyoka)."""
-    from orbits.core.propagate import propagate
+    from orbits.core.twobody.propagate import propagate
 
     times = np.array([0.5, 1.0, 2.0, 2.5, 4.0])
     kicks = (Kick(1.0, 1, [math.cos(1.0) * 0.1, math.sin(1.0) * 0.1, 0.0]), Kick(2.5, 1, [0.0, 0.0, 0.05]))

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from orbits import predict, scene
+from orbits.validate import predict, scene
 
 
 @pytest.mark.parametrize("name", ["flyby", "near_parabolic", "stellar_encounter"])

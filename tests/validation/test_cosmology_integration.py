@@ -10,8 +10,8 @@ Measured: positions within 9.7e-16 relative (heyoka, tol 1e-16) and 3.2e-16 (IAS
 import numpy as np
 import pytest
 
+from orbits.core.cosmology.sphere import sphere_time
 from orbits.core.errors import OrbitDomainError
-from orbits.core.sphere import sphere_time
 from orbits.validate import backends
 from orbits.validate.builders import expanding_sphere_problem
 

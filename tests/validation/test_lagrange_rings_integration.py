@@ -1,5 +1,5 @@
 """Lagrange points and rings integrated with rebound (IAS15) and heyoka (Taylor): the linear predictions of
-orbits.core.lagrange and orbits.core.rings against what the N-body codes do.
+orbits.core.threebody.lagrange and orbits.core.threebody.rings against what the N-body codes do.
 
 Measured on the 2-core machine (both backends): collinear points depart at the eigenvalue rate to 7.8e-6 and
 L4/L5 of a mu = 0.1 pair (beyond Routh's ratio) to 0.60 %; round-off alone carries L1..L3 to a 1e-3 departure
@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 from sizes import slow_scale
 
-from orbits.core import lagrange as lagrange_core
+from orbits.core.threebody import lagrange as lagrange_core
 from orbits.validate import backends
 from orbits.validate.builders import fitted_growth_rate, lagrange_test_particles_problem, ring_problem
 
@@ -121,7 +121,7 @@ def test_maxwell_rings_with_both_backends(n, factor, backend):
     times the predicted time, each window widened by a factor 10 in the seed; above it, it keeps its shape for
     max(30, 600 ORBITS_SLOW_SCALE) periods: measured 1.6e-13 (heyoka) and 3.0e-14 (rebound) over 30 periods
     (bound 2e-12) and 4.4e-13 over 100 to 600 (bound 5e-12)."""
-    from orbits.core import rings
+    from orbits.core.threebody import rings
 
     pytest.importorskip(backend)
     beta = 100.0 if factor is None else factor * rings.central_mass_threshold(n)

@@ -64,7 +64,7 @@ def test_the_nearest_output_time_is_found_by_bisection():
 @pytest.mark.parametrize("backend", ["rebound", "heyoka"])
 def test_integrations_report_their_progress(backend):
     """What the command line's live bar shows: fractions of the span that only grow and end at 1."""
-    from orbits.nbody import reporting
+    from orbits.validate.nbody import reporting
 
     problem, _ = ring_problem(7, np.linspace(0, 2000 * np.pi, 400)[1:], 1000.0)
     seen = []
@@ -76,7 +76,7 @@ def test_integrations_report_their_progress(backend):
 def test_a_span_of_more_than_a_million_periods_is_refused_at_load_time(tmp_path):
     """A 90-minute orbit for 1e12 yr would run for days: refused before anything runs."""
     from orbits.core.errors import SceneError
-    from orbits.scene import BUILTIN_DIR
+    from orbits.validate.scene import BUILTIN_DIR
 
     source = (BUILTIN_DIR / "circular.toml").read_text()
     path = tmp_path / "long.toml"

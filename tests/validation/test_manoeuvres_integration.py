@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from orbits import BiElliptic, Departure, Hohmann, Phasing, PlaneChange, Rocket
-from orbits.validate.impulses import check_assist, check_plan
+from orbits.validate.manoeuvres import check_assist, check_plan
 
 #: name -> (impulse plan, bound on the worst of position, velocity, a, e and i against the closed form). Bounds are
 #: 10x the worse backend measured: the bi-elliptic transfer's ellipses out to 30 r1 amplify the rounding of the
@@ -107,8 +107,9 @@ def test_two_stage_rocket_in_free_space_and_climbing():
 
 
 def test_single_stage_distance_and_speed_during_the_burn():
-    """Free space, one stage: the height at burnout is v_e (t - (mf / R) ln(m0 / mf)) (orbits.core.rocket)."""
-    from orbits.core.rocket import distance_during_burn
+    """Free space, one stage: the height at burnout is v_e (t - (mf / R) ln(m0 / mf))
+    (orbits.core.manoeuvres.rocket)."""
+    from orbits.core.manoeuvres.rocket import distance_during_burn
 
     rocket = Rocket.single_stage(1000 * u.kg, 400 * u.kg, exhaust_speed=3 * u.km / u.s, thrust=20 * u.kN)
     speed, height = fly_vertically(rocket, 0.0)
@@ -140,8 +141,8 @@ def test_gravity_assist_agrees_to_the_order_of_the_mass_ratio(mass_ratio, measur
 def test_mass_gain_against_heyoka(m1, m2, v_rel):
     """X.i with ERRATA #16: a body taking in mass at rate R that arrives at v_rel relative to it obeys
     m dv/dt = R v_rel, dm/dt = R (the integrator above with flow -R and exhaust -v_rel), so v2 - v1 =
-    v_rel ln(m2 / m1) (orbits.core.rocket.velocity_change): measured within 2.2e-16 relative."""
-    from orbits.core.rocket import velocity_change
+    v_rel ln(m2 / m1) (orbits.core.manoeuvres.rocket.velocity_change): measured within 2.2e-16 relative."""
+    from orbits.core.manoeuvres.rocket import velocity_change
 
     ta = variable_mass_integrator()
     rate = 0.37

@@ -13,7 +13,8 @@ import mpmath
 import numpy as np
 import pytest
 
-from orbits.core import collisions, oscillations, projectile, rocket
+from orbits.core.manoeuvres import rocket
+from orbits.core.mechanics import collisions, oscillations, projectile
 
 hy = pytest.importorskip("heyoka")
 

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from orbits import Collision, RigidBody
-from orbits.core import collisions, oscillations, projectile, rotation
+from orbits.core.mechanics import collisions, oscillations, projectile, rotation
 
 hy = pytest.importorskip("heyoka")
 
@@ -451,7 +451,8 @@ ROLLERS = {"solid sphere": (0.4, lambda m, r: RigidBody.solid_sphere(m, r)),
 @pytest.mark.parametrize("degrees", [3.0, 25.0, 70.0, 89.0])
 def test_rolling_down_an_incline_follows_the_lagrangian_integration(rolling_lagrangian, body, degrees):
     """a = g sin(alpha) / (1 + k), v = sqrt(2 g h / (1 + k)) and mu_s = tan(alpha) k / (1 + k) (XI, k = I / (m r**2))
-    from RigidBody.rolling_down and orbits.core.rotation against the integrated motion: s = a t**2 / 2, v = a t on
+    from RigidBody.rolling_down and orbits.core.mechanics.rotation against the integrated motion: s = a t**2 / 2, v =
+    a t on
     a grid, the speed where the height lost s sin(alpha) reaches h, and the friction the integration needs,
     f = m g sin(alpha) - m s'' (Newton for the centre) = I (s'' / r) / r (Euler for the spin), over the normal
     force m g cos(alpha). I = k m r**2 with k given here (2/5, 2/3, 1/2, 1), not taken from the library."""

@@ -5,9 +5,10 @@ import math
 
 import pytest
 
-from orbits.core import third_body
-from orbits.nbody import NBodyProblem, ZonalHarmonics
-from orbits.validate import available, histories, load, perturbed, validate_scene
+from orbits.core.perturb import third_body
+from orbits.validate import available, histories, load, validate_scene
+from orbits.validate import perturb as perturbed
+from orbits.validate.nbody import NBodyProblem, ZonalHarmonics
 
 pytestmark = pytest.mark.skipif(not (available("rebound") and available("heyoka")), reason="needs both backends")
 
@@ -54,7 +55,7 @@ def test_kozai_maximum_eccentricity_from_a_sweep_of_integrations():
         assert abs(e.max() ** 2 - e_max**2) < SWEEP_TOLERANCE_IN_EPS * eps_sa, (inc, e.max(), e_max)
 
 
-# ---- the integrations behind the pictures (orbits.plot.perturbations) ----------------------------------------
+# ---- the integrations behind the pictures (orbits.perturb.plot) ----------------------------------------
 def test_secular_history_follows_the_first_order_lines():
     """The Molniya scene's orbit over 10 revolutions (64 outputs a revolution): the revolution means of the node turn
     at the closed form's rate to 1.7 k (k = J2 (R/p)**2 = 3.1e-4; 2.6 k over 30 revolutions), the periapsis is drawn
@@ -113,7 +114,7 @@ def test_kozai_history_of_a_users_triple_follows_its_own_quadrupole_marks():
     e_max) marks none."""
     import astropy.units as u
 
-    from orbits.perturbations import KozaiLidov
+    from orbits.perturb.secular import KozaiLidov
 
     triple = KozaiLidov.of(1.0 * u.solMass, 0.5 * u.solMass, a=1 * u.AU, a_out=10 * u.AU, inc=70 * u.deg, e=0.05)
     history = histories.kozai_history(cycles=0.6, triple=triple)
@@ -135,7 +136,7 @@ def test_frozen_history_circles_the_closed_forms_frozen_point():
     import astropy.units as u
     import numpy as np
 
-    from orbits.perturbations import frozen
+    from orbits.perturb.secular import frozen
 
     design = frozen("Earth", altitude=700 * u.km, inc=98.19 * u.deg)
     assert histories.frozen_revolutions(design) == 1688
@@ -162,7 +163,7 @@ def test_ground_track_closes_within_a_kilometre():
     import astropy.units as u
     import numpy as np
 
-    from orbits.perturbations import repeat_ground_track
+    from orbits.perturb.secular import repeat_ground_track
 
     design = repeat_ground_track("Earth", revolutions=29, days=2, inc=98 * u.deg)
     track = histories.ground_track(design)
@@ -182,7 +183,8 @@ def test_brouwers_osculating_a_keeps_the_mean_a_an_integration_shows(e, inc_deg,
     and 0.29 %; the term averages to zero over the mean anomaly (to 1e-15)."""
     import numpy as np
 
-    from orbits.core import anomalies, oblateness
+    from orbits.core.perturb import oblateness
+    from orbits.core.twobody import anomalies
     from orbits.validate.backends import integrate
 
     j2, radius, inc = 1.08262668e-3, 6378.1363 / 7000.0, math.radians(inc_deg)

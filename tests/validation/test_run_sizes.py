@@ -7,10 +7,9 @@ import time
 import numpy as np
 import pytest
 
-from orbits import nbody, scene
 from orbits.core.errors import OrbitDomainError, SceneError
-from orbits.nbody import NBodyProblem, check_span, fastest_orbit, step_weight
-from orbits.validate import scenes
+from orbits.validate import nbody, scene, scenes
+from orbits.validate.nbody import NBodyProblem, check_span, fastest_orbit, step_weight
 
 
 def refusal(data: dict) -> str:

@@ -11,9 +11,8 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from orbits import scene
 from orbits.core.errors import SceneError
-from orbits.validate import models, scenes
+from orbits.validate import models, scene, scenes
 from orbits_cli.main import app
 
 DATA = """\

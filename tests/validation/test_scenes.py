@@ -6,9 +6,8 @@ import numpy as np
 import pytest
 from sizes import slow_scale
 
-from orbits import predict, scene
 from orbits.core.errors import SceneError
-from orbits.validate import backends, run
+from orbits.validate import backends, predict, run, scene
 
 BUILTIN = scene.builtin_names()
 

@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 
 from orbits.core.errors import SceneError
-from orbits.nbody import NBodyProblem
 from orbits.validate import _heyoka, _rebound, models, validate_scene
+from orbits.validate.nbody import NBodyProblem
 
 
 @pytest.fixture(scope="module")

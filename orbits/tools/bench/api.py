@@ -44,8 +44,8 @@ def _api_cases(n, rng):
     import astropy.units as u
 
     from orbits import Orbit
-    from orbits.core import elements
-    from orbits.core.propagate import propagate
+    from orbits.core.twobody import elements
+    from orbits.core.twobody.propagate import propagate
 
     shape = () if n == 1 else (n,)
     # periapses of 7000 km and up: every orbit clears the Earth (an orbit through it would warn)

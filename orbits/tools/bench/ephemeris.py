@@ -39,7 +39,7 @@ def _epochs(n, seed):
 
 
 def _jplephem(when):
-    from orbits import ephemeris
+    from orbits.ephemeris import positions as ephemeris
 
     kernel = ephemeris._kernel()
     jd1, jd2 = when.jd1, when.jd2
@@ -57,7 +57,7 @@ def _jplephem(when):
 
 
 def _orbits(when):
-    from orbits import ephemeris
+    from orbits.ephemeris import positions as ephemeris
 
     def call():
         state = ephemeris.state("Mars", when, center="SSB", source="de421")
@@ -70,7 +70,7 @@ def _astropy(when):
     import astropy.units as u
     from astropy.coordinates import get_body_barycentric_posvel
 
-    from orbits import ephemeris
+    from orbits.ephemeris import positions as ephemeris
 
     path = ephemeris.kernel_path()
 
@@ -83,7 +83,7 @@ def _astropy(when):
 
 def bench_ephemeris(n: int = 100_000, seed: int = 0, repeats: int = 3) -> list[EphemerisRow]:
     """Time orbits, jplephem and astropy on the states of Mars at `n` random TDB epochs 1900-2050."""
-    from orbits import ephemeris
+    from orbits.ephemeris import positions as ephemeris
 
     if ephemeris.available_source() != "de421":
         return [EphemerisRow("orbits", "needs orbits[ephemeris] (skyfield-data, jplephem)", n, np.nan, np.nan, np.nan)]
@@ -91,7 +91,8 @@ def bench_ephemeris(n: int = 100_000, seed: int = 0, repeats: int = 3) -> list[E
     ephemeris.state("Mars", when[:2], center="SSB", source="de421")  # open the kernel outside the timing
     seconds, (r_ref, v_ref) = best_time(_jplephem(when), repeats)
     rows = [EphemerisRow("jplephem (two segments, raw)", "ok", n, n / seconds, 0.0, 0.0)]
-    for name, factory in (("orbits.ephemeris.state", _orbits), ("astropy get_body_barycentric_posvel", _astropy)):
+    for name, factory in (("orbits.ephemeris.positions.state", _orbits), ("astropy get_body_barycentric_posvel",
+    _astropy)):
         seconds, (r, v) = best_time(factory(when), repeats)
         rows.append(EphemerisRow(name, "ok", n, n / seconds, float(np.abs(r - r_ref).max()),
                                  float(np.abs(v - v_ref).max())))

@@ -171,7 +171,7 @@ def _worst_errors(x, refs, periodic):
 
 
 def _orbits_method(threads):
-    from orbits.core.kepler import eccentric_anomaly, hyperbolic_anomaly
+    from orbits.core.twobody.kepler import eccentric_anomaly, hyperbolic_anomaly
 
     def solve(pair, hyperbolic):
         e, M = pair
@@ -345,7 +345,7 @@ _LAYOUTS = (("adjacent", 0), ("offset 8 B", 1), ("padded 64 B", 8))
 def _layout_rows(data, refs, repeats):
     """orbits on one thread on the easy set with M, e and the output laid end to end in one buffer, as
     _LAYOUTS: the kernels loop over views, so the speed should not depend on where the arrays lie."""
-    from orbits.core import _fast_kepler
+    from orbits.core.twobody import _fast_kepler
 
     n = len(data.e)
     rows = []

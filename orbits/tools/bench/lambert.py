@@ -13,7 +13,7 @@ Two data sets, both heliocentric in SI units:
 
 Peers: lamberthub's izzo2015 (numba) and gooding1990, pykep's lambert_problem and hapsira's izzo, each through
 its per-call Python API (the way their users call them) and marked "not installed" when absent. orbits runs
-vectorised, through orbits.core.lambert.solve: the compiled kernel on one thread, and the NumPy version.
+vectorised, through orbits.core.manoeuvres.lambert.solve: the compiled kernel on one thread, and the NumPy version.
 """
 
 import math
@@ -189,7 +189,7 @@ class _Solver:
 
 
 def _orbits_solver(threads):
-    from orbits.core.lambert import solve
+    from orbits.core.manoeuvres.lambert import solve
 
     def batch(r1, r2, tof, mu):
         with orbits_threads(threads):

@@ -1,5 +1,5 @@
 """`orbits bench periodic`: periodic orbits of the restricted problem, their corrections timed and their integrations
-counted, with the compiled integrator (orbits.core._fast_cr3bp, one thread) and with the NumPy one.
+counted, with the compiled integrator (orbits.core.periodic._fast_cr3bp, one thread) and with the NumPy one.
 
 Cases: one corrected orbit (the Earth-Moon L2 southern halo of Az = 20,000 km, continued from its first member near
 L2 to that amplitude) and a family of `members` orbits (the Earth-Moon L2 southern halo family from that first
@@ -47,7 +47,7 @@ def _closure(orbit) -> float:
 def _one_orbit(system):
     import astropy.units as u
 
-    from orbits.periodic import PeriodicOrbit
+    from orbits.periodic.family import PeriodicOrbit
 
     def run():
         orbit = PeriodicOrbit.halo(system, "L2", az=20_000 * u.km, branch="southern")
@@ -57,7 +57,7 @@ def _one_orbit(system):
 
 
 def _family(system, members):
-    from orbits.periodic import PeriodicFamily
+    from orbits.periodic.family import PeriodicFamily
 
     def run():
         family = PeriodicFamily.of(system, "nrho", "L2", members=members, resonance="9:2")
@@ -69,7 +69,7 @@ def _family(system, members):
 def bench_periodic(members: int = 100, repeats: int = 3, numpy: bool = True) -> list[PeriodicRow]:
     """Time one corrected orbit and a family of `members` orbits with the compiled integrator and (with `numpy`)
     the NumPy one; best of `repeats` (the NumPy family once)."""
-    from orbits.lagrange import RestrictedThreeBody
+    from orbits.threebody.lagrange import RestrictedThreeBody
 
     system = RestrictedThreeBody.from_primaries("Earth", "Moon")
     cases = [("one orbit: EM L2 halo, Az 20,000 km", _one_orbit(system), False),

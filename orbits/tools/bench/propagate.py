@@ -78,7 +78,7 @@ def _propagation_sets(n, seed):
 
 
 def _conic_states(name, rng, e):
-    from orbits.core.elements import elements_to_state
+    from orbits.core.twobody.elements import elements_to_state
 
     n = e.size
     p = 7e6 * rng.uniform(1, 3, n)
@@ -109,7 +109,7 @@ def _propagation_errors(r, v, refs):
 
 
 def _orbits_propagator(threads):
-    from orbits.core.propagate import propagate
+    from orbits.core.twobody.propagate import propagate
 
     def solve(states):
         with orbits_threads(threads):

@@ -46,7 +46,7 @@ class _States:
 
 
 def _sets(n, seed):
-    from orbits.core.elements import elements_to_state
+    from orbits.core.twobody.elements import elements_to_state
 
     rng = np.random.default_rng(seed)
     third = n // 3
@@ -64,7 +64,7 @@ def _sets(n, seed):
 
 
 def _orbits(threads):
-    from orbits.core.transition import transition_matrix
+    from orbits.core.twobody.transition import transition_matrix
 
     def solve(states):
         with orbits_threads(threads):

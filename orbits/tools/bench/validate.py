@@ -10,8 +10,8 @@ from typing import TYPE_CHECKING
 from orbits.tools.bench.table import GAP, WIDTH, plain_table, wrap
 
 if TYPE_CHECKING:
-    from orbits.scene import Scene
     from orbits.validate.models import ModelScene
+    from orbits.validate.scene import Scene
 
 
 @dataclass(frozen=True)

@@ -1,0 +1,2 @@
+"""Two bodies meeting or bound, on float64 arrays (SI, radians): binaries, flybys and escape.
+"""
