@@ -87,7 +87,7 @@ def command(
     if inc is None and (sky or rv):
         raise typer.BadParameter(f"{'--sky' if sky else '--rv'} needs the inclination to the sky: give --inc "
                                  f"(90: edge-on, 0: face-on)")
-    draw(result, plot, sky, rv, distance)
+    draw(result, plot, sky, rv, distance, with_velocities=inc is not None)
     groups = [("relative_", "relative orbit (star 2 about star 1)"), ("star1_", "star 1 about the centre of mass"),
               ("star2_", "star 2 about the centre of mass")]
     title, about = f"Binary of {m1} and {m2}", None
@@ -101,16 +101,16 @@ def command(
     render.emit(title, result.quantities(inputs.names(only)), fmt.value, groups=groups, about=about)
 
 
-def draw(result: "Binary", plot: str | None, sky: str | None, rv: str | None, distance: str | None) -> None:
-    """The pictures asked for: the orbits about the centre of mass, the sky, the radial velocities."""
+def draw(result: "Binary", plot: str | None, sky: str | None, rv: str | None, distance: str | None,
+         with_velocities: bool) -> None:
+    """The pictures asked for: the orbits about the centre of mass (beside the radial velocities when the
+    inclination is known), the sky, the radial velocities."""
     from orbits._common.inputs import parse_quantity
 
     if distance is not None and sky is None:
         raise typer.BadParameter("--distance sets the scale of --sky: give --sky FILE too")
     if plot:
-        from orbits.plot import binary_plane
-
-        save_plot(lambda: binary_plane(result), plot)
+        save_plot(lambda: _plane_and_velocities(result, with_velocities), plot)
     if sky:
         from orbits.plot import binary_sky
 
@@ -120,6 +120,21 @@ def draw(result: "Binary", plot: str | None, sky: str | None, rv: str | None, di
         from orbits.plot import radial_velocity_curves
 
         save_plot(lambda: radial_velocity_curves(result), rv)
+
+
+def _plane_and_velocities(result: "Binary", with_velocities: bool) -> tuple:
+    """The orbits about the centre of mass; with a known inclination, the radial-velocity curves beside them."""
+    from orbits.plot import binary_plane, radial_velocity_curves
+
+    if not with_velocities:
+        return binary_plane(result)
+    import matplotlib.pyplot as plt
+
+    fig, (plane, velocities) = plt.subplots(1, 2, figsize=(16.0, 6.4), layout="constrained",
+                                            gridspec_kw={"width_ratios": (1.0, 1.25)})
+    binary_plane(result, ax=plane)
+    radial_velocity_curves(result, ax=velocities)
+    return fig, (plane, velocities)
 
 
 def spectroscopic(k: str, period: str | None, e: float, m1: str | None, inc: str | None,

@@ -36,12 +36,13 @@ def command(
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
 ) -> None:
-    """Time of flight, range, apex and landing speed of a projectile (XX.iii-v)."""
+    """Time of flight, range, apex and landing speed of a projectile (XX.iii-v). --plot draws its path, beside
+    the same launch without drag when there is drag."""
     from orbits import Projectile
     from orbits._common import inputs
     from orbits_cli import render
 
-    shot = Projectile.launch(
+    shot = vacuum = Projectile.launch(
         inputs.parse_quantity(speed, "speed", "--speed"), inputs.parse_angle(angle, "--angle"),
         inputs.parse_quantity(height, "length", "--height"),
         None if g is None else inputs.parse_quantity(g, "acceleration", "--g"))
@@ -64,7 +65,8 @@ def command(
     if plot:
         from orbits.plot import projectile_paths
 
-        save_plot(lambda: projectile_paths({TITLES[drag]: shot}), plot)
+        compared = {TITLES[drag]: shot} if drag == Drag.none else {TITLES[drag]: shot, TITLES[Drag.none]: vacuum}
+        save_plot(lambda: projectile_paths(compared), plot)  # with drag, beside the same launch without it
     render.emit(f"Projectile, {TITLES[drag]}", shot.quantities(inputs.names(only)), fmt.value)
 
 

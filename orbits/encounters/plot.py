@@ -160,10 +160,17 @@ def binary_plane(binary: Any, ax: Any = None, unit: u.UnitBase | None = None) ->
     unit, scale = frame.length_unit(p / (1 - e), unit)
     x, y = conic_points(p, e, np.inf)
     r_now = p / (1 + e * np.cos(nu)) * np.array([np.cos(nu), np.sin(nu)])
+    small = share2 < SMALL_ORBIT * (1 - share2)  # star 1's orbit under a few pixels: drawn again in an inset
     for k, (share, color) in enumerate(((-share2, "C0"), (1 - share2, "C1"))):
-        ax.plot(share * x * scale, share * y * scale, color=color, lw=1.5, label=f"star {k + 1} ({_mass(binary, k)})")
+        label = f"star {k + 1} ({_mass(binary, k)})"
+        if k == 0 and small:
+            ax.plot([], [], color=color, lw=1.5, label=label + ", enlarged in the inset")  # the legend's entry
+        else:
+            ax.plot(share * x * scale, share * y * scale, color=color, lw=1.5, label=label)
         ax.plot(share * r_now[0] * scale, share * r_now[1] * scale, marker="o", color=color, ls="none",
                 gid=f"star {k + 1} at t0")
+    if small:
+        _star1_inset(ax, binary, x, y, r_now, share2)
     ax.plot(
         [-share2 * r_now[0] * scale, (1 - share2) * r_now[0] * scale],
         [-share2 * r_now[1] * scale, (1 - share2) * r_now[1] * scale],
@@ -179,6 +186,29 @@ def binary_plane(binary: Any, ax: Any = None, unit: u.UnitBase | None = None) ->
     return fig, ax
 
 
+#: star 1's orbit gets an inset when it is smaller than this fraction of star 2's
+SMALL_ORBIT = 0.04
+
+
+def _star1_inset(ax: Any, binary: Any, x: np.ndarray, y: np.ndarray, r_now: np.ndarray, share2: float) -> None:
+    """Star 1's orbit about the centre of mass, too small to see beside star 2's, enlarged in an inset at the
+    centre of the frame with a length scale of its own."""
+    from matplotlib.ticker import MaxNLocator
+
+    size = share2 * float(np.max(np.hypot(x[np.isfinite(x)], y[np.isfinite(y)])))
+    unit, scale = frame.length_unit(size)
+    inset = ax.inset_axes([0.36, 0.36, 0.28, 0.28])
+    inset.plot(-share2 * x * scale, -share2 * y * scale, color="C0", lw=1.5, label=f"star 1 ({_mass(binary, 0)})")
+    inset.plot(-share2 * r_now[0] * scale, -share2 * r_now[1] * scale, marker="o", color="C0", ls="none")
+    inset.plot(0, 0, marker="+", ms=8, color="k", ls="none")
+    inset.set_aspect("equal", adjustable="datalim")
+    inset.tick_params(labelsize="x-small")
+    for axis in (inset.xaxis, inset.yaxis):
+        axis.set_major_locator(MaxNLocator(3, symmetric=True))
+    inset.set_title(f"star 1 [{display.unit_math(unit)}]", fontsize="x-small")
+    inset.grid(alpha=0.3)
+
+
 def _mass(binary: Any, k: int) -> str:
     """Star k's (0 or 1) mass, typeset in its natural unit."""
     return display.quantity_math((binary.mass1, binary.mass2)[k], digits=4)
@@ -187,7 +217,7 @@ def _mass(binary: Any, k: int) -> str:
 def _binary_text(binary: Any) -> str:
     """"1.1 M$_\\odot$ + 0.8 M$_\\odot$, a = 8.5 AU, e = 0.5, P = 20 yr": a binary as a title names it."""
     relative = binary.relative
-    return (f"{_mass(binary, 0)} + {_mass(binary, 1)}, a = {display.quantity_math(relative.semi_major_axis, digits=7)}"
+    return (f"{_mass(binary, 0)} + {_mass(binary, 1)}, a = {display.quantity_math(relative.semi_major_axis, digits=4)}"
             f", e = {display.number(float(relative.e), 4)}, P = {display.quantity_math(binary.period, digits=4)}")
 
 
@@ -282,16 +312,28 @@ def radial_velocity_curves(binary: Any, ax: Any = None, cycles: float = 1.25, sa
     gamma = binary.center_of_mass_velocity[2]
     unit = display.axis_unit(max(k1, k2, np.abs(gamma)))
     text = display.unit_math(unit)
+    small = min(k1, k2) < SMALL_ORBIT * max(k1, k2)  # the lighter star's curve on an axis of its own, at right
     for star, (v, k, color) in enumerate(((v1, k1, "C0"), (v2, k2, "C1"))):
-        ax.plot(phase, v.to_value(unit), color=color, lw=1.5,
-                label=f"star {star + 1} ({_mass(binary, star)}), K = {display.quantity_math(k, digits=4)}")
+        label = f"star {star + 1} ({_mass(binary, star)}), K = {display.quantity_math(k, digits=4)}"
+        if small and k == min(k1, k2):
+            own = display.axis_unit(k)
+            right = ax.twinx()
+            right.plot(phase, (v - gamma).to_value(own), color=color, lw=1.5, label=label)
+            right.set_ylabel(f"star {star + 1}: radial velocity $-$ $\\gamma$ [{display.unit_math(own)}]",
+                             color=color)
+            ax.plot([], [], color=color, lw=1.5, label=label + " (right axis)")  # the legend's entry
+        else:
+            ax.plot(phase, v.to_value(unit), color=color, lw=1.5, label=label)
     ax.axhline(gamma.to_value(unit), color="gray", ls="--", lw=1,
                label=f"systemic velocity $\\gamma$ = {display.quantity_math(gamma, digits=4, unit=unit)}")
     ax.set_xlabel(f"orbital phase from periastron [periods of {display.quantity_math(binary.period, digits=5)}]")
     ax.set_ylabel(f"radial velocity [{text}] (> 0 receding)")
     ax.set_xlim(0, cycles)
     ax.grid(alpha=0.3)
-    frame.legend_beside(ax)
+    if small:  # the right side holds the second axis: the legend goes below
+        frame.legend_outside(ax, columns=1)
+    else:
+        frame.legend_beside(ax)
     inclination = display.quantity_math(binary.relative.inclination, digits=4)
     frame.title(ax, f"Radial velocities of a binary: {_binary_text(binary)}, i = {inclination}\n"
                     f"{display.number(cycles, 3)} periods from periastron")

@@ -3,8 +3,9 @@ three projections, with the primaries to scale and the Lagrange points marked (p
 and the family's stability indices against its Jacobi constant with the bifurcations marked (stability_diagram).
 
 The pictures take an orbits.PeriodicOrbit or orbits.PeriodicFamily and read their properties: the states over one
-period, the amplitudes, the stability indices, the bifurcations. Positions are about the barycentre, x from the
-primary M to the secondary m, z along the binary's spin.
+period, the amplitudes, the stability indices, the bifurcations. Positions are offsets from the orbit's Lagrange
+point (or the secondary, for an orbit about it) in the unit of the orbit's size, x from the primary M to the
+secondary m, z along the binary's spin.
 """
 
 from typing import Any
@@ -48,40 +49,68 @@ def _bodies(system, centre, half):
     return out
 
 
+#: an orbit whose largest |z| is below this fraction of its window is planar: its x-y view alone is drawn
+PLANAR = 1e-9
+
+
+def _reference(orbit) -> tuple[str, np.ndarray]:
+    """(name, rotating-frame position (3,) m) the views measure from: the orbit's Lagrange point, or the
+    secondary for an orbit about it; coordinates about the barycentre read as 0.990 AU to the last digit, offsets
+    from the point as the orbit's own size."""
+    system = orbit.system
+    if orbit.point:
+        k = int(orbit.point[1]) - 1
+        return orbit.point, system.positions.to_value(u.m)[k]
+    r = float(system.separation.to_value(u.m))
+    return display.body_name(system.gm_secondary), np.array([(1.0 - float(system.mu)) * r, 0.0, 0.0])
+
+
 def _draw_views(fig, orbits, colours, labels, title):
-    """The 3-D view and the three projections of `orbits` on four axes of `fig` (a 2 x 2 grid of subplots);
-    returns the axes."""
+    """The 3-D view and the three projections of `orbits` on four axes of `fig` (a 2 x 2 grid of subplots), or the
+    x-y view alone on one axes for planar orbits, in offsets from the orbits' Lagrange point (or the secondary) in
+    the unit of the orbits' size; returns the axes."""
     import matplotlib.patches as mpatches
     from matplotlib.ticker import MaxNLocator
 
-    tracks = _tracks(orbits)
+    name, origin = _reference(orbits[0])
+    tracks = [track - origin for track in _tracks(orbits)]
     centre, half = _window(tracks)
-    unit, scale = frame.length_unit(float(np.max(np.abs(centre))) + half)
+    planar = max(float(np.max(np.abs(track[:, 2]))) for track in tracks) <= PLANAR * half
+    unit, scale = frame.length_unit(half)
+    if half * scale >= 1e4:  # five-digit ticks collide where the 3-D view's axes meet: count in thousands
+        unit, scale = frame.length_unit(half, u.CompositeUnit(1e3, [unit], [1]))
     system = orbits[0].system
-    bodies = _bodies(system, centre, half)
-    points = system.positions.to_value(u.m)
-    axes = [fig.add_subplot(2, 2, 1, projection="3d")] + [fig.add_subplot(2, 2, k) for k in (2, 3, 4)]
+    bodies = [(body, where - origin, radius, colour) for body, where, radius, colour in _bodies(system, centre, half)]
+    points = system.positions.to_value(u.m) - origin
+    if planar:
+        axes = [fig.add_subplot(1, 1, 1)]
+        views = (((0, 1), "the binary's plane (the orbit stays in it)"),)
+    else:
+        axes = [fig.add_subplot(2, 2, 1, projection="3d")] + [fig.add_subplot(2, 2, k) for k in (2, 3, 4)]
+        views = VIEWS
     text = display.unit_math(unit)
-    view = axes[0]
-    for track, colour, label in zip(tracks, colours, labels):
-        view.plot(*(track.T * scale), color=colour, lw=0.8, label=label)
-    for _, where, radius, colour in bodies:
-        if np.all(np.abs(where - centre) <= half + radius):
-            _sphere(view, where * scale, radius * scale, colour)
     inside = [k for k, p in enumerate(points) if np.all(np.abs(p - centre) <= half)]
-    for k in inside:
-        view.plot(*(points[k][:, None] * scale), marker="x", color="C3", ls="none")
-    for limit, c in zip((view.set_xlim3d, view.set_ylim3d, view.set_zlim3d), centre):
-        limit((c - half) * scale, (c + half) * scale)
-    view.set_box_aspect((1, 1, 1), zoom=0.85)  # the labels inside the panel
-    for name, axis in zip(_NAMES, (view.xaxis, view.yaxis, view.zaxis)):
-        axis.set_major_locator(MaxNLocator(3))  # tick labels apart where two axes meet
-        axis.set_label_text(f"{name} [{text}]")
-        axis.labelpad = 22
-    view.set_title("3-D, rotating frame", fontsize="medium")
-    for ax, ((i, j), caption) in zip(axes[1:], VIEWS):
-        for track, colour in zip(tracks, colours):
-            ax.plot(track[:, i] * scale, track[:, j] * scale, color=colour, lw=0.8)
+    if not planar:
+        view = axes[0]
+        for track, colour, label in zip(tracks, colours, labels):
+            view.plot(*(track.T * scale), color=colour, lw=0.8, label=label)
+        for _, where, radius, colour in bodies:
+            if np.all(np.abs(where - centre) <= half + radius):
+                _sphere(view, where * scale, radius * scale, colour)
+        for k in inside:
+            view.plot(*(points[k][:, None] * scale), marker="x", color="C3", ls="none")
+        for limit, c in zip((view.set_xlim3d, view.set_ylim3d, view.set_zlim3d), centre):
+            limit((c - half) * scale, (c + half) * scale)
+        view.set_box_aspect((1, 1, 1), zoom=0.85)  # the labels inside the panel
+        for axis_name, axis in zip(_NAMES, (view.xaxis, view.yaxis, view.zaxis)):
+            axis.set_major_locator(MaxNLocator(3))  # tick labels apart where two axes meet
+            axis.set_label_text(f"{axis_name} [{text}]")
+            axis.labelpad = 22
+        view.set_title(f"3-D, rotating frame, from {name}", fontsize="medium")
+    for ax, ((i, j), caption) in zip(axes[0 if planar else 1:], views):
+        for track, colour, label in zip(tracks, colours, labels):
+            ax.plot(track[:, i] * scale, track[:, j] * scale, color=colour, lw=0.8,
+                    label=label if planar else None)
         for _, where, radius, colour in bodies:
             if not np.all(np.abs(where - centre) <= half + radius):
                 continue  # outside the window (in the projected-out coordinate too): not in front of the orbits
@@ -95,20 +124,23 @@ def _draw_views(fig, orbits, colours, labels, title):
         ax.set_xlim((centre[i] - half) * scale, (centre[i] + half) * scale)
         ax.set_ylim((centre[j] - half) * scale, (centre[j] + half) * scale)
         ax.set_aspect("equal")
-        ax.set_xlabel(f"{_NAMES[i]} [{text}]")
-        ax.set_ylabel(f"{_NAMES[j]} [{text}]")
+        for axis in (ax.xaxis, ax.yaxis):
+            axis.set_major_locator(MaxNLocator(5))  # tick labels apart at any length unit
+        ax.set_xlabel(f"{_NAMES[i]} from {name} [{text}]")
+        ax.set_ylabel(f"{_NAMES[j]} from {name} [{text}]")
         ax.set_title(caption, fontsize="medium")
         ax.grid(alpha=0.3)
         frame.labels_apart(ax, [(", ".join(names), (a * scale, b * scale), dict(fontsize="small"))
                                 for (a, b), names in spots.items()])
     shown = [body for body in bodies if np.all(np.abs(body[1] - centre) <= half + body[2])]
-    names = [f"{name} (to scale, radius {display.quantity_math(radius << u.m, digits=4)})" if radius > 0 else name
-             for name, _, radius, _ in shown]
-    handles = [mpatches.Patch(facecolor=colour, edgecolor="0.4", label=name)
-               for name, (_, _, _, colour) in zip(names, shown)]
-    handles.append(view.plot([], [], marker="x", color="C3", ls="none", label="Lagrange points")[0])
+    names = [f"{body} (to scale, radius {display.quantity_math(radius << u.m, digits=4)})" if radius > 0 else body
+             for body, _, radius, _ in shown]
+    handles = [mpatches.Patch(facecolor=colour, edgecolor="0.4", label=body)
+               for body, (_, _, _, colour) in zip(names, shown)]
+    handles.append(axes[0].plot([], [], marker="x", color="C3", ls="none", label="Lagrange points")[0])
     fig.legend(handles=handles, loc="outside lower center", ncol=3, fontsize="small", frameon=False)
-    frame.labels_apart(view, [(f"L{k + 1}", points[k] * scale, dict(fontsize="small")) for k in inside])
+    if not planar:
+        frame.labels_apart(axes[0], [(f"L{k + 1}", points[k] * scale, dict(fontsize="small")) for k in inside])
     frame.title(fig, title, size="large")
     return axes
 
@@ -136,8 +168,10 @@ def _sphere(ax, centre, radius, colour):
 
 def periodic_orbit(orbit: Any, fig: Any = None) -> tuple[Any, np.ndarray]:
     """An orbits.PeriodicOrbit over one period in the rotating frame: 3-D and the x-y, x-z and y-z projections, the
-    primaries to scale and the Lagrange points within the window marked. Returns (figure, its four axes)."""
-    fig = frame.figure(fig, (12.5, 10.5))
+    primaries to scale and the Lagrange points within the window marked; a planar orbit in its plane alone. Returns
+    (figure, its axes: four, or one for a planar orbit)."""
+    planar = orbit.family == "lyapunov" or orbit.family == "dro"
+    fig = frame.figure(fig, (8.5, 8.0) if planar else (12.5, 10.5))
     title = (f"{orbit.describe()} orbit: T = {display.quantity_math(orbit.period, digits=5)}, "
              f"C = {display.number(orbit.dimensionless_jacobi_constant, 7)} (units of $(n\\,r)^2$)")
     return fig, np.array(_draw_views(fig, [orbit], ["C0"], [orbit.describe()], title))

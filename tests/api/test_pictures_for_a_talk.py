@@ -494,3 +494,54 @@ def test_the_pendulum_title_leaves_no_word_alone():
     text = "Period of a pendulum against its amplitude, in units of its small-angle period"
     first, second = wrapped(text, 75).split("\n")
     assert len(second.split()) > 1 and abs(len(first) - len(second)) < 15
+
+
+# ---- the pictures a reader found wanting, each as it is now ----------------------------------------------------
+
+
+def test_a_planar_periodic_orbit_is_drawn_in_its_plane_alone_in_the_unit_of_its_size():
+    """A Lyapunov orbit never leaves the binary's plane: one panel, not four (two of them flat lines), measured from
+    its point in the unit of its own size (10^3 km for 200,000 km about Sun-Earth L1, not 0.990 AU)."""
+    from orbits import PeriodicOrbit
+
+    orbit = PeriodicOrbit.lyapunov(RestrictedThreeBody.from_primaries("Sun", "Earth"), "L1", ax=200_000 * u.km)
+    fig, panels = pictures.periodic_orbit(orbit)
+    (plane,) = panels
+    assert plane.get_xlabel() == "x from L1 [$10^{3}$ km]" and plane.get_ylabel() == "y from L1 [$10^{3}$ km]"
+    x = plane.get_lines()[0].get_xdata()
+    assert 150 < -float(np.min(x)) < 200 and problems(fig) == []  # Ax = 200,000 km about L1: about -170 in view
+
+
+def test_a_binarys_small_orbit_gets_an_inset_and_its_velocities_an_axis_of_their_own():
+    """The Earth's 4,671 km circle about the Earth-Moon barycentre beside the Moon's 379,700 km one: drawn again
+    in an inset; a Sun-like star's 126 m/s beside its hot Jupiter's 132 km/s: on a right-hand axis in m/s."""
+    from orbits import Binary
+    from orbits_cli.commands.binary import _plane_and_velocities
+
+    fig, ax = pictures.binary_plane(Binary.from_elements("Earth", "Moon", a=384_399 * u.km))
+    (inset,) = ax.child_axes
+    radius = float(np.max(inset.get_lines()[0].get_xdata()))
+    assert inset.get_title() == "star 1 [km]" and radius == pytest.approx(4671, rel=1e-3)
+    assert problems(fig) == []
+    fig, (_, velocities) = _plane_and_velocities(
+        Binary.from_elements("Sun", "Jupiter", period=4.23 * u.d, inc=90 * u.deg), with_velocities=True)
+    (right,) = [other for other in fig.axes if other is not velocities and other.bbox.bounds == velocities.bbox.bounds]
+    assert "[m/s]" in right.get_ylabel() and float(np.max(right.get_lines()[0].get_ydata())) == pytest.approx(
+        125.6, rel=1e-3)
+    assert problems(fig) == []
+
+
+def test_a_projectile_with_drag_is_drawn_beside_the_same_launch_without_it(monkeypatch):
+    from typer.testing import CliRunner
+
+    from orbits_cli.commands import projectile
+    from orbits_cli.main import app
+
+    drawn = []
+    monkeypatch.setattr(projectile, "save_plot", lambda draw, path: drawn.append(draw()))
+    result = CliRunner().invoke(app, ["projectile", "--speed", "20 m/s", "--angle", "45", "--drag", "quadratic",
+                                      "--terminal-speed", "30 m/s", "--plot", "p.png"])
+    assert result.exit_code == 0, result.output
+    fig, ax = drawn[0]
+    assert [line.get_label() for line in ax.get_lines()[:6:3]] == ["quadratic drag", "no drag"]
+    assert problems(fig) == []
