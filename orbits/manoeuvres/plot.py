@@ -51,7 +51,9 @@ def porkchop(p: Any, ax: Any = None) -> tuple[Any, Any]:
     y = p.arrival_dates.tdb.jd - _UNIX_EPOCH_JD
     blank = ~p.valid
     c3 = np.ma.masked_array(p.c3.unmasked.to_value(KM2_PER_S2), blank)
-    v_inf = np.ma.masked_array(p.arrival_v_inf.unmasked.to_value(u.km / u.s), blank)
+    ridge = _ridge(p)  # the transfers through 180 degrees, narrower than a cell: no contour crosses it
+    c3 = np.ma.masked_array(c3.data, blank | ridge)
+    v_inf = np.ma.masked_array(p.arrival_v_inf.unmasked.to_value(u.km / u.s), blank | ridge)
     tof = np.ma.masked_array(p.time_of_flight.unmasked.to_value(u.day), blank)
     c3_lines = ax.contour(x, y, c3, levels=_contour_levels(c3.compressed(), (1.02, 1.1, 1.25, 1.5, 2, 3, 5, 8)),
                           colors="C0", linewidths=1.2)
@@ -73,6 +75,13 @@ def porkchop(p: Any, ax: Any = None) -> tuple[Any, Any]:
     for limits, dates in ((ax.set_xlim, x), (ax.set_ylim, y)):  # a margin round the grid: a marker on its
         reach = 0.06 * max(dates[-1] - dates[0], 1.0)  # edge is drawn whole, off the tick labels
         limits(dates[0] - reach, dates[-1] + reach)
+    if ridge.any():
+        ax.contourf(x, y, ridge.astype(float), levels=[0.5, 1.5], colors=["0.5"], alpha=0.25, zorder=0)
+        import matplotlib.patches as mpatches
+
+        ax.add_patch(mpatches.Rectangle((x[0], y[0]), 0, 0, color="0.5", alpha=0.25,  # the legend's entry
+                                        label="r1, r2 nearly in line: the transfer plane turns steeply and "
+                                              "$C_3$, $v_\\infty$ soar (not contoured)"))
     _mark_minima(ax, p)
     ax.plot([], [], color="C0", label=f"departure $C_3$ [{display.unit_math(KM2_PER_S2)}]")
     ax.plot([], [], color="C3", ls="--", label="arrival $v_\\infty$ [km/s]")
@@ -87,6 +96,27 @@ def porkchop(p: Any, ax: Any = None) -> tuple[Any, Any]:
     for lines, digits, unit in ((c3_lines, 2, ""), (v_lines, 2, ""), (tof_lines, 3, " d")):
         _label_once(ax, lines, lambda level, d=digits, text=unit: display.number_math(level, d) + text, taken, rough)
     return fig, ax
+
+
+#: a transfer whose plane tilts this much more than either body's orbit lies on the ridge of 180-degree transfers
+RIDGE_TILT = np.radians(10.0)
+
+
+def _ridge(p: Any) -> np.ndarray:
+    """The cells of the ridges of transfers through about 180 (or 0) degrees, where r1 and r2 are nearly in line,
+    the plane through them and the Sun turns steeply and C3 soars within less than a cell (contours drawn across
+    it zigzag from cell to cell): the transfer plane (normal along r1 x r2) tilts from the ecliptic by more than
+    RIDGE_TILT beyond the larger of the two bodies' own orbital tilts."""
+    from orbits.manoeuvres.lambert import ECLIPTIC_POLE
+
+    def tilt(normal):
+        normal = normal / np.linalg.norm(normal, axis=-1)[..., None]
+        return np.arccos(np.clip(np.abs(normal @ ECLIPTIC_POLE), 0.0, 1.0))
+
+    own = max(float(np.max(tilt(np.cross(p.r_departure, p.v_departure)))),
+              float(np.max(tilt(np.cross(p.r_target, p.v_target)))))
+    planes = np.cross(p.r_departure[None, :, :], p.r_target[:, None, :])
+    return (tilt(planes) > own + RIDGE_TILT) & p.valid
 
 
 def _rough(c3: np.ma.MaskedArray, x: np.ndarray, y: np.ndarray) -> Any:
@@ -128,8 +158,8 @@ def _mark_minima(ax: Any, p: Any) -> None:
     """The cells of least C3, arrival v_inf and total v_inf, each drawn whole (on the edge of the grid too), with
     its dates, C3 and arrival v_inf in the legend; a red ring round each on the edge of the grid (its sides are
     PorkchopMinimum.edges)."""
-    marks = {"$C_3$": ("*", "C0", 16, p.minimum_c3), "arrival $v_\\infty$": ("D", "C3", 9, p.minimum_arrival_v_inf),
-             "total $v_\\infty$": ("o", "k", 9, p.minimum_total)}
+    marks = {"$C_3$": ("*", "C0", 18, p.minimum_c3), "arrival $v_\\infty$": ("D", "C3", 11, p.minimum_arrival_v_inf),
+             "total $v_\\infty$": ("o", "k", 6, p.minimum_total)}  # largest first: on one cell, each still seen
     ringed = False
     for kind, (marker, color, size, best) in marks.items():
         sides = best.edges
@@ -139,7 +169,7 @@ def _mark_minima(ax: Any, p: Any) -> None:
                  + (f"\n(on the grid's edge: {' and '.join(sides)})" if sides else ""))
         at = (best.launch.tdb.jd - _UNIX_EPOCH_JD, best.arrival.tdb.jd - _UNIX_EPOCH_JD)
         ax.plot(*at, marker=marker, ms=size, color=color, mec="k", mew=0.8, ls="none", label=label, gid="minimum",
-                zorder=5)
+                zorder=5 + len(ax.get_lines()) * 1e-3)
         if sides:
             ring = dict(marker="o", mfc="none", mec="C3", mew=1.6, ls="none")
             ax.plot(*at, ms=size + 8, zorder=5, gid="on the edge", **ring)
@@ -169,7 +199,7 @@ def _label_once(ax: Any, lines: Any, text: Any, taken: list, rough: Any) -> None
             point = tuple(ax.transData.inverted().transform(at))
             if inside.contains(spot.x0, spot.y0) and inside.contains(spot.x1, spot.y1) and not rough(point) and not any(
                     spot.overlaps(other) for other in taken):
-                taken.append(spot.padded(3))
+                taken.append(spot.padded(6))
                 spots.append(point)
                 levels.append(level)
                 break

@@ -255,6 +255,38 @@ def test_the_picture_draws_contours_and_marks_the_minima(chart, tmp_path):
         plt.close(fig)
 
 
+def test_the_ridge_of_180_degree_transfers_is_shaded_and_no_contour_crosses_it(chart):
+    """Along the ridge C3 soars within less than a cell: every ridge cell has r1 and r2 nearly in line (more than
+    150 deg apart, or less than 30), every cell with r1, r2 within 1 deg of opposite is on it, and no
+    contour line has a vertex well inside it; where the three least values fall on one cell, each marker is still
+    seen (largest drawn first)."""
+    import matplotlib.pyplot as plt
+
+    from orbits.manoeuvres import plot as picture
+    from orbits.plot import porkchop
+
+    ridge = picture._ridge(chart)
+    r1, r2 = chart.r_departure[None, :, :], chart.r_target[:, None, :]
+    angle = np.degrees(np.arccos(np.sum(r1 * r2, axis=-1) / np.linalg.norm(r1, axis=-1) / np.linalg.norm(r2, axis=-1)))
+    assert 0 < ridge.sum() < 0.1 * ridge.size and np.all((angle[ridge] > 150) | (angle[ridge] < 30))
+    assert np.all(ridge[(angle > 179) & chart.valid])
+    x = chart.launch_dates.tdb.jd - 2440587.5
+    y = chart.arrival_dates.tdb.jd - 2440587.5
+    fig, ax = porkchop(chart)
+    try:
+        for lines in (c for c in ax.collections if c.get_gid() in ("C3", "arrival v_inf")):
+            for path in lines.get_paths():
+                cols = np.clip(np.searchsorted(x, path.vertices[:, 0]), 0, x.size - 1)
+                rows = np.clip(np.searchsorted(y, path.vertices[:, 1]), 0, y.size - 1)
+                inside = [(r, k) for r, k in zip(rows, cols) if ridge[r, k] and ridge[max(r - 1, 0), k]
+                          and ridge[r, max(k - 1, 0)]]  # a vertex well inside the band, not on its edge
+                assert inside == []
+        sizes = [line.get_markersize() for line in ax.get_lines() if line.get_gid() == "minimum"]
+        assert sizes == sorted(sizes, reverse=True) and len(set(sizes)) == 3
+    finally:
+        plt.close(fig)
+
+
 def test_dates_are_on_the_grid(chart):
     assert chart.launch_dates.scale == "tdb" and chart.launch_dates.size == 16
     steps = np.diff(chart.launch_dates.jd)
