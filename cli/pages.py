@@ -205,7 +205,7 @@ EXAMPLES = {
     "perturb frozen": [
         'orbits perturb frozen --altitude "700 km" --inc 98.19',
         'orbits perturb frozen --altitude "1336 km" --inc 66',
-        'orbits perturb frozen --altitude "700 km" --inc 98.19 --plot frozen.png --plot-revolutions 300',
+        'orbits perturb frozen --altitude "700 km" --inc 98.19 --plot frozen.png  # one apsidal period',
     ],
     "perturb repeat": [
         "orbits perturb repeat --revolutions 127 --days 10 --inc 66.04  # TOPEX/Jason",

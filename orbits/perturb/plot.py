@@ -9,6 +9,7 @@ Each reads what it is given: a record of integrations (orbits.validate.histories
 KozaiHistory or DecayHistory) or a DragDecay, through their attributes; nothing here integrates.
 """
 
+import math
 from typing import Any
 
 import astropy.units as u
@@ -152,13 +153,27 @@ def frozen_eccentricity(history: Any, figure: Any = None) -> tuple[Any, Any]:
     angle = np.linspace(0.0, 2.0 * np.pi, 361)
     ax.plot(centre[0] + np.hypot(*centre) * np.cos(angle), centre[1] + np.hypot(*centre) * np.sin(angle),
             color=THEORY_COLOR, ls="--", lw=1.0, label="closed form: a circular start circles the frozen point")
+    inset = ax.inset_axes([0.37, 0.58, 0.28, 0.2])  # inside the circle, above the star
+    wander = max(float(np.max(np.hypot(xi * scale - centre[0], eta * scale - centre[1])))
+                 for xi, eta in history.frozen.values())
+    zoom = 10.0 ** math.floor(math.log10(max(wander, 1e-12)))  # the inset's unit, in units of 1e-3
     for k, backend in enumerate(history.frozen):
         color, dashes, marker = _style(backend, k)
-        for start, shade, what in ((history.frozen, 1.0, r"at the frozen e and $\omega$"),
-                                   (history.circular, 0.45, "circular")):
-            xi, eta = start[backend]
-            ax.plot(xi * scale, eta * scale, color=color, ls=dashes, lw=1.2, alpha=shade,
-                    label=f"{backend}, started {what} (osculating)")
+        xi, eta = history.circular[backend]
+        ax.plot(xi * scale, eta * scale, color=color, ls=dashes, lw=1.2, alpha=0.45,
+                label=f"{backend}, started circular (mean elements)")
+        xi, eta = history.frozen[backend]
+        ax.plot(xi * scale, eta * scale, color=color, ls=dashes, lw=1.2)  # a point at this scale: see the inset
+        inset.plot((xi * scale - centre[0]) / zoom, (eta * scale - centre[1]) / zoom, color=color, ls=dashes, lw=1.0,
+                   label=f"{backend}, started at the frozen e and $\\omega$ (mean elements): the inset")
+        ax.plot([], [], color=color, ls=dashes, lw=1.2,
+                label=f"{backend}, started at the frozen e and $\\omega$ (mean elements): in the inset")
+    inset.plot(0.0, 0.0, marker="*", ms=9, color=THEORY_COLOR, ls="none")
+    inset.set_aspect("equal", adjustable="datalim")
+    inset.tick_params(labelsize="x-small")
+    power = int(round(math.log10(zoom))) - 3
+    inset.set_title(f"about the frozen point [$10^{{{power}}}$]", fontsize="x-small")
+    inset.grid(alpha=0.3)
     ax.plot(*centre, marker="*", ms=15, color=THEORY_COLOR, ls="none",
             label=f"frozen point: e = {display.number(history.e, 4)} at $\\omega$ = "
                   f"{display.number(history.argp, 4)}$\\degree$")
@@ -167,10 +182,10 @@ def frozen_eccentricity(history: Any, figure: Any = None) -> tuple[Any, Any]:
     ax.set_xlabel(r"$e\,\cos\omega$ [$10^{-3}$], revolution means")
     ax.set_ylabel(r"$e\,\sin\omega$ [$10^{-3}$], revolution means")
     ax.grid(alpha=0.3)
-    figure.suptitle(f"A frozen orbit under J2, J3 and J4: rebound and heyoka\n{history.title}\n(each mean "
-                    f"eccentricity vector circles the frozen point once in {display.number(history.period, 4)} d; "
-                    f"osculating starts\nstand off the closed form by J2's short-period terms, of order J2 R / a = "
-                    f"{display.number_math(history.short_period, 2)})")
+    frame.title(figure, f"A frozen orbit under J2, J3 and J4: rebound and heyoka\n{history.title}\n(a mean "
+                        f"eccentricity vector circles the frozen point once in {display.number(history.period, 4)} d; "
+                        f"each start is set so that its first revolution has the mean elements named, clear of J2's "
+                        f"short-period terms, of order J2 R / a = {display.number_math(history.short_period, 2)})")
     _legend_below(figure, np.array([ax]), columns=1)
     return figure, ax
 

@@ -185,7 +185,9 @@ def frozen_revolutions(design) -> int:
 def frozen_history(design, revolutions: int | None = None, backends=None) -> FrozenHistory:
     """Integrate a frozen design (orbits.perturb.secular.frozen) and a circular orbit of the same size and inclination
     under the body's J2, J3 and J4 with rebound and heyoka for `revolutions` (default: one apsidal period; at most
-    MAX_FROZEN_REVOLUTIONS), and average their eccentricity vectors over each revolution: a FrozenHistory."""
+    MAX_FROZEN_REVOLUTIONS), and average their eccentricity vectors over each revolution: a FrozenHistory. Both
+    start where their first revolution's mean elements are the design's (the frozen e and omega) and the circle's
+    (e = 0): mean elements are what the closed form speaks of (_mean_start)."""
     from orbits.core.errors import OrbitDomainError
 
     primary, a_m = design.primary, design.semi_major_axis.to_value("m")
@@ -197,11 +199,13 @@ def frozen_history(design, revolutions: int | None = None, backends=None) -> Fro
     if revolutions > MAX_FROZEN_REVOLUTIONS:
         raise OrbitDomainError(f"one apsidal period is {needed} revolutions, more than the "
                                f"{MAX_FROZEN_REVOLUTIONS} a picture integrates: ask for at most that many revolutions")
-    starts = [particle(1.0, x, inc, 0.0, argp, -argp) for x in (e, 0.0)]
     harmonics = ZonalHarmonics(primary.j2, primary.j2_radius / a_m, primary.j4 or 0.0, 0, primary.j3)
+    names = _picture_backends(backends, forces=True)
+    starts = [particle(1.0, *_mean_start(np.array([x * math.cos(argp), x * math.sin(argp)]), inc, argp, harmonics,
+                                         names[0])) for x in (e, 0.0)]
     problem = NBodyProblem([1.0, 0.0, 0.0], [np.zeros(3)] + [x[0] for x in starts],
                            [np.zeros(3)] + [x[1] for x in starts], 1, grid(revolutions), forces=(harmonics,))
-    runs = _integrate(_picture_backends(backends, forces=True), problem)
+    runs = _integrate(names, problem)
     vectors = {index: {} for index in (1, 2)}
     for name, run in runs.items():
         for index in (1, 2):
@@ -213,6 +217,27 @@ def frozen_history(design, revolutions: int | None = None, backends=None) -> Fro
              f"{primary.name}, {revolutions} revolutions ({revolutions * 2.0 * math.pi * day:.4g} d)")
     return FrozenHistory(title, vectors[1], vectors[2], e, math.degrees(argp), 2.0 * math.pi / abs(rate) * day,
                          revolutions, primary.j2 * primary.j2_radius / a_m)
+
+
+#: corrections of an osculating start toward a given mean eccentricity vector (each a one-revolution integration)
+MEAN_START_ITERATIONS = 3
+
+
+def _mean_start(target: np.ndarray, inc: float, argp: float, harmonics, backend: str) -> tuple:
+    """(e, inc, node, argp, true anomaly) of the osculating start, at the ascending node, whose first revolution's
+    mean eccentricity vector (e cos omega, e sin omega) is `target`: the short-period terms of J2 (of order
+    J2 R / a) shift the mean from the osculating start, so the start is corrected by that shift, measured by
+    integrating one revolution, MEAN_START_ITERATIONS times (each halves the residual by orders of magnitude)."""
+    start = target.copy()
+    for _ in range(MEAN_START_ITERATIONS):
+        e, w = float(np.hypot(*start)), float(np.arctan2(start[1], start[0])) if start.any() else argp
+        r, v = particle(1.0, e, inc, 0.0, w, -w)
+        problem = NBodyProblem([1.0, 0.0], [np.zeros(3), r], [np.zeros(3), v], 1, grid(1), forces=(harmonics,))
+        series = mean_series(*(getattr(_integrate([backend], problem)[backend], k)
+                               for k in ("times", "positions", "velocities")), 1)
+        start = start + (target - np.array([series.xi[0], series.eta[0]]))
+    e, w = float(np.hypot(*start)), float(np.arctan2(start[1], start[0]))
+    return e, inc, 0.0, w, -w
 
 
 @dataclass(frozen=True, eq=False)
