@@ -27,9 +27,9 @@ def command(
     plot: PlotOption = None,
 ) -> None:
     """Distance from the Sun and the observer, elongation from the Sun (XXI.xi), phase angle, light time and
-    geometric ICRF right ascension and declination of a body at a date (default: now). --plot draws the solar
-    system at that date (the inner planets, or all of them for Jupiter-Pluto) with the body and the line of sight
-    from the observer."""
+    geometric ICRF right ascension and declination of a body at a date (default: now). --plot draws the sky
+    seen from the observer: the body among the Sun and the planets (the inner ones, or all of them for
+    Jupiter-Pluto) on a chart of right ascension and declination, with the ecliptic."""
     from astropy.time import Time
 
     from orbits._common import inputs
@@ -54,5 +54,6 @@ def command(
              "accuracy": seen.accuracy}
     quantities = sighting.quantities(inputs.names(only))
     if plot:
-        save_plot(lambda: pictures.solar_system(when, **drawn, states=heliocentric), plot)
+        save_plot(lambda: pictures.sky_chart(when, body_name, observer, which=drawn["which"],
+                                             source=ephemeris.value, states=heliocentric), plot)
     render.emit(title, quantities, fmt.value, about=about, notes=f"Positions: {seen.provenance}.")

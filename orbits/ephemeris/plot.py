@@ -3,9 +3,10 @@ ephemeris once per body, drawn by orbits.twobody.plot in the ecliptic frame of J
 
 from typing import Any
 
+import astropy.units as u
 import numpy as np
 
-from orbits._common import frame
+from orbits._common import display, frame
 from orbits._common.constants import AU
 from orbits.core import frames
 from orbits.ephemeris import positions as ephemeris
@@ -188,3 +189,64 @@ def _line_of_sight(ax, seer, target, positions, axes_index):
     ax.plot(*(ends[:, i] for i in axes_index), color="0.3", ls="--", lw=1.0, gid="line of sight",
             label=f"line of sight from {seer}")
     frame.legend_beside(ax)
+
+
+def sky_chart(epoch: Any, body: str, observer: str = "Earth", *, which: str | None = None, source: str = "auto",
+              states: dict | None = None, ax: Any = None) -> tuple[Any, Any]:
+    """The sky seen from `observer` at `epoch`: right ascension (hours, growing to the left, as the sky is seen
+    facing south) against declination (deg), geometric ICRF directions, with the ecliptic, the Sun, `body` marked
+    and named with its elongation, and the other planets of solar_system_part(body) (or `which`) where they stand.
+
+    `states` are heliocentric states {name: BodyState} (ephemeris.states(..., "Sun")) of at least `body`,
+    `observer` and the planets drawn, as solar_system_points(which, highlight=body, observer=observer) names them:
+    a caller that has read them passes them in, and nothing is read twice. Returns (figure, axes)."""
+    which = solar_system_part(body) if which is None else which
+    target, seer = ephemeris.point_name(body), ephemeris.point_name(observer)
+    names = [n for n in solar_system_points(which, highlight=body, observer=observer, source=source)
+             if n not in (target, seer)]
+    if states is None:
+        when = ephemeris.epoch(epoch)
+        states = ephemeris.states([target, seer, *names], when, "Sun", source=source)
+    else:
+        when = states[target].epoch
+    here = np.asarray(states[seer].r_si, dtype=float)
+    fig, ax = frame.axes(ax, figsize=(10.0, 5.6))
+    longitude = np.radians(np.linspace(0.0, 360.0, 721))
+    ecliptic = frames.ecliptic_to_equatorial(np.stack([np.cos(longitude), np.sin(longitude), 0 * longitude], -1))
+    hours, dec = _ra_dec(ecliptic)
+    breaks = np.flatnonzero(np.abs(np.diff(hours)) > 12.0) + 1  # no line across the chart where RA wraps
+    for k, (h, d) in enumerate(zip(np.split(hours, breaks), np.split(dec, breaks))):
+        ax.plot(h, d, color="0.55", lw=1.0, ls="--", label="the ecliptic" if k == 0 else "_ecliptic")
+    labels = []
+    sun_h, sun_d = _ra_dec(-here)
+    ax.plot(sun_h, sun_d, marker="o", ms=14, color="#f2c744", mec="0.3", ls="none", label="the Sun")
+    labels.append(("Sun", (float(sun_h), float(sun_d)), dict(fontsize="small")))
+    for name in names:
+        h, d = _ra_dec(np.asarray(states[name].r_si, dtype=float) - here)
+        ax.plot(h, d, marker="o", ms=5, color="0.35", ls="none", label="_planet")
+        labels.append((name, (float(h), float(d)), dict(fontsize="x-small", color="0.3")))
+    seen = ephemeris.sighting(states, target, seer)
+    h, d = _ra_dec(np.asarray(states[target].r_si, dtype=float) - here)
+    elongation = display.quantity_math(seen.elongation.to(u.deg), digits=4)
+    ax.plot(h, d, marker="o", ms=9, color="C3", mec="k", ls="none", label=f"{target}: elongation {elongation}")
+    labels.append((target, (float(h), float(d)), dict(fontsize="medium", fontweight="bold", color="C3")))
+    ax.plot([], [], marker="o", ms=5, color="0.35", ls="none", label="the other planets")
+    ax.set_xlim(24.0, 0.0)
+    ax.set_ylim(-90.0, 90.0)
+    ax.set_xticks(np.arange(24.0, -0.1, -3.0))
+    ax.set_yticks(np.arange(-90.0, 90.1, 30.0))
+    ax.set_xlabel("right ascension [h] (ICRF, geometric)")
+    ax.set_ylabel("declination [deg]")
+    ax.grid(alpha=0.3)
+    frame.legend_outside(ax, columns=2)
+    frame.labels_apart(ax, labels)
+    frame.title(ax, f"The sky from {seer} on {frame.date_text(when)}: {target} among the planets")
+    return fig, ax
+
+
+def _ra_dec(direction: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(right ascension in hours in [0, 24), declination in deg) of ICRF direction(s) (..., 3), any length."""
+    direction = np.asarray(direction, dtype=float)
+    hours = np.degrees(np.arctan2(direction[..., 1], direction[..., 0])) % 360.0 / 15.0
+    dec = np.degrees(np.arctan2(direction[..., 2], np.hypot(direction[..., 0], direction[..., 1])))
+    return hours, dec

@@ -8,7 +8,7 @@ axis with the factor into it, titles wrapped to the room they have, labels besid
 off the data, save):
 
 - twobody.plot: Kepler orbits about their primary (orbit_plane, orbits, which Orbit.plot draws with);
-- ephemeris.plot: the solar system at a date (solar_system);
+- ephemeris.plot: the solar system at a date (solar_system) and the sky seen from a planet (sky_chart);
 - encounters.plot: flybys and binaries (flyby_plane, binary_plane, binary_sky, radial_velocity_curves);
 - cosmology.plot: Friedmann universes (scale_factor_curves, hubble_diagram, distance_curves, cosmology_overview);
 - threebody.plot: the rotating frame of three bodies and rings (lagrange_plane, lagrange_departure,
@@ -45,6 +45,7 @@ _HOMES = {
     "solar_system": "orbits.ephemeris.plot",
     "solar_system_part": "orbits.ephemeris.plot",
     "solar_system_points": "orbits.ephemeris.plot",
+    "sky_chart": "orbits.ephemeris.plot",
     "porkchop": "orbits.manoeuvres.plot",
     "collision_velocities": "orbits.mechanics.plot",
     "damped_motion": "orbits.mechanics.plot",

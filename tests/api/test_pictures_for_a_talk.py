@@ -545,3 +545,26 @@ def test_a_projectile_with_drag_is_drawn_beside_the_same_launch_without_it(monke
     fig, ax = drawn[0]
     assert [line.get_label() for line in ax.get_lines()[:6:3]] == ["quadratic drag", "no drag"]
     assert problems(fig) == []
+
+
+def test_the_sky_chart_puts_the_body_where_the_table_says_and_the_sun_on_the_ecliptic():
+    """`orbits where --plot` draws the sky seen from the observer: the body's marker at the right ascension and
+    declination the table gives (the same states, read once), the Sun on the ecliptic line (its declination there
+    to 1e-3 deg, the ecliptic sampled every half degree), RA growing to the left as the sky is seen."""
+    from orbits.ephemeris import positions
+    from orbits.ephemeris.plot import solar_system_points
+
+    when = positions.epoch("2026-11-25")
+    names = solar_system_points("all", highlight="Jupiter", observer="Earth")
+    states = positions.states(["Jupiter", "Earth", *names], when, "Sun")
+    fig, ax = pictures.sky_chart(when, "Jupiter", "Earth", states=states)
+    seen = positions.sighting(states, "Jupiter", "Earth")
+    (mark,) = [line for line in ax.get_lines() if line.get_label().startswith("Jupiter: elongation")]
+    hours, dec = mark.get_xydata()[0]
+    assert hours == pytest.approx(seen.right_ascension.to_value(u.hourangle), abs=1e-9)
+    assert dec == pytest.approx(seen.declination.to_value(u.deg), abs=1e-9)
+    (sun,) = [line for line in ax.get_lines() if line.get_label() == "the Sun"]
+    ecliptic = np.concatenate([line.get_xydata() for line in ax.get_lines() if "ecliptic" in line.get_label()])
+    near = ecliptic[np.argmin(np.abs(ecliptic[:, 0] - sun.get_xydata()[0, 0]))]
+    assert near[1] == pytest.approx(sun.get_xydata()[0, 1], abs=0.3)  # sampled every 0.5 deg of longitude
+    assert ax.get_xlim() == (24.0, 0.0) and problems(fig) == []

@@ -80,7 +80,7 @@ def test_where_help_offers_only_observers_it_accepts():
 
 
 @pytest.mark.parametrize("body_name", ["Mars", "Saturn", "Moon"])
-def test_where_plots_the_solar_system_at_that_date(tmp_path, body_name):
+def test_where_plots_the_sky_at_that_date(tmp_path, body_name):
     target = tmp_path / f"{body_name}.png"
     result = run("where", body_name, "--epoch", "2026-11-25", "--plot", str(target), "--only", "elongation")
     assert result.exit_code == 0, result.output
