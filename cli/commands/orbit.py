@@ -57,20 +57,20 @@ def command(
     """Every section XXI quantity of an orbit, from elements, a state vector, or a named body; with --at-r the speed,
     U and K at a distance, with --area-between the area swept between two times. A body without an ephemeris
     (Ceres, Vesta, Pallas, Hygiea, Eris) is carried to --epoch from its published orbit by two-body propagation,
-    and the title says how well."""
+    and a note after the table says how well."""
     from orbits._common import inputs
     from orbits_cli import render
 
     if body_name is None and epoch is not None:
         raise typer.BadParameter("--epoch needs a BODY: the osculating orbit of a planet, Pluto or the Moon")
-    about = None
+    about, notes = None, ""
     if body_name is not None and epoch is not None:
-        result, title, about = at_epoch(body_name, epoch, ephemeris.value,
-                                        [mass, primary, a, p, q, e, inc, raan, argp, nu, r])
+        result, title, about, notes = at_epoch(body_name, epoch, ephemeris.value,
+                                               [mass, primary, a, p, q, e, inc, raan, argp, nu, r])
     else:
         result, title = build(body_name, primary, a, p, q, e, inc, raan, argp, nu, r, v, mass)
         if body_name is not None:
-            title, about = published_orbit(body_name)
+            title, about, notes = published_orbit(body_name)
     asked = inputs.names(only)
     extra = course_quantities(result, at_r, area_between)
     quantities = result.quantities(None if asked is None else [n for n in asked if n not in extra])
@@ -80,10 +80,10 @@ def command(
 
         when = None if about is None or "epoch_tdb" not in about else f"{about['epoch_tdb']} TDB"
         save_plot(lambda: orbit_plane(result, epoch=when), plot)
-    render.emit(title, quantities, fmt.value, about=about)
+    render.emit(title, quantities, fmt.value, about=about, notes=notes)
 
 
-def published_orbit(body_name: str) -> "tuple[str, dict[str, str]]":
+def published_orbit(body_name: str) -> "tuple[str, dict[str, str], str]":
     """(title, JSON 'about') of a named body's published orbit: its source, epoch, frame and accuracy."""
     from astropy.time import Time
 
@@ -93,12 +93,13 @@ def published_orbit(body_name: str) -> "tuple[str, dict[str, str]]":
     el = mean_elements(body_name)
     when = Time(el.epoch, format="jd", scale="tdb").iso[:16]
     frame = "ecliptic J2000"
-    title = f"{body(body_name).name}'s orbit at {when} TDB, {frame}; source: {el.source}"
+    title = f"{body(body_name).name}'s orbit at {when} TDB, {frame}"
     about = {"body": body(body_name).name, "epoch_tdb": when, "source": el.source, "frame": frame}
+    notes = f"Source: {el.source}."
     if el.accuracy:
-        title += f"; {el.accuracy}"
+        notes += f" {el.accuracy[0].upper()}{el.accuracy[1:]}."
         about["accuracy"] = el.accuracy
-    return title, about
+    return title, about, notes
 
 
 def course_quantities(orbit: "Orbit", at_r: str | None, area_between: str | None) -> "dict[str, Quantity]":
@@ -122,9 +123,9 @@ def course_quantities(orbit: "Orbit", at_r: str | None, area_between: str | None
     return extra
 
 
-def at_epoch(body_name: str, epoch: str, source: str, others: list) -> "tuple[Orbit, str, dict[str, str]]":
-    """(the body's osculating orbit at `epoch`, title naming the ephemeris that answered and its accuracy, the same
-    for the JSON's "about")."""
+def at_epoch(body_name: str, epoch: str, source: str, others: list) -> "tuple[Orbit, str, dict[str, str], str]":
+    """(the body's osculating orbit at `epoch`, its title, the JSON's "about", and the notes printed after the
+    table: the ephemeris that answered and its accuracy)."""
     from orbits import Orbit, OrbitDomainError, body
     from orbits.ephemeris import positions as ephemeris
 
@@ -137,10 +138,10 @@ def at_epoch(body_name: str, epoch: str, source: str, others: list) -> "tuple[Or
     seen = ephemeris.state(named.name, when, named.parent, source=source)
     orbit = Orbit.from_state(seen)
     title = (f"Osculating orbit of {seen.point} about the {seen.center_point}, {ephemeris.tdb_iso(when)} TDB, "
-             f"ecliptic J2000; {seen.provenance}")
+             f"ecliptic J2000")
     about = {"body": seen.point, "center": seen.center_point, "epoch_tdb": ephemeris.tdb_iso(when),
              "source": seen.source, "accuracy": seen.accuracy, "frame": "ecliptic J2000"}
-    return orbit, title, about
+    return orbit, title, about, f"Positions: {seen.provenance}."
 
 
 def build(

@@ -53,6 +53,7 @@ def command(
 
         save_plot(lambda: porkchop(chart), plot)
     title = (f"{chart.departure} to {chart.target}, launch -> arrival dates (TDB) on a grid of "
-             f"{chart.launch_dates.size} x {chart.arrival_dates.size}; positions: {chart.source}")
+             f"{chart.launch_dates.size} x {chart.arrival_dates.size}")
     title += "".join(f"; {note}" for note in about.values())
-    render.emit(title, quantities, fmt.value, groups=groups, about=about or None)
+    render.emit(title, quantities, fmt.value, groups=groups, about=about or None,
+                notes=f"Positions: {chart.source}.")

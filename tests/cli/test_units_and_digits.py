@@ -74,12 +74,20 @@ def test_a_published_model_is_named_in_its_title():
     assert run("cosmology --model planck18").splitlines()[0].startswith("Planck 2018: flat matter + Lambda")
 
 
-def test_the_answer_comes_first_and_its_source_once_after_it():
-    lines = run("where Mars --epoch 2026-11-25").splitlines()
+@pytest.mark.parametrize(("command", "last_row", "source"), [
+    ("where Mars --epoch 2026-11-25", "declination", "Positions: JPL DE421"),
+    ("orbit Ceres", "time_since_periapsis", "Source: the osculating orbit of JPL Horizons"),
+    ("orbit Mars --epoch 2026-01-01", "time_since_periapsis", "Positions: JPL DE421"),
+    ('porkchop --from EMB --to Mars --step "10 d"', "time_of_flight", "Positions: JPL DE421"),
+])
+def test_the_answer_comes_first_and_its_source_once_after_it(command, last_row, source):
+    """The title names what is answered; where the numbers come from, and how far to trust them, follow the
+    table, once."""
+    lines = run(command).splitlines()
     title = " ".join(lines[:lines.index(next(line for line in lines if not line.strip()))])
-    assert "DE421" not in title and len(title) <= 80
-    after = " ".join(lines[max(k for k, line in enumerate(lines) if "declination" in line) + 1:])
-    assert after.count("DE421") == 1 and after.strip().startswith("Positions:")
+    assert "DE421" not in title and "Horizons" not in title
+    after = " ".join(lines[max(k for k, line in enumerate(lines) if last_row in line) + 1:])
+    assert after.strip().startswith(source) and after.count(source) == 1
 
 
 def test_right_ascension_and_declination_in_hours_and_degrees_minutes_seconds():
