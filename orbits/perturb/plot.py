@@ -269,10 +269,10 @@ def drag_decay(decay: Any, history: Any = None, figure: Any = None) -> tuple[Any
     if history is not None:
         _integrated_decay(panels, decay, history, unit)
     base = table["base_altitude"].to_value(u.km)
-    breakdown = table["breakdown_altitude"].to_value(u.km)
+    breakdown = table["breakdown_altitude"].to_value(u.km) if "breakdown_altitude" in table else -np.inf
     end = max(base, breakdown)
     km = {name: display.quantity_math(table[name], digits=4, unit=u.km)
-          for name in ("altitude", "base_altitude", "breakdown_altitude", "scale_height")}
+          for name in ("altitude", "base_altitude", "breakdown_altitude", "scale_height") if name in table}
     if base >= breakdown:
         ax.axhline(base, color="0.5", ls=":", lw=1.0, label=f"the band's base, {km['base_altitude']}")
     else:

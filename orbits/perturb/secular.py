@@ -441,8 +441,7 @@ class DragDecay(display.Displayed):
     @cached_property
     def end_radius(self) -> float:
         """The radius (m) where the closed form ends: the band's base, or the breakdown radius if higher."""
-        mu, b, rho0, base, height = self._model()
-        return max(base, float(drag.breakdown_radius(mu, b, rho0, base, height, self.a0)))
+        return max(self.base, self._breakdown_radius)
 
     @cached_property
     def lifetime(self) -> u.Quantity:
@@ -450,10 +449,21 @@ class DragDecay(display.Displayed):
         return self.time_to_altitude((self.end_radius - self._radius) * u.m)
 
     @cached_property
-    def breakdown_altitude(self) -> u.Quantity:
-        """Altitude (m) where the decay in one revolution reaches H: there the closed form stops holding."""
+    def _breakdown_radius(self) -> float:
         mu, b, rho0, base, height = self._model()
-        return drag.breakdown_radius(mu, b, rho0, base, height, self.a0) - self._radius << units.M
+        return float(drag.breakdown_radius(mu, b, rho0, base, height, self.a0))
+
+    @cached_property
+    def breakdown_altitude(self) -> u.Quantity:
+        """Altitude (m) where the decay in one revolution reaches H: there the closed form stops holding. Defined
+        only where that happens inside the band: below its base the band's exponential law is no law at all, and
+        an orbit that keeps its decay per revolution under H down to the base has no breakdown altitude (the
+        closed form ends at the base: end_radius). OrbitDomainError then, saying so."""
+        if self._breakdown_radius <= self.base:
+            raise OrbitDomainError(f"no breakdown altitude: the decay per revolution stays under the scale height "
+                                   f"H = {self.scale_height / 1e3:g} km down to the band's base "
+                                   f"({(self.base - self._radius) / 1e3:g} km), where the closed form ends")
+        return self._breakdown_radius - self._radius << units.M
 
     def time_to_altitude(self, altitude: u.Quantity) -> u.Quantity:
         """Time (s) to decay to `altitude` (length), between the band's base and the start."""
@@ -478,17 +488,22 @@ class DragDecay(display.Displayed):
                                 f"lifetime {display.summary(self.lifetime)}", f"about {self.primary}")
 
     def quantities(self, only: Iterable[str] | None = None) -> dict[str, u.Quantity]:
-        """{name: Quantity}: the start, the band, the decay rate, the lifetime and where the closed form ends."""
-        table = {"altitude": (self.a0 - self._radius) * u.m, "base_altitude": (self.base - self._radius) * u.m,
-                 "density_at_base": self.density * units.KG / units.M**3, "scale_height": self.scale_height * u.m,
-                 "decay_rate": self.decay_rate, "decay_per_revolution": self.decay_per_revolution,
-                 "lifetime": self.lifetime, "breakdown_altitude": self.breakdown_altitude,
-                 "accuracy": self.accuracy}
-        names = list(table) if only is None else list(only)
+        """{name: Quantity}: the start, the band, the decay rate, the lifetime and where the closed form ends
+        (breakdown_altitude left out where there is none: the closed form then holds down to the band's base)."""
+        rows = {"altitude": lambda: (self.a0 - self._radius) * u.m,
+                "base_altitude": lambda: (self.base - self._radius) * u.m,
+                "density_at_base": lambda: self.density * units.KG / units.M**3,
+                "scale_height": lambda: self.scale_height * u.m, "decay_rate": lambda: self.decay_rate,
+                "decay_per_revolution": lambda: self.decay_per_revolution, "lifetime": lambda: self.lifetime,
+                "breakdown_altitude": lambda: self.breakdown_altitude, "accuracy": lambda: self.accuracy}
         from orbits._common.tables import check_names
 
-        check_names(names, list(table))
-        return {name: table[name] for name in names}
+        if only is None:
+            names = [n for n in rows if n != "breakdown_altitude" or self._breakdown_radius > self.base]
+        else:
+            names = list(only)
+            check_names(names, list(rows))
+        return {name: rows[name]() for name in names}
 
 
 # ---- a distant third body ---------------------------------------------------------------------------------------

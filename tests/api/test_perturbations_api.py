@@ -66,6 +66,25 @@ def test_drag_decay_runs_through_the_band_below_its_altitude():
     assert per_revolution == pytest.approx(11.1e3, rel=1e-12)  # the decay in a revolution is H there
 
 
+@pytest.mark.parametrize("primary, altitude, ballistic, band", [
+    ("Earth", 400, 0.005, None),  # the breakdown would lie at -98.6 km, below the band's base (350 km)
+    ("Earth", 600, 0.005, None),  # -172.8 km
+    ("Moon", 100, 0.01, (1e-12, 30.0, 50.0)),  # a thin band over the Moon: -223 km
+])
+def test_no_breakdown_altitude_where_the_decay_stays_under_h_down_to_the_base(primary, altitude, ballistic, band):
+    """Where the decay per revolution would reach H only below the band's base (where the band's law is none), the
+    closed form ends at the base: breakdown_altitude is not in the table and, asked for, is refused in one line
+    naming the base; never a negative altitude shown as an answer. The lifetime ends at the base."""
+    extra = {} if band is None else dict(density=band[0] * u.kg / u.m**3, scale_height=band[1] * u.km,
+                                         base_altitude=band[2] * u.km)
+    decay = DragDecay.of(primary, altitude=altitude * u.km, ballistic=ballistic * u.m**2 / u.kg, **extra)
+    assert "breakdown_altitude" not in decay.quantities()
+    with pytest.raises(OrbitDomainError, match="no breakdown altitude: .* down to the band's base"):
+        decay.quantities(["breakdown_altitude"])
+    base = decay.quantities()["base_altitude"]
+    assert decay.altitude_after(decay.lifetime).to_value(u.km) == pytest.approx(base.to_value(u.km), rel=1e-9)
+
+
 @pytest.mark.parametrize("call, message", [
     (lambda: SecularOrbit.of(Orbit.circular("Ceres", 1000 * u.km)), "Ceres has no J2 in the catalogue"),
     (lambda: sun_synchronous("Earth", a=20_000 * u.km, e=0.1), "no sun-synchronous orbit at a = 20000 km, e = 0.1"),
