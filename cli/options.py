@@ -150,6 +150,12 @@ def displays(command: Callable[_P, _R]) -> Callable[..., _R]:
     def wrapper(*args, units=Units.natural, unit=None, digits=7, **kwargs):
         from orbits_cli import render
 
+        if kwargs.get("fmt") == Format.json:  # the JSON is exact SI: a display option would be ignored
+            given = [text for text, on in (("--unit", unit), ("--units si", units != Units.natural),
+                                           (f"--digits {digits}", digits != 7)) if on]
+            if given:
+                raise typer.BadParameter(f"{', '.join(given)}: how a table shows its numbers, and --format json "
+                                         f"gives every value exact, in SI: drop one of them")
         overrides = {}
         for item in unit or []:
             name, sep, value = item.partition("=")

@@ -58,8 +58,9 @@ def command(
     members: Annotated[int | None, typer.Option("--members", min=2, max=1000, help="a table of this many members "
                                                 "of the family, from its first to the requested one (or to its "
                                                 "end)")] = None,
-    spacing: Annotated[Spacing, typer.Option("--spacing", help="family members evenly in arclength along the "
-                                             "family, in period or in Jacobi constant")] = Spacing.arclength,
+    spacing: Annotated[Spacing | None, typer.Option(
+        "--spacing", help="with --members: the members evenly in arclength along the family (the default), in "
+        "period or in Jacobi constant")] = None,
     only: OnlyOption = None,
     fmt: FormatOption = Format.table,
     plot: PlotOption = None,
@@ -72,13 +73,15 @@ def command(
     from orbits._common import inputs
     from orbits.periodic.family import PeriodicFamily, PeriodicOrbit
     from orbits_cli import render
+    if spacing is not None and members is None:
+        raise typer.BadParameter("--spacing spreads the members of a family table: give --members N with it")
     system = three_body(primary, secondary, separation)
     targets = _targets(ax=ax, ay=ay, az=az, period=period, jacobi=jacobi, closest_approach=closest_approach,
                        resonance=resonance)
     chosen_branch = None if branch is None else branch.value
     if members is not None:
         result = PeriodicFamily.of(system, family.value, point, branch=chosen_branch, members=members,
-                                   spacing=spacing.value, **targets)
+                                   spacing=(spacing or Spacing.arclength).value, **targets)
         quantities = result.quantities(inputs.names(only))
         title = f"{result.members[0].describe()} family: {len(result)} members to {result.end}"
         if plot:

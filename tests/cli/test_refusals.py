@@ -93,6 +93,13 @@ TRANSFER = ["lambert", "--r1", "1,0,0 AU", "--r2", "0,1.5,0 AU", "--tof", "200 d
                                                            "[0, 2**50]"),  # 'must be a whole number >= 0'
     (["binary", "--m1", "Sun", "--m2", "Jupiter", "--a", "5.2 AU", "--gamma", "10 km/s"],
      "--gamma, the systemic velocity, shows only in the radial-velocity curves: give --rv FILE too"),
+    (["orbit", "Earth", "--format", "json", "--unit", "period=d"], "--unit: how a table shows its numbers"),
+    (["kepler", "--e", "0.5", "--M", "1", "--format", "json", "--units", "si", "--digits", "4"],
+     "--units si, --digits 4: how a table shows its numbers"),
+    (["periodic", "--primary", "Earth", "--secondary", "Moon", "--family", "halo", "--az", "5000 km", "--spacing",
+      "period"], "--spacing spreads the members of a family table: give --members N with it"),
+    (["periodic", "--primary", "Earth", "--secondary", "Moon", "--family", "dro", "--point", "L1", "--ax",
+      "70000 km"], "the dro family lies about the secondary (no point), not L1"),
 ])
 def test_an_option_that_cannot_apply_is_refused_not_dropped(args, fragment):
     """--retrograde with --normal gave the prograde transfer; --branch left without revolutions and --gamma without
