@@ -37,11 +37,16 @@ def command(
     windows."""
     from orbits import Porkchop
     from orbits._common import inputs
+    from orbits._common.tables import check_names
+    from orbits.manoeuvres.porkchop import QUANTITY_NAMES
     from orbits_cli import render
 
+    asked = inputs.names(only)
+    if asked is not None:
+        check_names(asked, QUANTITY_NAMES)  # before the grid's work, not after it
     chart = Porkchop.between(departure, target, _window(depart, "--depart"), _window(arrive, "--arrive"),
                              inputs.parse_quantity(step, "time", "--step"), source=ephemeris.value)
-    quantities = chart.quantities(inputs.names(only))
+    quantities = chart.quantities(asked)
     if fmt.value != "json":
         quantities = {k: v for k, v in quantities.items() if not k.endswith("_jd_tdb")}
     groups = [(prefix, f"least {best.kind}: {best.launch.tdb.iso[:10]} -> {best.arrival.tdb.iso[:10]}"

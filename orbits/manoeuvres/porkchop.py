@@ -188,6 +188,8 @@ MINIMUM_NAMES = ("c3", "departure_v_inf", "arrival_v_inf", "total_v_inf", "time_
                  "arrival_jd_tdb")
 #: the minima a Porkchop reports, by the prefix of their names in Porkchop.quantities()
 MINIMA = {"min_c3_": "minimum_c3", "min_arrival_v_inf_": "minimum_arrival_v_inf", "min_total_": "minimum_total"}
+#: the names of a Porkchop's quantities: each minimum's, after its prefix
+QUANTITY_NAMES = [prefix + name for prefix in MINIMA for name in MINIMUM_NAMES]
 
 
 @dataclass(frozen=True, eq=False, repr=False)

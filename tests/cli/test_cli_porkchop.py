@@ -68,3 +68,17 @@ def test_a_least_value_on_the_grid_edge_is_flagged_in_the_table_and_the_json():
     data = json.loads(run(*edge, "--format", "json").stdout)
     assert data["about"]["min_c3_edge"].startswith("least C3 on the grid's edge (last launch date)")
     assert "about" not in json.loads(run(*COARSE, "--format", "json").stdout)
+
+
+def test_a_misspelt_row_is_refused_before_the_grid_is_computed(monkeypatch):
+    """--only is checked against the chart's names before any transfer is solved (it was refused after 25 s of a
+    large grid's work); the names checked are the ones the chart gives."""
+    from orbits.manoeuvres.porkchop import QUANTITY_NAMES
+
+    chart = Porkchop.between("Earth", "Mars", ("2026-09-01", "2026-10-01"), ("2027-06-01", "2027-07-01"),
+                             step=15 * u.day)
+    assert list(chart.quantities()) == QUANTITY_NAMES
+    monkeypatch.setattr(Porkchop, "between", classmethod(lambda *a, **k: pytest.fail("the grid was computed")))
+    result = run("--depart", "2026-01-01:2028-09-27", "--arrive", "2026-06-01:2029-02-25", "--only",
+                 "min_c3_cc3")
+    assert result.exit_code == 2 and "unknown quantities ['min_c3_cc3']" in result.output
