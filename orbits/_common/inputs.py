@@ -387,7 +387,10 @@ def angle_in(value: u.Quantity, name: str, low: float, high: float, text: str) -
     below = (si <= low) if text.startswith("(") else (si < low)
     above = (si >= high) if text.endswith(")") else (si > high)
     bad = below | above
-    if np.any(bad):
-        value = float(np.asarray(si)[bad].flat[0])
-        raise OrbitDomainError(f"{name} = {value!r} rad is outside the allowed range {text} rad")
+    if np.any(bad):  # said in the unit the value came in: "inclination i = 200 deg is outside [0, 180] deg"
+        unit = value.unit if isinstance(value, u.Quantity) and value.unit.physical_type == "angle" else u.rad
+        shown = float(np.asarray((si << u.rad).to_value(unit))[bad].flat[0])
+        low_shown, high_shown = ((x * u.rad).to_value(unit) for x in (low, high))
+        raise OrbitDomainError(f"{name} = {shown:.10g} {unit} is outside the allowed range {text[0]}{low_shown:.10g}, "
+                               f"{high_shown:.10g}{text[-1]} {unit}")
     return si

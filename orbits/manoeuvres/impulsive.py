@@ -41,11 +41,7 @@ from orbits.twobody.orbit import PRIMARY, Orbit
 
 def _turn_angle(value, name):
     """An angle (rad) in [0, pi]."""
-    angle = inputs.angle(value, name)
-    if np.any((angle < 0) | (angle > np.pi)):
-        bad, = first_where((angle < 0) | (angle > np.pi), angle)
-        raise OrbitDomainError(f"{name} = {bad!r} rad is outside the allowed range [0, pi] rad (0 to 180 deg)")
-    return angle
+    return inputs.angle_in(value, name, 0.0, np.pi, "[0, pi]")
 
 
 def _shape(*arrays):

@@ -264,11 +264,11 @@ def sun_synchronous(primary: Body | str = "Earth", *, a: u.Quantity | None = Non
         if a is not None or altitude is not None:
             raise TypeError("give a size (a= or altitude=) or inc=, not both")
         ecc = _eccentricity(e, named, None)
-        size = oblateness.sun_synchronous_semi_major_axis(inputs.angle(inc, "inclination i"), ecc, named.gm,
+        size = oblateness.sun_synchronous_semi_major_axis(inputs.inclination(inc), ecc, named.gm,
                                                           named.j2, named.j2_radius, node)
         _within_reach(named, size)
         _eccentricity(e, named, size)
-        angle = inputs.angle(inc, "inclination i")
+        angle = inputs.inclination(inc)
     else:
         size = _size(named, a, altitude)
         ecc = _eccentricity(e, named, size)
@@ -289,14 +289,14 @@ def frozen(primary: Body | str = "Earth", *, a: u.Quantity | None = None, altitu
     from orbits.core.errors import ConvergenceError
 
     try:
-        e = oblateness.frozen_eccentricity(size, inputs.angle(inc, "inclination i"), named.j2, named.j3,
+        e = oblateness.frozen_eccentricity(size, inputs.inclination(inc), named.j2, named.j3,
                                            named.j2_radius, omega)
     except ConvergenceError:
-        raise OrbitDomainError(f"no frozen e found at i = {float(np.degrees(inputs.angle(inc, 'inclination i'))):.10g}"
+        raise OrbitDomainError(f"no frozen e found at i = {float(np.degrees(inputs.inclination(inc))):.10g}"
                                f" deg: this close to the critical inclination (63.43 or 116.57 deg) J2 barely turns "
                                f"the periapsis and the frozen e is no longer small") from None
     _eccentricity(e, named, size)
-    return Design("FrozenOrbit", named, size << units.M, e << u.one, inputs.angle(inc, "inclination i") << units.RAD,
+    return Design("FrozenOrbit", named, size << units.M, e << u.one, inputs.inclination(inc) << units.RAD,
                   {"argument_of_periapsis": omega << units.RAD})
 
 
@@ -311,7 +311,7 @@ def repeat_ground_track(primary: Body | str = "Earth", *, revolutions: int, days
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
             raise OrbitDomainError(f"{name} = {value!r} must be a whole number >= 1")
     ecc = _eccentricity(e, named, None)
-    angle = inputs.angle(inc, "inclination i")
+    angle = inputs.inclination(inc)
     if not abs(math.sin(angle)) > 1e-9:
         raise OrbitDomainError(f"i = {math.degrees(angle):g} deg: an equatorial orbit has no node for its ground "
                                f"track to repeat over; give an inclined orbit")
@@ -550,7 +550,7 @@ class KozaiLidov(display.Displayed):
             raise OrbitDomainError(f"a_out = {outer / 1e3:.6g} km must exceed a = {size / 1e3:.6g} km: the "
                                    f"perturber is distant")
         ecc, ecc_out = _kozai_eccentricity(e, "e", KOZAI_SMALLEST_E), _kozai_eccentricity(e_out, "e_out", 0.0)
-        angle = float(inputs.angle(inc, "inclination i"))
+        angle = float(inputs.inclination(inc))
         triple = cls(size, ecc, angle, float(inputs.angle(argp, "argument of periapsis omega")), mu0, mu3 / mu0,
                      outer, ecc_out)
         triple._require_hierarchical_stability()

@@ -148,7 +148,7 @@ def test_projectile_drag_free_linear_and_quadratic():
     assert set(baseball.quantities()) >= {"range", "apex_height", "time_of_flight", "landing_speed"}
     with pytest.raises(OrbitDomainError, match="no closed-form x"):
         baseball.position_at(1 * u.s)
-    with pytest.raises(OrbitDomainError, match=r"launch angle = .* \[-pi/2, pi/2\] rad"):
+    with pytest.raises(OrbitDomainError, match=r"launch angle = 100 deg is outside the allowed range \[-90, 90\] deg"):
         Projectile.launch(20 * u.m / u.s, 100 * u.deg)
     many = Projectile.launch([10, 20] * u.m / u.s, 30 * u.deg, height=5 * u.m)
     assert many.range.shape == (2,) and many.with_quadratic_drag(30 * u.m / u.s).range.shape == (2,)
@@ -240,7 +240,7 @@ def test_edge_cases_at_the_ends_of_the_ranges():
     from orbits.core.mechanics import oscillations as core_oscillations
     from orbits.core.mechanics import projectile as core_projectile
 
-    with pytest.raises(OrbitDomainError, match=r"incline angle = 1.5707963267948966 rad is outside .* \[0, pi/2\)"):
+    with pytest.raises(OrbitDomainError, match=r"incline angle = 90 deg is outside the allowed range \[0, 90\) deg"):
         RigidBody.thin_hoop(1 * u.kg, 0.5 * u.m).rolling_down(90 * u.deg)
     assert core_projectile.quadratic_drag_flight(10.0, -math.pi / 2, 0.0, 30.0, 9.80665)[0] == 0.0
     assert list(core_oscillations.driven_phase_lag(2.0, 0.0, [1.0, 2.0, 3.0])) == [0.0, math.pi / 2, math.pi]

@@ -45,6 +45,11 @@ def test_verbs(args, shown):
     ("frozen", "--altitude", "700 km", "--inc", "98.19", "--plot", "f.png", "--plot-revolutions", "4001"),
     ("repeat", "--revolutions", "2001", "--days", "137", "--inc", "98", "--plot", "t.png"),
     ("kozai", "--plot", "kozai.png"),  # 2 cycles of Jupiter's pull on a 1 AU orbit: 472,500 revolutions
+    ("kozai", "--inc", "200"),  # an inclination lies in [0, 180] deg on every verb, never read as 160
+    ("kozai", "--inc", "-30"),
+    ("frozen", "--altitude", "700 km", "--inc", "200"),
+    ("rates", "--altitude", "400 km", "--inc", "190"),
+    ("rates", "--altitude", "-100 km"),  # inside the body: refused here as by sun-synchronous
     ("kozai", "--primary", "1 solMass", "--perturber", "1 solMass", "--a-out", "12 AU", "--cycles", "5", "--plot",
      "k.png"),
     ("kozai", "--primary", "1 solMass", "--perturber", "1e-9 solMass", "--a-out", "1.5 AU", "--cycles", "0.1",
@@ -56,6 +61,17 @@ def test_bad_inputs_exit_2_with_one_line(args, tmp_path, monkeypatch):
     assert result.exit_code == 2
     assert result.stderr.count("\n") == 1 and result.stderr.startswith("orbits: error: ")
     assert result.stdout == "" and not list(tmp_path.iterdir())
+
+
+@pytest.mark.parametrize("args, shown", [
+    (("kozai", "--inc", "200"), "inclination i = 200 deg is outside the allowed range [0, 180] deg"),
+    (("kozai", "--inc", "-30"), "inclination i = -30 deg is outside the allowed range [0, 180] deg"),
+    (("frozen", "--altitude", "700 km", "--inc", "200"), "inclination i = 200 deg is outside"),
+    (("sun-synchronous", "--inc", "190"), "inclination i = 190 deg is outside"),
+])
+def test_an_inclination_is_checked_by_the_one_rule_in_the_unit_given(args, shown):
+    result = run("perturb", *args)
+    assert result.exit_code == 2 and shown in result.stderr
 
 
 def test_plots_are_written_where_a_picture_exists(tmp_path):
