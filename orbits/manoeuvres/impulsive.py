@@ -111,6 +111,9 @@ class Hohmann(_Table):
         circle of radius its semi-major axis: the textbook approximation, off by the orbits' eccentricities (Mars's
         distance from the Sun varies by 9 % either side of a) and their mutual inclination (turned only if
         `inclination_change` says so). mu is the primary's GM (the craft's own mass is negligible)."""
+        if body(departure).name == body(target).name:  # as lambert and Porkchop refuse it (transfer_ends)
+            raise OrbitDomainError(f"Hohmann: both ends are {body(departure).name}; a transfer joins two bodies' "
+                                   f"orbits")
         first, second = (mean_elements(name) for name in (departure, target))
         if first.primary != second.primary:
             raise OrbitDomainError(f"{body(departure).name} orbits {first.primary} and {body(target).name} orbits "

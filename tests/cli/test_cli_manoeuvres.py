@@ -75,6 +75,7 @@ def test_tables_fit_80_columns():
     (["transfer", "hohmann", "--radius1", "300 km", "--radius2", "42164 km"], "is inside Earth"),
     (["transfer", "hohmann", "--radius1", "6678", "--radius2", "42164 km"], "has no unit"),
     (["transfer", "phasing", "--radius", "7000 km", "--phase", "300"], "phase = "),
+    (["transfer", "hohmann", "--from", "Earth", "--to", "earth"], "Hohmann: both ends are Earth"),
     (["transfer", "plane-change", "--radius", "7000 km", "--inc", "200"],
      "inclination change = 200 deg is outside the allowed range [0, 180] deg"),
     (["rocket", "--m0", "1 t", "--mf", "2 t", "--isp", "300 s"], "final mass mf = 2000.0 kg is outside"),
