@@ -316,8 +316,16 @@ def repeat_ground_track(primary: Body | str = "Earth", *, revolutions: int, days
         raise OrbitDomainError(f"i = {math.degrees(angle):g} deg: an equatorial orbit has no node for its ground "
                                f"track to repeat over; give an inclined orbit")
     spin = 2.0 * math.pi / named.rotation_period * (-1.0 if named.retrograde else 1.0)
-    size = oblateness.repeat_ground_track_semi_major_axis(revolutions, days, ecc, angle, named.gm, named.j2,
-                                                          named.j2_radius, spin)
+    try:
+        with np.errstate(over="raise", invalid="raise", divide="raise"):
+            size = oblateness.repeat_ground_track_semi_major_axis(revolutions, days, ecc, angle, named.gm, named.j2,
+                                                                  named.j2_radius, spin)
+    except FloatingPointError:  # the rates have no root: say why where it is plain (a periapsis inside the body)
+        period = days * named.rotation_period / revolutions  # the nodal period, to J2's share of it
+        _eccentricity(e, named, (named.gm * (period / (2.0 * math.pi)) ** 2) ** (1.0 / 3.0))
+        raise OrbitDomainError(f"no orbit makes {revolutions} revolutions in {days} days at e = {float(ecc):g}, "
+                               f"i = {math.degrees(angle):g} deg about {named.name}: J2's rates have no root "
+                               f"there") from None
     _eccentricity(e, named, size)
     _within_reach(named, size)
     osculating = oblateness.osculating_semi_major_axis(size, ecc, angle, 0.0, 0.0, named.j2, named.j2_radius)

@@ -68,8 +68,11 @@ def test_bad_inputs_exit_2_with_one_line(args, tmp_path, monkeypatch):
     (("kozai", "--inc", "-30"), "inclination i = -30 deg is outside the allowed range [0, 180] deg"),
     (("frozen", "--altitude", "700 km", "--inc", "200"), "inclination i = 200 deg is outside"),
     (("sun-synchronous", "--inc", "190"), "inclination i = 190 deg is outside"),
+    (("repeat", "--revolutions", "15", "--days", "1", "--e", "0.99"), "periapsis a (1 - e) = 69.32"),
 ])
-def test_an_inclination_is_checked_by_the_one_rule_in_the_unit_given(args, shown):
+def test_a_domain_error_names_the_quantity(args, shown):
+    """An inclination is checked by the one rule, said in the unit given; a repeat orbit whose periapsis would lie
+    inside the body is said so (its solve overflowed, and the line said only that float64 was left)."""
     result = run("perturb", *args)
     assert result.exit_code == 2 and shown in result.stderr
 
