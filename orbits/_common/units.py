@@ -46,6 +46,28 @@ def _reject_bool(value, name):
         raise TypeError(f"{name} = {value!r} is complex; pass real numbers")
 
 
+#: the most elements one argument, or one broadcast of several, may hold in a call: 2**25 (33.5 million), 268 MB
+#: as one float64 array and a few GB with the temporaries of the heaviest solver; a larger batch is split by its
+#: caller (orbits.tools.distributed runs one in chunks). Checked before anything of that size is made.
+MAX_ELEMENTS = 2**25
+
+
+def check_size(count: int, name: str) -> None:
+    """OrbitDomainError when `count` elements exceed MAX_ELEMENTS, naming what holds them."""
+    if count > MAX_ELEMENTS:
+        from orbits.core.errors import OrbitDomainError
+
+        raise OrbitDomainError(f"{name}: {count:,} elements, more than the {MAX_ELEMENTS:,} one call takes; split "
+                               f"the batch into chunks")
+
+
+def check_broadcast(name: str, *shapes: tuple[int, ...]) -> tuple[int, ...]:
+    """The broadcast of `shapes`, checked against MAX_ELEMENTS before any array of it exists."""
+    shape = np.broadcast_shapes(*shapes)
+    check_size(int(np.prod(shape, dtype=float)), name)
+    return shape
+
+
 #: Conversion factors already computed, {(from unit, to unit): scale}. Quantity.to_value recomputes the
 #: factor on every call; a dictionary lookup here does not.
 _SCALES = {}
@@ -60,6 +82,7 @@ def to_si(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
     to_value.
     """
     _reject_bool(value, name)
+    check_size(int(np.size(value)), name)
     if not isinstance(value, u.Quantity):
         example = _EXAMPLE.get(str(unit), f"value * u.Unit('{unit}')")
         raise TypeError(f"{name} = {value!r} has no unit; pass a Quantity such as {example}")
@@ -90,6 +113,7 @@ def _scale(from_unit, to_unit):
 def to_number(value: float | np.ndarray | u.Quantity, name: str) -> np.ndarray:
     """float64 array of a dimensionless argument (plain number or dimensionless Quantity)."""
     _reject_bool(value, name)
+    check_size(int(np.size(value)), name)
     if isinstance(value, u.Quantity):
         try:
             return np.asarray(value.to_value(u.dimensionless_unscaled), dtype=float)

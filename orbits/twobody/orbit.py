@@ -444,6 +444,7 @@ class Orbit(display.Displayed):
         IllConditionedWarning when that passes 1e-8.
         """
         dt_si = units.to_si(dt, units.S, "time step dt")
+        units.check_broadcast("the orbits times the time steps dt", np.shape(self.mu), np.shape(dt_si))
         r, v = propagate.propagate(*self._state, self.mu, dt_si)
         if not stm:
             return r << units.M, v << units.M_PER_S

@@ -200,3 +200,31 @@ def test_a_broadcast_mismatch_names_the_arguments(call, named):
 def test_a_tiny_position_is_named_for_what_it_is(args, fragment):
     result = CliRunner().invoke(app, args)
     assert result.exit_code == 2 and fragment in result.stderr and len(result.stderr.splitlines()) == 1
+
+
+def test_a_size_no_call_can_hold_is_refused_before_anything_is_made():
+    """A billion-element broadcast (a view of one number: cheap to make, 8 GB to convert or propagate) is refused at
+    the unit boundary, whatever the argument; so is a broadcast of orbits against times larger than one call
+    takes; within the bound the call runs. Each refusal comes at once (nothing of that size was allocated)."""
+    import tracemalloc
+
+    from orbits._common.units import MAX_ELEMENTS
+
+    def huge(value):
+        return np.broadcast_to(value, (10**9,))  # a view of one number
+
+    orbit = Orbit.circular("Earth", 7000 * u.km)
+    tracemalloc.start()
+    for call, what in ((lambda: orbit.propagate(u.Quantity(huge(1.0), u.s, copy=False)), "time step dt"),
+                       (lambda: Orbit.from_elements("Earth", a=u.Quantity(huge(7000.0), u.km, copy=False), e=0.1),
+                        "semi-major axis a"),
+                       (lambda: Orbit.from_elements("Earth", a=7000 * u.km, e=huge(0.1)), "eccentricity"),
+                       (lambda: Orbit.from_elements("Earth", a=np.linspace(7000, 8000, 10**5) * u.km).propagate(
+                           np.linspace(0, 1, 10**5)[:, None] * u.s), "the orbits times the time steps dt")):
+        with pytest.raises(OrbitDomainError, match=f"{what}.*: [0-9,]+ elements, more than the {MAX_ELEMENTS:,}"):
+            call()
+    _, peak = tracemalloc.get_traced_memory()
+    tracemalloc.stop()
+    assert peak < 50e6  # measured 8.0 MB (the 10**5 x 10**5 case builds its orbits): nothing of 10**9 was made
+    r, _ = orbit.propagate(np.zeros(1000) * u.s)
+    assert r.shape == (1000, 3)
