@@ -133,11 +133,12 @@ def _has_data(artist):
     return True
 
 
-def invisible_curves(figure):
+def invisible_curves(figure, drawn=False):
     """Labelled curves and markers that leave no visible mark: all their points outside the view, or a curve
     shrunk below 2 pixels (an orbit too small for the frame it is drawn in). A legend's proxy (a labelled artist
     with no points) stands for marks drawn by others and is not counted."""
-    figure.canvas.draw()
+    if not drawn:  # problems() draws the figure once for every check
+        figure.canvas.draw()
     found = []
     for ax in figure.axes:
         for artist in [*ax.get_lines(), *ax.collections]:
@@ -154,16 +155,18 @@ def _marks(ax):
             if _has_data(a) and _draws_something(ax, a)]
 
 
-def blank_panels(figure):
+def blank_panels(figure, drawn=False):
     """Axes with a frame on and nothing drawn in them: no curve, marker, collection, patch or image."""
-    figure.canvas.draw()
+    if not drawn:  # problems() draws the figure once for every check
+        figure.canvas.draw()
     return [ax.get_title() or ax.get_label() or "an untitled panel" for ax in figure.axes
             if ax.axison and ax.get_label() != "<colorbar>" and not _marks(ax)]
 
 
-def blank_figure(figure):
+def blank_figure(figure, drawn=False):
     """Whether no panel of the figure draws anything (text alone, such as a sentence saying why, is blank)."""
-    figure.canvas.draw()
+    if not drawn:  # problems() draws the figure once for every check
+        figure.canvas.draw()
     return not any(_marks(ax) for ax in figure.axes)
 
 
@@ -171,11 +174,11 @@ def problems(figure):
     """Everything the shared checks find wrong with a picture: overlapping texts, text outside the figure, a
     legend entry twice, no title, untypeset powers, a blank panel or a blank figure, a labelled curve that
     leaves no visible mark (so its legend entry names nothing drawn). Empty for a picture fit for a talk."""
-    found = [f"overlap: {a!r} / {b!r}" for a, b in overlapping_texts(figure)]
-    found += [f"blank panel: {name!r}" for name in blank_panels(figure)]
-    if blank_figure(figure):
+    found = [f"overlap: {a!r} / {b!r}" for a, b in overlapping_texts(figure)]  # draws the figure
+    found += [f"blank panel: {name!r}" for name in blank_panels(figure, drawn=True)]
+    if blank_figure(figure, drawn=True):
         found.append("blank figure: no panel draws anything")
-    found += [f"nothing drawn for {label!r}" for label in invisible_curves(figure)]
+    found += [f"nothing drawn for {label!r}" for label in invisible_curves(figure, drawn=True)]
     labels = legend_labels(figure)
     found += [f"legend entry twice: {label!r}" for label in sorted({x for x in labels if labels.count(x) > 1})]
     if not titles(figure):
