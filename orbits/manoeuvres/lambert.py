@@ -123,10 +123,10 @@ class LambertTransfer(display.Displayed):
 
     @cached_property
     def conditioning(self) -> u.Quantity:
-        """kappa (dimensionless): the shift of the arrival point, as a fraction of |r2|, when r1, v1 and the time of
-        flight move by their float64 rounding (orbits.core.manoeuvres.lambert.arrival_conditioning). v1 reaches r2
-        within a few
-        kappa plus 1e-13; past 1e-8 its digits cannot all be flown, and solving it warned."""
+        """kappa (dimensionless): how far the arrival point may lie from r2, as a fraction of |r2|: the larger of
+        its shift when r1, v1 and the time of flight move by their float64 rounding and the answer's own miss
+        (orbits.core.manoeuvres.lambert.arrival_conditioning). v1 reaches r2 within 20 kappa plus 1e-12; past 1e-8
+        its digits cannot all be flown, and solving it warned."""
         return self.kappa << u.one
 
     @cached_property
@@ -307,8 +307,8 @@ def _warn_if_ill_conditioned(kappa):
                                                 f"{np.size(kappa)} transfers)"
         digits = (f"v1 has about {max(0, int(-np.log10(worst)))} meaningful digits" if np.isfinite(worst) else
                   "a rounding sends the flight through the focus: no digit of v1 means anything")
-        warnings.warn(f"ill-conditioned transfer{which}: float64 rounding alone moves the arrival by up to "
-                      f"{worst:.2g} of |r2|; {digits}", IllConditionedWarning, stacklevel=3)
+        warnings.warn(f"ill-conditioned transfer{which}: float64 rounding, of the inputs or of the answer, moves the "
+                      f"arrival by up to {worst:.2g} of |r2|; {digits}", IllConditionedWarning, stacklevel=3)
 
 
 def transfer_ends(departure: str, target: str, what: str) -> list[str]:

@@ -451,31 +451,48 @@ NUDGE = 2.0**-40
 
 
 def arrival_conditioning(r1: ArrayLike, v1: ArrayLike, r2: ArrayLike, tof: ArrayLike, mu: ArrayLike) -> np.ndarray:
-    """kappa (dimensionless, the batch's shape): how far the arrival point moves, as a fraction of |r2|, when one
-    component of r1 or of v1, or the time of flight, moves by its float64 rounding (2**-53 of itself): the largest
-    such shift, each measured by propagating the nudged state (orbits.core.twobody.propagate) and scaled from a nudge of
-    NUDGE of itself, large enough that the propagator's own rounding (a few kappa) is 1e-3 of the shift; where
-    that nudge leaves the linear range (a shift beyond 1e-4 of |r2|), from a nudge of 2**-52 itself. A rounding
-    of mu moves the arrival by half the v1 and tof terms (the two-body problem is unchanged under mu -> c mu,
-    v -> sqrt(c) v, t -> t / sqrt(c)). kappa is inf where a rounding makes the orbit radial (a flight through the
-    focus). No solver can do better than about kappa; this one is within a few kappa plus 1e-13
+    """kappa (dimensionless, the batch's shape): how far the arrival point of (r1, v1) may lie from r2, as a
+    fraction of |r2|: the larger of the two figures of arrival_rounding, the arrival's shift under the inputs'
+    rounding and the answer's own miss. This solver lands within 20 kappa plus 1e-12 of |r2|
     (tests/stability/test_lambert_sweep.py). kappa beyond ILL_CONDITIONED (orbits.core.errors: a flight the long way
     round a focus it grazes, or many revolutions in little time) says the answer cannot be flown to its digits."""
+    shift, miss = arrival_rounding(r1, v1, r2, tof, mu)
+    return np.maximum(shift, miss)
+
+
+def arrival_rounding(r1: ArrayLike, v1: ArrayLike, r2: ArrayLike, tof: ArrayLike,
+                     mu: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
+    """(shift, miss), dimensionless fractions of |r2| in the batch's shape.
+
+    shift: how far the arrival point moves when one component of r1 or of v1, or the time of flight, moves by its
+    float64 rounding (2**-53 of itself): the largest such shift, each measured by propagating the nudged state
+    (orbits.core.twobody.propagate) and scaled from a nudge of NUDGE of itself, large enough that the propagator's
+    own rounding (a few shifts) is 1e-3 of the shift; where that nudge leaves the linear range (a shift beyond 1e-4
+    of |r2|), from a nudge of 2**-52 itself. A rounding of mu moves the arrival by half the v1 and tof terms (the
+    two-body problem is unchanged under mu -> c mu, v -> sqrt(c) v, t -> t / sqrt(c)). inf where a rounding makes
+    the orbit radial (a flight through the focus). No solver does better than about this shift.
+
+    miss: |r(tof) - r2| / |r2| for v1 as given, from the same propagation (inf with the shift). Where a transfer
+    needs a v1 finer than float64 holds (the long way round in 1e-9 of a period, passing within 1e-20 of the focus),
+    the answer lands far from the point the shift was measured at, and only its own miss says so."""
     r1, v1, r2 = (np.asarray(x, dtype=float) for x in (r1, v1, r2))
     shape = np.broadcast_shapes(r1.shape[:-1], v1.shape[:-1], r2.shape[:-1], np.shape(tof), np.shape(mu))
     start = np.concatenate([np.broadcast_to(r1, (*shape, 3)), np.broadcast_to(v1, (*shape, 3))], axis=-1)
     tof, mu = np.broadcast_to(np.asarray(tof, dtype=float), shape), np.broadcast_to(np.asarray(mu, dtype=float), shape)
-    size = _norm(np.broadcast_to(r2, (*shape, 3)))
-    kappa = _largest_shift(start, tof, mu, NUDGE) / size
-    beyond = kappa * (NUDGE / ROUNDING) > 1e-4
+    end = np.broadcast_to(r2, (*shape, 3))
+    size = _norm(end)
+    shift, arrival = _largest_shift(start, tof, mu, NUDGE)
+    shift = shift / size
+    beyond = shift * (NUDGE / ROUNDING) > 1e-4
     if np.any(beyond):
-        kappa = np.where(beyond, _largest_shift(start, tof, mu, 2.0 * ROUNDING) / size, kappa)
-    return kappa
+        shift = np.where(beyond, _largest_shift(start, tof, mu, 2.0 * ROUNDING)[0] / size, shift)
+    return shift, np.where(np.isinf(shift), np.inf, _norm(arrival - end) / size)
 
 
 def _largest_shift(start, tof, mu, nudge):
     """The largest move of the arrival point (m) when one of r1's, v1's components or tof moves by `nudge` of
-    itself, scaled to a move of ROUNDING: eight propagations a transfer (the solution, six components, the flight)."""
+    itself, scaled to a move of ROUNDING, and the arrival point itself (m): eight propagations a transfer (the
+    solution, six components, the flight)."""
     from orbits.core.twobody.propagate import propagate
 
     factors = np.ones((8, *start.shape))
@@ -487,7 +504,8 @@ def _largest_shift(start, tof, mu, nudge):
     stand_in = np.array([1.0, 0.0, 0.0, 0.0, 1.0, 0.0])
     states = np.where(radial[..., None], stand_in, states)
     ends, _ = propagate(states[..., :3], states[..., 3:], np.where(radial, 1.0, mu), np.where(radial, 1.0, times))
-    return np.where(radial, np.inf, np.max(_norm(ends[1:] - ends[0]), axis=0) * (ROUNDING / nudge))
+    shift = np.where(radial, np.inf, np.max(_norm(ends[1:] - ends[0]), axis=0) * (ROUNDING / nudge))
+    return shift, ends[0]
 
 
 #: the most complete revolutions a transfer may make: 2**50, as many turns as an angle is reduced exactly over
