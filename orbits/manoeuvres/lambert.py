@@ -284,10 +284,38 @@ def lambert(
 
 def _solve(start, end, seconds, mu, revolutions, branch, prograde, direction, departure=None, arrival=None):
     solution = lambert_core.solve(start, end, seconds, mu, revolutions, branch, prograde, direction)
-    fastest = float(np.max(np.linalg.norm(np.stack([solution.v1, solution.v2]), axis=-1), initial=0.0))
-    if fastest >= 0.01 * SPEED_OF_LIGHT:  # (v / c)**2 = 1e-4: a relativistic, not a Newtonian, transfer
+    speeds = _fastest(solution)
+    if np.any(~_newtonian(speeds)):
+        fastest = float(np.max(speeds))
         raise OrbitDomainError(f"the transfer needs {fastest / 1e3:.4g} km/s, {fastest / SPEED_OF_LIGHT:.3g} of the "
                                f"speed of light, where two-body Newtonian gravity no longer holds: a longer flight")
+    return _transfer(solution, start, end, seconds, mu, revolutions, branch, departure, arrival)
+
+
+def newtonian_transfers(start: np.ndarray, end: np.ndarray, seconds: np.ndarray, mu: float,
+                        direction: np.ndarray) -> tuple["LambertTransfer", np.ndarray]:
+    """The zero-revolution transfers of a batch (r1, r2 (n, 3) in m, tof (n,) in s > 0, the side `direction` of the
+    angular momentum) that Newtonian two-body gravity describes, and which of the n they are (a boolean mask): a
+    flight whose speed reaches 1 % of the speed of light (two dates hours apart across the solar system) is left
+    out, where `lambert` refuses the whole batch."""
+    solution = lambert_core.solve(start, end, seconds, mu, 0, "right", True, direction)
+    kept = _newtonian(_fastest(solution))
+    solution = lambert_core.Solution(*(np.asarray(field)[kept] for field in solution))
+    return _transfer(solution, start[kept], end[kept], seconds[kept], mu, 0, "right"), kept
+
+
+def _fastest(solution) -> np.ndarray:
+    """max(|v1|, |v2|) (m/s) of each transfer."""
+    return np.max(np.linalg.norm(np.stack([solution.v1, solution.v2]), axis=-1), axis=0)
+
+
+def _newtonian(speeds: np.ndarray) -> np.ndarray:
+    """Where Newtonian two-body gravity describes a transfer: speeds below 0.01 c, (v / c)**2 < 1e-4."""
+    return speeds < 0.01 * SPEED_OF_LIGHT
+
+
+def _transfer(solution, start, end, seconds, mu, revolutions, branch, departure=None, arrival=None):
+    """The LambertTransfer of a core solution, with its conditioning (and a warning where it is poor)."""
     shape = solution.x.shape
     vector_shape = (*shape, 3)
     r1, r2 = np.broadcast_to(start, vector_shape), np.broadcast_to(end, vector_shape)
@@ -308,7 +336,7 @@ def _warn_if_ill_conditioned(kappa):
         digits = (f"v1 has about {max(0, int(-np.log10(worst)))} meaningful digits" if np.isfinite(worst) else
                   "a rounding sends the flight through the focus: no digit of v1 means anything")
         warnings.warn(f"ill-conditioned transfer{which}: float64 rounding, of the inputs or of the answer, moves the "
-                      f"arrival by up to {worst:.2g} of |r2|; {digits}", IllConditionedWarning, stacklevel=3)
+                      f"arrival by up to {worst:.2g} of |r2|; {digits}", IllConditionedWarning, stacklevel=4)
 
 
 def transfer_ends(departure: str, target: str, what: str) -> list[str]:

@@ -19,9 +19,9 @@ the patched-conic hyperbolic excess energy at launch and speed at arrival (the p
 Positions and velocities are heliocentric ICRF from orbits.ephemeris.positions (JPL DE421, or astropy's built-in
 ephemeris
 without the extra); the frame does not change C3 or v_inf. The Sun's GM is DE430's (Folkner et al. 2014), the mass
-that goes with the ephemeris: orbits.ephemeris.positions.DE430_GM["Sun"]. Cells whose arrival is not after the launch
-are
-invalid: masked in every grid, never a number.
+that goes with the ephemeris: orbits.ephemeris.positions.DE430_GM["Sun"]. Cells whose arrival is not after the launch,
+and cells whose transfer would reach 1 % of the speed of light (dates hours apart: two-body Newtonian gravity no
+longer holds), are invalid: masked in every grid, never a number.
 
 The C3 of NASA's Earth-to-Mars mission design handbook matches departures from the Earth-Moon barycentre ("EMB"
 here), not from the Earth's centre, which moves 12.5 m/s about it: from the Earth C3 differs by up to
@@ -50,7 +50,7 @@ from orbits._common import display, inputs, units
 from orbits._common.tables import quantity_table
 from orbits.core.errors import OrbitDomainError
 from orbits.ephemeris import positions as ephemeris
-from orbits.manoeuvres.lambert import ECLIPTIC_POLE, SUN_GM, lambert, transfer_ends
+from orbits.manoeuvres.lambert import ECLIPTIC_POLE, SUN_GM, newtonian_transfers, transfer_ends
 
 #: the largest grid computed (cells): 4 million cells take about 0.5 GB of float64 arrays
 MAX_CELLS = 4_000_000
@@ -257,8 +257,13 @@ class Porkchop(display.Displayed):
         tof = tof * 86400.0
         valid = tof > 0
         rows, cols = np.nonzero(valid)
-        transfer = lambert(start.r_si[cols] << units.M, end.r_si[rows] << units.M, tof[valid] << units.S,
-                           SUN_GM << units.M3_PER_S2, normal=ECLIPTIC_POLE)
+        transfer, newtonian = newtonian_transfers(start.r_si[cols], end.r_si[rows], tof[valid], SUN_GM,
+                                                  ECLIPTIC_POLE)
+        valid[rows[~newtonian], cols[~newtonian]] = False
+        if not np.any(valid):
+            raise OrbitDomainError("porkchop: every transfer on the grid would need 1 % of the speed of light or "
+                                   "more, where two-body Newtonian gravity no longer holds: give arrival dates "
+                                   "at least a day after the launch dates")
         v1 = np.full(valid.shape + (3,), np.nan)
         v2 = np.full(valid.shape + (3,), np.nan)
         v1[valid], v2[valid] = transfer.v1_si, transfer.v2_si
@@ -309,7 +314,7 @@ class Porkchop(display.Displayed):
 
     @property
     def time_of_flight(self) -> Masked:
-        """Arrival minus launch date (s) on the grid; cells with tof <= 0 masked."""
+        """Arrival minus launch date (s) on the grid; invalid cells masked."""
         return self._grid(self._tof, units.S)
 
     @property

@@ -135,9 +135,22 @@ def _run_adaptive(rebound, problem: NBodyProblem, integrator: str, configure):
 
 def _integrate_to(sim, t: float) -> None:
     """sim.integrate(t, exact_finish_time=1), with Python's Ctrl-C handler back in place after it (rebound installs
-    its own during the call and leaves it behind: orbits.validate.nbody.python_sigint)."""
+    its own during the call and leaves it behind: orbits.validate.nbody.python_sigint). A Ctrl-C that reached
+    rebound's handler after its loop last looked (as the call returns, before Python's handler is back) is only in
+    rebound's flag, which its next call clears: it raises KeyboardInterrupt here."""
     with python_sigint():
         sim.integrate(t, exact_finish_time=1)
+    if _interrupt_flag().value:
+        raise KeyboardInterrupt
+
+
+def _interrupt_flag():
+    """rebound's C flag reb_sigint, set by its SIGINT handler and cleared at the start of every integrate call."""
+    import ctypes
+
+    import rebound
+
+    return ctypes.c_int.in_dll(rebound.clibrebound, "reb_sigint")
 
 
 def _reboundx_effects(sim, problem: NBodyProblem, integrator: str):

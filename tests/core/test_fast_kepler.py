@@ -149,7 +149,33 @@ def test_run_splits_into_contiguous_chunks():
         assert _fast.run(kernel, out.size, out) == out.size
     finally:
         _fast.set_num_threads(previous)
-    assert sorted(seen)[0][0] == 0 and sorted(seen)[-1][1] == out.size and len(seen) == 3 and out.all()
+    assert seen[0] == (0, 0)  # the first call, in the calling thread: it compiles or loads the kernel
+    chunks = sorted(seen[1:])
+    assert chunks[0][0] == 0 and chunks[-1][1] == out.size and len(chunks) == 3 and out.all()
+    assert all(a[1] == b[0] for a, b in zip(chunks, chunks[1:]))
+
+
+def test_run_goes_in_rounds_of_at_most_round_elements_a_thread():
+    """Python runs between rounds, where a Ctrl-C is raised (tests/validation/test_interrupt.py)."""
+    seen = []
+
+    def kernel(start, stop, out):
+        seen.append((start, stop))
+        out[start:stop] += 1.0
+        return 0
+
+    out = np.zeros(7 * _fast.ROUND + 5)
+    for threads in (1, 2):
+        seen.clear()
+        previous = _fast.set_num_threads(threads)
+        try:
+            assert _fast.run(kernel, out.size, out) == 0
+        finally:
+            _fast.set_num_threads(previous)
+        chunks = sorted(c for c in seen if c[0] < c[1])
+        assert max(b - a for a, b in chunks) <= _fast.ROUND and chunks[0][0] == 0 and chunks[-1][1] == out.size
+        assert all(a[1] == b[0] for a, b in zip(chunks, chunks[1:]))
+    np.testing.assert_array_equal(out, 2.0)  # every element once a run
 
 
 def run_python(code, **env):
