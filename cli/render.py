@@ -162,10 +162,10 @@ def column(name: str, q: "Quantity", header: str | None = None, like: "Quantity 
            ) -> tuple[str, list[str]]:
     """(header "name [unit]", one cell per element) of a 1-D quantity, in the display unit of q (or of `like`,
     so that the components of one vector share a unit)."""
-    from orbits._common.display import number, unit_for, unit_text
+    from orbits._common.display import in_unit, number, unit_for, unit_text
 
     unit = unit_for(q if like is None else like, name, DISPLAY.system, DISPLAY.overrides)
-    cells = [number(v, DISPLAY.digits) for v in np.ravel(q.to_value(unit))]
+    cells = [number(v, DISPLAY.digits) for v in np.ravel(in_unit(q, unit, name))]
     header = _label(name) if header is None else header
     return header + (f" [{unit_text(unit, compact=True)}]" if unit_text(unit) else ""), cells
 

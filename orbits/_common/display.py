@@ -246,10 +246,29 @@ def shown(q: u.Quantity, name: str = "", system: str = "natural", overrides: Map
           digits: int = DIGITS, unit: u.UnitBase | None = None) -> tuple[str, str]:
     """(value text, unit text) of a quantity as a table shows it (in `unit` when the table has chosen it)."""
     unit = unit_for(q, name, system, overrides) if unit is None else unit
-    if name in _SEXAGESIMAL and unit == u.deg and np.size(q) <= 4:
+    asked = bool(overrides) and name in overrides  # a unit the reader named is shown as asked, never re-spelt
+    if name in _SEXAGESIMAL and unit == u.deg and np.size(q) <= 4 and not asked:
         texts = [_sexagesimal(float(v), *_SEXAGESIMAL[name]) for v in np.ravel(q.to_value(u.deg))]
         return ", ".join(texts), ""
-    return values_text(q.to_value(unit), digits), unit_text(unit)
+    return values_text(in_unit(q, unit, name), digits), unit_text(unit)
+
+
+def in_unit(q: u.Quantity, unit: u.UnitBase, name: str = "") -> np.ndarray:
+    """The values of q in `unit` (float64) for display, refused (ValueError naming the quantity and the unit) where
+    a finite value other than zero would leave float64's normal range there: inf (365.25 d in 1e-320 s is
+    3.2e327) or a subnormal or zero (1e-300 s in 1e10 s), whose digits are lost."""
+    with np.errstate(over="ignore", under="ignore", invalid="ignore"):
+        values = np.asarray(q.to_value(unit), dtype=float)
+    given = np.asarray(q.value, dtype=float)
+    lost = (np.isfinite(given) & (given != 0)) & ~(np.isfinite(values) & (np.abs(values) >= np.finfo(float).tiny))
+    if np.any(lost):
+        first = np.flatnonzero(np.ravel(lost))[0]
+        value = np.ravel(given)[first] << q.unit
+        label = f"{name} = " if name else ""
+        raise ValueError(f"{label}{quantity_text(value, name)} cannot be shown in {unit_text(unit) or unit}: it would "
+                         f"be {number(np.ravel(values)[first])}, outside float64's range; choose a unit nearer its "
+                         f"size")
+    return values
 
 
 #: angles astronomers write in hours or degrees, minutes and seconds: name -> (in hours, decimals of the seconds)

@@ -81,6 +81,7 @@ def to_si(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
     looked up in _SCALES; units that are not plain scale factors (logarithmic units) go through
     to_value.
     """
+    value = _joined(value, name)
     _reject_bool(value, name)
     check_size(int(np.size(value)), name)
     if not isinstance(value, u.Quantity):
@@ -96,7 +97,38 @@ def to_si(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
             f"({u.Unit(unit).physical_type})"
         ) from None
     array = value.view(np.ndarray)
-    return np.asarray(array if scale == 1.0 else array * scale, dtype=float)
+    if scale == 1.0:
+        return np.asarray(array, dtype=float)
+    with np.errstate(over="ignore"):
+        result = np.asarray(array * scale, dtype=float)
+    _refuse_overflow(array, result, value.unit, unit, name)
+    return result
+
+
+def _refuse_overflow(given, result, from_unit, to_unit, name) -> None:
+    """OrbitDomainError where a finite value became inf in SI: 1e300 AU is 1.5e311 m, beyond float64 (1.8e308)."""
+    beyond = np.isfinite(given) & ~np.isfinite(result)
+    if np.any(beyond):
+        from orbits.core.errors import OrbitDomainError
+
+        first = np.asarray(given, dtype=float).ravel()[np.flatnonzero(beyond)[0]]
+        raise OrbitDomainError(f"{name} = {first:.6g} {from_unit} is beyond float64's range in {to_unit} (at most "
+                               f"{np.finfo(float).max:.4g} {to_unit})")
+
+
+def _joined(value, name):
+    """A list or tuple of Quantities ([1 * u.min, 60 * u.s]) as one Quantity in its first element's unit, as
+    astropy joins them; anything else unchanged. Units that do not convert into one another are a
+    UnitConversionError naming the argument."""
+    if not isinstance(value, (list, tuple)) or not any(isinstance(x, (u.Quantity, list, tuple)) for x in value):
+        return value
+    try:
+        return u.Quantity(value)
+    except u.UnitsError as err:
+        raise u.UnitConversionError(f"{name} is a list whose units do not convert into one another ({err})") from None
+    except (TypeError, ValueError) as err:  # numbers without a unit among Quantities, nested lists
+        raise TypeError(f"{name} is a list that does not join into one Quantity ({err}); pass one Quantity: an "
+                        f"array of numbers times a unit") from None
 
 
 def _scale(from_unit, to_unit):

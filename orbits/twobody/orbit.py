@@ -289,8 +289,9 @@ class Orbit(display.Displayed):
         outside = (r_si < q * (1.0 - APSIS_SLACK)) | (r_si > far * (1.0 + APSIS_SLACK))
         if np.any(outside):
             bad, low, high = first_where(outside, r_si, q, far)
-            raise OrbitDomainError(f"distance r = {bad!r} m is outside [{low!r}, {high!r}] m, from the periapsis "
-                                   f"to the apoapsis of this orbit: the body never gets there")
+            low, high = (display.quantity_text(x << units.M) for x in (low, high))
+            raise OrbitDomainError(f"distance r = {display.quantity_text(bad << units.M)} is outside [{low}, {high}], "
+                                   f"from the periapsis to the apoapsis of this orbit: the body never gets there")
         return twobody.speed_at_radius(r_si, self.p, self.e, self.mu) << units.M_PER_S
 
     # ---- dynamics (XXI.ii-iv) -------------------------------------------------------------------

@@ -35,6 +35,10 @@ def _warnings_are_errors():
         (lambda: Orbit.from_elements("Earth", a=1e-300 * u.km, e=0.1), "|a| = 1e-297 m is outside the range"),
         (lambda: Orbit.from_elements("Earth", a=1e300 * u.km, e=0.1), "overflow or underflow float64"),
         (lambda: Orbit.from_elements("Earth", q=7000 * u.km, e=1e300), "e = 1e+300 is outside [0, 1e+12]"),
+        (lambda: Orbit.from_elements("Earth", a=[1, 1e300] * u.AU, e=0.1),
+         "a = 1e+300 AU is beyond float64's range in m (at most 1.798e+308 m)"),
+        (lambda: Orbit.circular("Earth", radius=7000 * u.km).speed_at(1e300 * u.AU),
+         "distance r = 1e+300 AU is beyond"),
         (lambda: Orbit.from_vectors("Earth", [1e70, 0, 0] * u.m, [0, 1, 0] * u.m / u.s), "|position r| = 1e+70"),
         (lambda: Orbit.from_vectors("Earth", [7e6, np.nan, 0] * u.m, [0, 1, 0] * u.m / u.s), "position r = nan"),
         (lambda: Binary.from_elements(1e300 * u.kg, 1e300 * u.kg, a=1 * u.AU), "mass m1 = 1e+300 kg"),
@@ -228,3 +232,16 @@ def test_a_size_no_call_can_hold_is_refused_before_anything_is_made():
     assert peak < 50e6  # measured 8.0 MB (the 10**5 x 10**5 case builds its orbits): nothing of 10**9 was made
     r, _ = orbit.propagate(np.zeros(1000) * u.s)
     assert r.shape == (1000, 3)
+
+
+def test_a_list_of_quantities_is_one_quantity_and_a_list_that_is_not_says_why():
+    """[1 * u.min, 60 * u.s, 1 / 60 * u.h] is what a notebook writes: joined as astropy joins it (it was a raw
+    TypeError from astropy); units that do not convert, and numbers without a unit among them, are named."""
+    orbit = Orbit.circular("Earth", radius=7000 * u.km)
+    r, _, phi = orbit.propagate([1 * u.min, 60 * u.s, 1 / 60 * u.h], stm=True)
+    assert r.shape == (3, 3) and phi.shape == (3, 6, 6)
+    np.testing.assert_allclose(r.to_value(u.m), np.broadcast_to(r[0].to_value(u.m), (3, 3)), rtol=1e-15)
+    with pytest.raises(u.UnitConversionError, match=r"^time step dt is a list whose units do not convert"):
+        orbit.propagate([1 * u.min, 5 * u.m])
+    with pytest.raises(TypeError, match=r"^time step dt is a list that does not join into one Quantity"):
+        orbit.propagate([1 * u.min, 5])

@@ -50,6 +50,34 @@ def test_a_display_unit_without_a_positive_finite_scale_is_refused(unit, fragmen
     assert len(result.stderr.strip().splitlines()) == 1
 
 
+@pytest.mark.parametrize("args, fragment", [
+    (["orbit", "Earth", "--only", "period", "--unit", "period=1e-320 s"],
+     "period = 365.2583 d cannot be shown in 10^-320 s: it would be inf, outside float64's range"),
+    (["where", "Mars", "--epoch", "2026-11-25", "--only", "light_time", "--unit", "light_time=1e300 Gyr"],
+     "light_time = 10.22819 min cannot be shown in 10^300 Gyr: it would be 0"),
+])
+def test_a_display_unit_that_would_take_a_value_out_of_float64_is_refused(args, fragment):
+    """A unit with a finite scale can still carry a value out of float64: a year in 1e-320 s is 3.2e327 (it was
+    printed as inf), ten minutes in 1e300 Gyr 1.9e-314 (below the normal range: its digits lost; the conversion gives
+    0)."""
+    result = runner.invoke(app, args)
+    assert result.exit_code == 2 and fragment in result.stderr and "outside float64's range" in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+
+
+def test_a_small_value_in_float64s_normal_range_is_shown():
+    assert row(["orbit", "Earth", "--only", "period", "--unit", "period=1e300 s"], "period")[1] == "3.155832e-293"
+
+
+def test_an_asked_unit_for_right_ascension_or_declination_is_shown_as_asked():
+    """Right ascension and declination read in hours or degrees, minutes and seconds unless a unit is asked."""
+    assert row(["where", "Mars", "--epoch", "2026-11-25", "--unit", "right_ascension=deg"],
+               "right_ascension")[2] == "deg"
+    words = row(["where", "Mars", "--epoch", "2026-11-25", "--unit", "declination=arcmin"], "declination")
+    assert words[2] == "arcmin" and 800 < float(words[1]) < 830  # +13d45m is 825 arcmin
+    assert row(["where", "Mars", "--epoch", "2026-11-25"], "right_ascension")[1].startswith("10h08m")
+
+
 def test_the_lagrange_table_shows_e_folding_times_only_when_asked_and_then_for_every_point():
     """--only growth_rate used to add an e-folding column of inf (L1 e-folds in 1.48 d); --only e_folding_time used to
     print the title and no rows."""

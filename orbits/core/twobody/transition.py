@@ -51,9 +51,10 @@ def transition_matrix(r0: ArrayLike, v0: ArrayLike, mu: ArrayLike, dt: ArrayLike
             phi = _transition_numpy(r0, v0, mu, dt)
     if not np.all(np.isfinite(phi)):
         bad = int(np.flatnonzero(~np.all(np.isfinite(phi), axis=(-2, -1)))[0])
-        raise OrbitDomainError(f"the state-transition matrix of the flight from r0 = {r0[bad].tolist()} m, "
-                               f"v0 = {v0[bad].tolist()} m/s over dt = {dt[bad]!r} s leaves float64: the orbit all "
-                               f"but hits the focus, and no digit of it would mean anything")
+        start = ", ".join(f"{x:.6g}" for x in r0[bad]), ", ".join(f"{x:.6g}" for x in v0[bad])
+        raise OrbitDomainError(f"the state-transition matrix of the flight from r0 = [{start[0]}] m, v0 = "
+                               f"[{start[1]}] m/s over dt = {float(dt[bad]):.6g} s leaves float64: its entries grow "
+                               f"with the flight's length and near the focus, beyond 1.8e308 here")
     return phi.reshape(batch + (6, 6))
 
 
