@@ -360,8 +360,10 @@ def _drift_here(name: str, epoch_jd: float, when: Time) -> str:
 
 def provenance(*parts: "BodyState") -> tuple[str, str]:
     """(source, stated accuracy) of what is built from several states (a transfer's two ends, a body seen from
-    another): each propagated body's published orbit and accuracy named once, then the ephemeris of the rest."""
-    propagated, ephemerides, stated = [], [], []
+    another): each propagated body's published orbit and accuracy named once, then the ephemeris of the rest, with
+    the built-in ephemeris's accuracy against DE421 for the parts it gives (DE421 itself states none: it is the
+    reference, read exactly)."""
+    propagated, ephemerides, stated, builtin = [], [], [], []
     for part in parts:
         head, _, rest = part.source.rpartition(_OTHERS)
         if head and head not in propagated:
@@ -370,8 +372,26 @@ def provenance(*parts: "BodyState") -> tuple[str, str]:
             ephemerides.append(rest)
         if part.stated_accuracy and part.stated_accuracy not in stated:
             stated.append(part.stated_accuracy)
+        elif not part.stated_accuracy and part.source == BUILTIN:
+            builtin.append(part)
+    if builtin:
+        stated.append(_builtin_accuracy(builtin))
     named = "; ".join(ephemerides)
     return ("; ".join(propagated) + _OTHERS + named if propagated else named), "; ".join(stated)
+
+
+def _builtin_accuracy(parts: "Sequence[BodyState]") -> str:
+    """How far the built-in ephemeris may put what the states give from DE421: the sum of the worst offsets
+    measured for each body and centre (BUILTIN_ACCURACY_KM, each counted once) over BUILTIN_SPAN, or that it was
+    not measured where an epoch lies outside that span."""
+    years = [2000.0 + (np.asarray(jd1 - 2451545.0) + jd2) / 365.25
+             for jd1, jd2 in (tdb_julian_dates(part.epoch) for part in parts)]
+    if any(np.any((year < BUILTIN_SPAN[0]) | (year > BUILTIN_SPAN[1])) for year in years):
+        return (f"approximate; not measured against DE421 outside {BUILTIN_SPAN[0]}-{BUILTIN_SPAN[1]}, where "
+                f"this epoch lies")
+    points = dict.fromkeys(name for part in parts for name in (part.body, part.center))
+    worst = sum(BUILTIN_ACCURACY_KM.get(name, 0.0) for name in points)
+    return f"approximate: within {worst:,.0f} km of DE421 over {BUILTIN_SPAN[0]}-{BUILTIN_SPAN[1]}"
 
 
 def _relative(read: dict, target: str, origin: str, when: Time, source: str) -> "BodyState":
@@ -464,13 +484,7 @@ class BodyState(display.Displayed):
             return self.stated_accuracy
         if self.source == DE421:
             return "DE421 as read by jplephem (astropy reading the same kernel agrees to 1 mm)"
-        jd1, jd2 = tdb_julian_dates(self.epoch)
-        year = 2000.0 + (np.asarray(jd1 - 2451545.0) + jd2) / 365.25
-        if np.any((year < BUILTIN_SPAN[0]) | (year > BUILTIN_SPAN[1])):
-            return (f"approximate; not measured against DE421 outside {BUILTIN_SPAN[0]}-{BUILTIN_SPAN[1]}, where "
-                    f"this epoch lies")
-        worst = BUILTIN_ACCURACY_KM.get(self.body, 0.0) + BUILTIN_ACCURACY_KM.get(self.center, 0.0)
-        return f"approximate: within {worst:,.0f} km of DE421 over {BUILTIN_SPAN[0]}-{BUILTIN_SPAN[1]}"
+        return _builtin_accuracy([self])
 
     @property
     def provenance(self) -> str:

@@ -267,8 +267,9 @@ class Porkchop(display.Displayed):
         v1 = np.full(valid.shape + (3,), np.nan)
         v2 = np.full(valid.shape + (3,), np.nan)
         v1[valid], v2[valid] = transfer.v1_si, transfer.v2_si
+        source, accuracy = ephemeris.provenance(start, end)
         return cls(names[0], names[1], launches, arrivals, start.r_si, start.v_si, end.r_si, end.v_si, v1, v2,
-                   valid, SUN_GM, ephemeris.provenance(start, end)[0])
+                   valid, SUN_GM, source + (f"; {accuracy}" if accuracy else ""))
 
     @property
     def shape(self) -> tuple[int, int]:

@@ -98,3 +98,16 @@ def test_a_point_quantity_asked_for_some_points_is_shown_for_them_and_dashed_for
     assert rows["L4"][:2] == ["0.4878494", "0.8660254"] and rows["L4"][-1] == "-"
     assert rows["L1"][:4] == ["-"] * 4 and float(rows["L1"][-1]) == pytest.approx(35.5447, rel=1e-5)  # h
     assert "L2_eigenvalues" in result.stdout
+
+
+@pytest.mark.parametrize("args", [
+    ["lambert", "--from", "Earth", "--to", "Mars", "--depart", "2026-11-26", "--arrive", "2027-08-15"],
+    ["porkchop", "--step", "30 d"],
+    ["where", "Mars", "--epoch", "2026-11-25"],
+])
+def test_every_answer_from_the_built_in_ephemeris_states_its_accuracy(args):
+    """The Lambert transfer and the porkchop named the built-in ephemeris but not how far it lies from DE421."""
+    result = runner.invoke(app, [*args, "--ephemeris", "builtin"])
+    assert result.exit_code == 0, result.output
+    text = " ".join(result.stdout.split())
+    assert "astropy built-in" in text and "approximate: within 41,029 km of DE421 over 1900-2050" in text
