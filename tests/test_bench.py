@@ -411,3 +411,26 @@ def test_tables_fit_80_columns_and_cut_nothing(kind):
     missing = [text for text in texts if text and not _shown(text, table)]
     assert not missing, (missing, table)
     assert "..." not in table and "\u2026" not in table
+
+
+@pytest.mark.parametrize("call, fragment", [
+    ("orbits.tools.bench.kepler:bench_kepler", {"n_easy": 10**13}),
+    ("orbits.tools.bench.propagate:bench_propagate", {"n": 10**9}),
+    ("orbits.tools.bench.stm:bench_stm", {"n_ref": 10**7}),
+    ("orbits.tools.bench.lambert:bench_lambert", {"repeats": 0}),
+    ("orbits.tools.bench.ephemeris:bench_ephemeris", {"n": -1}),
+    ("orbits.tools.bench.api:bench_api", {"sizes": [10**8]}),
+    ("orbits.tools.bench.cli:bench_cli", {"runs": 10**6}),
+])
+def test_every_benchmark_refuses_a_size_before_it_allocates(call, fragment):
+    """The command line bounded the sizes; the library functions, which a notebook calls, did not:
+    bench_kepler(n_easy=10**13) set out to allocate 73 TiB. Each is refused at once, naming the argument."""
+    import importlib
+
+    from orbits import OrbitDomainError
+
+    module, name = call.split(":")
+    (argument, value), = fragment.items()
+    argument, value = (f"{argument}[0]", value[0]) if isinstance(value, list) else (argument, value)
+    with pytest.raises(OrbitDomainError, match=rf"^{re.escape(argument)} = {value} is outside \[1, "):
+        getattr(importlib.import_module(module), name)(**fragment)

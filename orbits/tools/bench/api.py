@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from orbits.tools.bench.harness import best_time
+from orbits.tools.bench.harness import best_time, check_sizes
 from orbits.tools.bench.table import WIDTH, fixed, plain_table, wrap
 
 
@@ -68,6 +68,8 @@ def _api_cases(n, rng):
 def bench_api(sizes: Iterable[int] = (1, 100_000, 1_000_000), seed: int = 0, repeats: int = 5) -> list[ApiRow]:
     """Overhead of the unit-aware API (orbits.Orbit) over the float64 core on the same inputs, per call,
     for scalars and arrays of the given sizes. Returns one ApiRow per (case, size)."""
+    sizes = list(sizes)
+    check_sizes(**{f"sizes[{i}]": size for i, size in enumerate(sizes)}, repeats=repeats)
     rows = []
     rng = np.random.default_rng(seed)
     for n in sizes:

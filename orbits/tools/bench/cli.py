@@ -12,6 +12,7 @@ import time
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from orbits.tools.bench.harness import check_sizes
 from orbits.tools.bench.table import plain_table
 
 #: (arguments of `orbits`, target wall time in seconds or None) of bench_cli.
@@ -60,6 +61,7 @@ def bench_cli(runs: int = 10, commands: Sequence[tuple[list[str], float | None]]
     (FIRST_RUN_COMMANDS when neither list is given) timed once with NUMBA_CACHE_DIR a new empty folder (what a
     new user waits for: anything compiled on first use) and once more warm, the target of the first run being
     its own, or its ratio to the warm run times the warm time."""
+    check_sizes(runs=runs)
     rows = []
     floors = [([sys.executable, "-c", f"import {name}"], f"floor: python -c 'import {name}'")
               for name in (FLOOR_IMPORTS if commands is None else [])]

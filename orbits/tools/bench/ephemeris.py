@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from orbits.tools.bench.harness import best_time
+from orbits.tools.bench.harness import best_time, check_sizes
 from orbits.tools.bench.table import WIDTH, mega, plain_table, sig, wrap
 
 #: the DE421 chain of Mars relative to the solar-system barycentre
@@ -83,6 +83,7 @@ def _astropy(when):
 
 def bench_ephemeris(n: int = 100_000, seed: int = 0, repeats: int = 3) -> list[EphemerisRow]:
     """Time orbits, jplephem and astropy on the states of Mars at `n` random TDB epochs 1900-2050."""
+    check_sizes(n=n, repeats=repeats)
     from orbits.ephemeris import positions as ephemeris
 
     if ephemeris.available_source() != "de421":

@@ -40,6 +40,16 @@ def check_count(value: int, name: str, high: int) -> int:
     return int(value)
 
 
+def check_sizes(**counts: int) -> None:
+    """check_count for each size a benchmark is given, by its argument name: `n_ref` against MAX_REFERENCE,
+    `repeats` and `runs` against MAX_REPEATS, every other (n, n_easy, sizes' elements ...) against MAX_SET; called
+    first in every bench_* function, so the library refuses what the command line refuses (bench_kepler(n_easy=
+    10**13) would have asked for 73 TiB)."""
+    limits = {"n_ref": MAX_REFERENCE, "repeats": MAX_REPEATS, "runs": MAX_REPEATS}
+    for name, value in counts.items():
+        check_count(value, name, limits.get(name, MAX_SET))
+
+
 def _as_pair(e, M):
     """Default input preparation: the two arrays as they are."""
     return e, M

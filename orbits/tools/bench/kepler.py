@@ -22,6 +22,7 @@ from orbits.tools.bench.harness import (
     NEWTON_TOL,
     Method,
     best_time,
+    check_sizes,
     cores,
     load_methods,
     machine,
@@ -319,6 +320,7 @@ def bench_kepler(
     one-off conversion of the inputs to the form each library takes.
     Returns one BenchRow per (method, data set), methods in a fixed order.
     """
+    check_sizes(n_easy=n_easy, n_hard=n_hard, n_hyp=n_hyp, n_ref=n_ref, repeats=repeats)
     datasets = _datasets(n_easy, n_hard, n_hyp, seed)
     methods = load_methods(_METHODS)
     rows = []

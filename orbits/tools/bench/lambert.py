@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import mpmath
 import numpy as np
 
-from orbits.tools.bench.harness import orbits_threads
+from orbits.tools.bench.harness import check_sizes, orbits_threads
 from orbits.tools.bench.table import WIDTH, mark, mega, notes, plain_table, sig, wrap
 
 AU = 1.495978707e11
@@ -321,6 +321,7 @@ def bench_lambert(n: int = 1_000_000, n_ref: int = 200, repeats: int = 3, seed: 
     """Rows of the Lambert benchmark (module docstring): every solver installed, on the same data, in one run.
 
     `solvers` selects rows by name (default: all of _SOLVERS)."""
+    check_sizes(n=n, n_ref=n_ref, repeats=repeats)
     data = random_transfers(n, seed)
     cases = hard_cases()
     rows = []

@@ -15,6 +15,7 @@ import numpy as np
 from orbits.tools.bench.harness import (
     Method,
     best_time,
+    check_sizes,
     cores,
     load_methods,
     machine,
@@ -249,6 +250,7 @@ def bench_propagate(n: int = 1_000_000, n_ref: int = 200, seed: int = 0, repeats
     _propagation_sets). Errors are relative to |r| and |v| of the mpmath reference (orbits.tools.reference);
     timings exclude preparing the inputs in the form each library takes.
     Returns one PropagateRow per (method, data set)."""
+    check_sizes(n=n, n_ref=n_ref, repeats=repeats)
     loaded = load_methods(_PROPAGATORS)
     rows = []
     for states in _propagation_sets(n, seed):

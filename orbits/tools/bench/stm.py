@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from orbits.tools.bench.harness import Method, best_time, load_methods, machine, orbits_threads
+from orbits.tools.bench.harness import Method, best_time, check_sizes, load_methods, machine, orbits_threads
 from orbits.tools.bench.table import WIDTH, notes, plain_table, sig, wrap
 
 MU_EARTH = 3.986004418e14
@@ -112,6 +112,7 @@ def _subset(states, n):
 
 def bench_stm(n: int = 100_000, n_ref: int = 20, seed: int = 0, repeats: int = 3) -> list[StmRow]:
     """Time and check every available state-transition matrix on the elliptic and mixed sets."""
+    check_sizes(n=n, n_ref=n_ref, repeats=repeats)
     rows = []
     for states in _sets(n, seed):
         for name, method, skip in load_methods(_METHODS):
