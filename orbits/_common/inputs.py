@@ -11,6 +11,8 @@ The rules on plain float arrays (finiteness, positivity) live one floor down, in
 """
 
 import warnings
+from collections.abc import Callable
+from typing import Any
 
 import astropy.units as u
 import numpy as np
@@ -204,6 +206,21 @@ def gravitational_parameter(value: Body | str | u.Quantity, name: str = "primary
     if isinstance(value, u.Quantity) and value.unit.is_equivalent(units.M3_PER_S2):
         return positive(value, units.M3_PER_S2, name)
     return G * positive(value, units.KG, name)
+
+
+def one(values: np.ndarray, name: str) -> float:
+    """The value of an argument that takes a single one (a number, a 0-d or one-element array) as a float, after
+    its rules were checked; OrbitDomainError naming it and how many were given otherwise (an empty array, a list)."""
+    values = np.asarray(values, dtype=float)
+    if values.size != 1:
+        raise OrbitDomainError(f"{name} takes one value; got {values.size} (shape {values.shape})")
+    return float(values.reshape(()))
+
+
+def single(rule: Callable[..., np.ndarray], value: Any, *arguments: Any) -> float:
+    """rule(value, *arguments) for an argument that takes a single value, whose name is the last of `arguments`:
+    its rules, then `one`. E.g. single(positive, altitude, units.M, "altitude")."""
+    return one(rule(value, *arguments), arguments[-1])
 
 
 def positive(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:

@@ -81,7 +81,7 @@ def to_si(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
     looked up in _SCALES; units that are not plain scale factors (logarithmic units) go through
     to_value.
     """
-    value = _joined(value, name)
+    value = joined(value, name)
     _reject_bool(value, name)
     check_size(int(np.size(value)), name)
     if not isinstance(value, u.Quantity):
@@ -116,7 +116,7 @@ def _refuse_overflow(given, result, from_unit, to_unit, name) -> None:
                                f"{np.finfo(float).max:.4g} {to_unit})")
 
 
-def _joined(value, name):
+def joined(value, name):
     """A list or tuple of Quantities ([1 * u.min, 60 * u.s]) as one Quantity in its first element's unit, as
     astropy joins them; anything else unchanged. Units that do not convert into one another are a
     UnitConversionError naming the argument."""
@@ -144,6 +144,7 @@ def _scale(from_unit, to_unit):
 
 def to_number(value: float | np.ndarray | u.Quantity, name: str) -> np.ndarray:
     """float64 array of a dimensionless argument (plain number or dimensionless Quantity)."""
+    value = joined(value, name)
     _reject_bool(value, name)
     check_size(int(np.size(value)), name)
     if isinstance(value, u.Quantity):

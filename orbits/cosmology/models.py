@@ -60,7 +60,7 @@ def _hubble(value, name="Hubble constant H0"):
 def _densities(Om0, Ol0, Or0, Ok0):
     """(Omega_m, Omega_r, Omega_k, Omega_Lambda) today from those given; see Cosmology.from_densities."""
     given = {"Om0": Om0, "Ol0": Ol0, "Or0": Or0, "Ok0": Ok0}
-    om, ol, orad, ok = (None if v is None else float(units.to_number(v, k)) for k, v in given.items())
+    om, ol, orad, ok = (None if v is None else inputs.single(units.to_number, v, k) for k, v in given.items())
     orad = 0.0 if orad is None else orad
     if om is None and ol is None:
         raise TypeError("give Om0 or Ol0 (or both); Ok0 alone does not fix the model")

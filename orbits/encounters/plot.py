@@ -254,7 +254,7 @@ def binary_sky(binary: Any, ax: Any = None, distance: u.Quantity | None = None,
         r, v = elements.elements_to_state(p, e, inc, raan, argp, np.asarray(nu, dtype=float), mu)
         return r, v
 
-    distance_m = None if distance is None else float(inputs.positive(distance, units.M, "distance"))
+    distance_m = None if distance is None else inputs.single(inputs.positive, distance, units.M, "distance")
     unit, scale = _sky_unit(p / (1 - e), distance_m)
     track, _ = sky(np.linspace(-np.pi, np.pi, samples))
     east, north = track[..., 1] * scale, track[..., 0] * scale

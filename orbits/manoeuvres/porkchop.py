@@ -232,7 +232,7 @@ class Porkchop(display.Displayed):
         grid exceeds MAX_CELLS, or a body is not a planet-like point (UnknownNameError for an unknown name).
         """
         names = transfer_ends(departure, target, "porkchop")
-        step_days = float(inputs.positive(step, units.S, "date step")) / 86400.0
+        step_days = inputs.single(inputs.positive, step, units.S, "date step") / 86400.0
         launch_window, arrival_window = _window(launch, "launch"), _window(arrival, "arrival")
         if arrival_window[1] <= launch_window[0]:
             raise OrbitDomainError(

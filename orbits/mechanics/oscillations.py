@@ -289,9 +289,9 @@ class VerticalCircle(display.Displayed):
         """From R, u (>= 0), g (default 9.80665 m/s2), the mass (for forces) and the support, string or rod."""
         if support not in SUPPORTS:
             raise OrbitDomainError(f"support {support!r} is not one of {', '.join(SUPPORTS)}")
-        r = float(inputs.positive(radius, units.M, "radius R"))
+        r = inputs.single(inputs.positive, radius, units.M, "radius R")
         speed = float(non_negative(bottom_speed, units.M_PER_S, "bottom speed u"))
-        m = None if mass is None else float(inputs.positive(mass, units.KG, "mass m"))
+        m = None if mass is None else inputs.single(inputs.positive, mass, units.KG, "mass m")
         return cls(r, speed, float(gravity(g)), m, support)
 
     @property

@@ -150,20 +150,20 @@ class RigidBody(display.Displayed):
     @classmethod
     def solid_sphere(cls, mass: u.Quantity, radius: u.Quantity) -> "RigidBody":
         """A uniform ball: (2/5) m r**2 about every axis."""
-        r = float(inputs.positive(radius, units.M, "radius r"))
+        r = inputs.single(inputs.positive, radius, units.M, "radius r")
         return cls._standard("solid sphere", mass, core.solid_sphere(units.to_si(mass, units.KG, "mass m"), r), r)
 
     @classmethod
     def spherical_shell(cls, mass: u.Quantity, radius: u.Quantity) -> "RigidBody":
         """A thin spherical shell: (2/3) m r**2."""
-        r = float(inputs.positive(radius, units.M, "radius r"))
+        r = inputs.single(inputs.positive, radius, units.M, "radius r")
         return cls._standard("spherical shell", mass, core.spherical_shell(units.to_si(mass, units.KG, "mass m"), r),
                              r)
 
     @classmethod
     def solid_cylinder(cls, mass: u.Quantity, radius: u.Quantity, height: u.Quantity) -> "RigidBody":
         """A uniform cylinder with its axis along z (height 0: a disc)."""
-        r = float(inputs.positive(radius, units.M, "radius r"))
+        r = inputs.single(inputs.positive, radius, units.M, "radius r")
         h = float(np.asarray(signed(height, units.M, "height h")))
         if h < 0:
             raise OrbitDomainError(f"height h = {h!r} m is outside the allowed range [0, inf) m")
@@ -173,19 +173,20 @@ class RigidBody(display.Displayed):
     @classmethod
     def thin_hoop(cls, mass: u.Quantity, radius: u.Quantity) -> "RigidBody":
         """A thin ring in the xy plane: m r**2 about z, m r**2 / 2 about a diameter."""
-        r = float(inputs.positive(radius, units.M, "radius r"))
+        r = inputs.single(inputs.positive, radius, units.M, "radius r")
         return cls._standard("thin hoop", mass, core.thin_hoop(units.to_si(mass, units.KG, "mass m"), r), r)
 
     @classmethod
     def thin_rod(cls, mass: u.Quantity, length: u.Quantity) -> "RigidBody":
         """A thin rod along z: m L**2 / 12 about a perpendicular axis through its centre."""
-        length_m = float(inputs.positive(length, units.M, "length L"))
+        length_m = inputs.single(inputs.positive, length, units.M, "length L")
         return cls._standard("thin rod", mass, core.thin_rod(units.to_si(mass, units.KG, "mass m"), length_m))
 
     @classmethod
     def cuboid(cls, mass: u.Quantity, a: u.Quantity, b: u.Quantity, c: u.Quantity) -> "RigidBody":
         """A uniform box of edges a, b, c along x, y, z."""
-        edges = [float(inputs.positive(x, units.M, f"edge {n}")) for x, n in ((a, "a"), (b, "b"), (c, "c"))]
+        edges = [inputs.single(inputs.positive, x, units.M, f"edge {n}")
+                 for x, n in ((a, "a"), (b, "b"), (c, "c"))]
         return cls._standard("cuboid", mass, core.cuboid(units.to_si(mass, units.KG, "mass m"), *edges))
 
     @classmethod
@@ -251,7 +252,8 @@ class RigidBody(display.Displayed):
                      g: u.Quantity | None = None) -> "Rolling":
         """Rolling without slipping down an incline (angle in (0, 90) deg) on `radius` (default: the body's)
         about `axis` (default z: a cylinder's or a hoop's axis; any axis of a sphere)."""
-        r = self.radius if radius is None else float(inputs.positive(radius, units.M, "rolling radius r"))
+        name = "rolling radius r"
+        r = self.radius if radius is None else inputs.single(inputs.positive, radius, units.M, name)
         if r is None:
             raise OrbitDomainError(f"a {self.kind} has no rolling radius: give radius=... m")
         moment = float(core.moment_about_axis(self.inertia_cm, _direction(axis, "axis")))

@@ -135,16 +135,17 @@ def _target(binary: _Binary, system: RestrictedThreeBody, name: str, value) -> f
     if name == "resonance":
         return float(resonance_period(system, value).to_value(u.s)) * binary.n
     if name == "period":
-        return float(inputs.positive(value, units.S, "period T")) * binary.n
+        return inputs.single(inputs.positive, value, units.S, "period T") * binary.n
     if name == "jacobi":
+        label = "Jacobi constant C"
         if isinstance(value, u.Quantity) and value.unit.is_equivalent(units.M_PER_S**2):
-            return float(units.to_si(value, units.M_PER_S**2, "Jacobi constant C")) / binary.speed**2
-        number = float(units.to_number(value, "Jacobi constant C"))
+            return inputs.single(units.to_si, value, units.M_PER_S**2, label) / binary.speed**2
+        number = inputs.single(units.to_number, value, label)
         if not math.isfinite(number):
             raise OrbitDomainError(f"Jacobi constant C = {number!r} is not finite")
         return number
     label = "closest approach" if name == "closest_approach" else _LABEL[name]
-    return float(inputs.positive(value, units.M, label)) / binary.r
+    return inputs.single(inputs.positive, value, units.M, label) / binary.r
 
 
 def _family_parts(family: str, point: str | None, branch: str | None):
@@ -363,7 +364,7 @@ class PeriodicOrbit(display.Displayed):
             raise OrbitDomainError(f"nodes = {nodes!r} must be an integer in [2, 64]")
         state = np.concatenate([inputs.vector(r, units.M, "position r") / binary.r,
                                 inputs.vector(v, units.M_PER_S, "velocity v") / binary.speed])
-        t = float(inputs.positive(period, units.S, "period T")) * binary.n
+        t = inputs.single(inputs.positive, period, units.S, "period T") * binary.n
         places = [cr3bp.origin(binary.mu, name) for name in cr3bp.ORIGINS]
         place = min(places, key=lambda p: np.linalg.norm(state[:3] - [p.x, 0.0, 0.0]) / p.scale)
         flow = shooting.Flow(binary.mu, place, shooting.use_compiled(False))

@@ -396,15 +396,15 @@ class DragDecay(display.Displayed):
         """From the altitude of a circular orbit and B = C_D A / m (area / mass); the band's density, scale height
         and base altitude are given (all three) or read from STANDARD_ATMOSPHERE (the Earth's)."""
         named = body(primary) if isinstance(primary, str) else primary
-        h = float(inputs.positive(altitude, units.M, "altitude"))
-        b = float(inputs.positive(ballistic, units.M**2 / units.KG, "ballistic coefficient C_D A / m"))
+        h = inputs.single(inputs.positive, altitude, units.M, "altitude")
+        b = inputs.single(inputs.positive, ballistic, units.M**2 / units.KG, "ballistic coefficient C_D A / m")
         given = [x is not None for x in (density, scale_height, base_altitude)]
         if any(given) and not all(given):
             raise TypeError("give the band's density, scale_height and base_altitude together, or none of them")
         if all(given):
-            band = AtmosphereBand(float(inputs.non_negative(base_altitude, units.M, "base altitude")),
-                                  float(inputs.positive(density, units.KG / units.M**3, "density")),
-                                  float(inputs.positive(scale_height, units.M, "scale height H")))
+            band = AtmosphereBand(inputs.single(inputs.non_negative, base_altitude, units.M, "base altitude"),
+                                  inputs.single(inputs.positive, density, units.KG / units.M**3, "density"),
+                                  inputs.single(inputs.positive, scale_height, units.M, "scale height H"))
         else:
             if named.name != "Earth":
                 raise OrbitDomainError(f"the standard atmosphere is the Earth's; for {named.name} give density, "
@@ -522,7 +522,7 @@ KOZAI_RADIAL = 1e-8
 
 
 def _kozai_eccentricity(value: float, name: str, smallest: float) -> float:
-    e = float(units.to_number(value, f"eccentricity {name}"))
+    e = inputs.single(units.to_number, value, f"eccentricity {name}")
     if not smallest <= e < 1.0:
         raise OrbitDomainError(f"eccentricity {name} = {e!r} is outside [{smallest:g}, 1)")
     return e
@@ -550,16 +550,16 @@ class KozaiLidov(display.Displayed):
            a_out: u.Quantity, inc: u.Quantity, e: float = 0.001, argp: u.Quantity = 90 * u.deg,
            e_out: float = 0.0) -> "KozaiLidov":
         """From the two masses (bodies, masses or GMs), the inner a, e, i, omega and the outer a_out, e_out."""
-        mu0 = float(inputs.gravitational_parameter(inner, "inner mass m0"))
-        mu3 = float(inputs.gravitational_parameter(perturber, "perturber mass m3"))
-        size = float(inputs.positive(a, units.M, "semi-major axis a"))
-        outer = float(inputs.positive(a_out, units.M, "outer semi-major axis a_out"))
+        mu0 = inputs.single(inputs.gravitational_parameter, inner, "inner mass m0")
+        mu3 = inputs.single(inputs.gravitational_parameter, perturber, "perturber mass m3")
+        size = inputs.single(inputs.positive, a, units.M, "semi-major axis a")
+        outer = inputs.single(inputs.positive, a_out, units.M, "outer semi-major axis a_out")
         if not outer > size:
             raise OrbitDomainError(f"a_out = {outer / 1e3:.6g} km must exceed a = {size / 1e3:.6g} km: the "
                                    f"perturber is distant")
         ecc, ecc_out = _kozai_eccentricity(e, "e", KOZAI_SMALLEST_E), _kozai_eccentricity(e_out, "e_out", 0.0)
-        angle = float(inputs.inclination(inc))
-        triple = cls(size, ecc, angle, float(inputs.angle(argp, "argument of periapsis omega")), mu0, mu3 / mu0,
+        angle = inputs.one(inputs.inclination(inc), "inclination i")
+        triple = cls(size, ecc, angle, inputs.single(inputs.angle, argp, "argument of periapsis omega"), mu0, mu3 / mu0,
                      outer, ecc_out)
         triple._require_hierarchical_stability()
         triple._require_non_radial()

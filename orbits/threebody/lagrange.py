@@ -218,7 +218,7 @@ class RestrictedThreeBody(display.Displayed):
             unstable = ", ".join(name for name, rate in zip(POINTS, rates, strict=True) if rate > 0.0)
             raise OrbitDomainError(f"{POINTS[k]} is linearly stable at mu = {mu:.6g}: nothing departs from it "
                                    f"(unstable points there: {unstable})")
-        size = 1e-6 if offset is None else float(inputs.positive(offset, units.M, "offset")) / r
+        size = 1e-6 if offset is None else inputs.single(inputs.positive, offset, units.M, "offset") / r
         if not size <= 0.01:
             raise OrbitDomainError(f"offset = {size:.3g} r: the linear departure holds only near the point; "
                                    f"give at most 0.01 r ({0.01 * r:.6g} m)")

@@ -13,7 +13,7 @@ from typing import Any
 import astropy.units as u
 import numpy as np
 
-from orbits._common import display, frame, units
+from orbits._common import display, frame, inputs, units
 from orbits.core.threebody import rings
 from orbits.core.threebody.lagrange import point_index
 from orbits.threebody.rings import BREAKUP_DEVIATION, ROUND_OFF_SEED
@@ -86,7 +86,8 @@ def lagrange_plane(
         shown = units.to_si(track, units.M, f"trajectory {label!r}") / r
         ax.plot(shown[:, 0], shown[:, 1], color=color, lw=1.0, zorder=2, label=label, gid="trajectory")
         if label in own:
-            c0 = float(units.to_si(own[label], units.M_PER_S**2, f"Jacobi constant of {label!r}"))
+            name = f"Jacobi constant of {label!r}"
+            c0 = inputs.single(units.to_si, own[label], units.M_PER_S**2, name)
             ax.contourf(xs, ys, values, levels=[bottom, c0], colors=[color], alpha=0.2, zorder=0)
             ax.contour(xs, ys, values, levels=[c0], colors=[color], linestyles=["--"], linewidths=1.2, zorder=1)
             ax.add_patch(mpatches.Rectangle((0, 0), 0, 0, color=color, alpha=0.2,
@@ -144,7 +145,7 @@ def lagrange_departure(system: Any, point: str, offset: u.Quantity, times: u.Qua
     unit = display.natural_unit(times[-1])
     elapsed = (seconds << u.s).to_value(unit)
     rate = float(system.growth_rates[k].to_value(1 / u.s))
-    start = float(units.to_si(offset, units.M, "offset"))
+    start = inputs.single(units.to_si, offset, units.M, "offset")
     gone = np.hypot(*(shown - where).T) * r
     distance.semilogy(elapsed, gone / r, color="C4", lw=1.3, label="integrated", gid="trajectory")
     predicted = start * np.exp(rate * seconds) / r

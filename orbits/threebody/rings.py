@@ -123,7 +123,7 @@ class Ring(display.Displayed):
         phase + 2 pi k / n in the xy plane, counter-clockwise; the barycentre and central mass at rest at 0."""
         if np.ndim(self.r) != 0:
             raise OrbitDomainError("state_vectors needs a single ring; this object holds an array of them")
-        angle = float(inputs.angle(phase, "phase"))
+        angle = inputs.single(inputs.angle, phase, "phase")
         r, v = rings.state_vectors(self.n, float(self.r), float(self.speed.value), angle)
         return r << units.M, v << units.M_PER_S
 

@@ -53,6 +53,8 @@ def anomalies(
 def _conic(e):
     """'ellipse', 'parabola' or 'hyperbola': the one kind of conic every e lies on (OrbitDomainError otherwise)."""
     kinds = [name for name, on in (("ellipse", e < 1.0), ("parabola", e == 1.0), ("hyperbola", e > 1.0)) if on.any()]
+    if not kinds:  # no eccentricity at all: an empty answer, of any one kind
+        return "ellipse"
     if len(kinds) != 1:
         spanned = " and ".join(f"{kind}s" for kind in kinds)
         raise OrbitDomainError(

@@ -37,15 +37,16 @@ PRIMARY = "primary mass or gravitational parameter"
 APSIS_SLACK = 1e-12
 
 
-def _shape(x):
-    """Shape of an array, Quantity or number (the attribute when there is one: np.shape dispatches
-    through Quantity.__array_function__)."""
+def _shape(x, name):
+    """Shape of an array, Quantity, list of Quantities (units.joined) or number (the attribute when there is one:
+    np.shape dispatches through Quantity.__array_function__)."""
+    x = units.joined(x, name)
     return x.shape if hasattr(x, "shape") else np.shape(x)
 
 
 def _check_shapes(**arrays):
     """Raise OrbitDomainError naming the arguments whose shapes do not broadcast together."""
-    shapes = {name: _shape(x) for name, x in arrays.items()}
+    shapes = {name: _shape(x, name) for name, x in arrays.items()}
     if len(set(shapes.values()) - {()}) > 1:  # scalars and one shape: nothing to check
         broadcast_shape(**shapes)
 
@@ -453,8 +454,8 @@ class Orbit(display.Displayed):
         worst = float(np.max(transition.relative_error(phi, *self._state, self.mu), initial=0.0))
         if worst > ILL_CONDITIONED:
             digits = f"about {int(-np.log10(worst))} digits of Phi" if worst < 0.1 else "no digit of Phi"
-            warnings.warn(f"ill-conditioned state-transition matrix: the flight grazes the focus or starts nearly "
-                          f"radial; {digits} can be trusted (error up to {worst:.2g} of its norm)",
+            warnings.warn(f"ill-conditioned state-transition matrix: the flight is very long, grazes the focus or "
+                          f"starts nearly radial; {digits} can be trusted (error up to {worst:.2g} of its norm)",
                           IllConditionedWarning, stacklevel=2)
         return r << units.M, v << units.M_PER_S, phi
 

@@ -390,7 +390,7 @@ def _gm(ctx, spec, where):
     kind = "gravitational parameter" if key == "gm" else "mass"
     with ctx.field(f"{where}.{key}"):
         value = inputs.parse_quantity(spec[key], kind, f"{where}.{key}")
-        return float(inputs.gravitational_parameter(value, f"{where}.{key}"))
+        return inputs.single(inputs.gravitational_parameter, value, f"{where}.{key}")
 
 
 def _bodies(ctx, entries):

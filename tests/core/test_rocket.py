@@ -91,3 +91,11 @@ def test_burn_at_constant_thrust():
         ref = mpmath.quad(lambda t: ve * mpmath.log(m0 / (m0 - flow * t)), [0, t_b])
     assert ulps(rocket.distance_during_burn(ve, m0, flow, t_b), ref) <= 2  # measured 0.15
     assert rocket.gravity_loss(9.80665, t_b) == pytest.approx(9.80665 * 90.0)
+
+
+@pytest.mark.parametrize("m1, m2", [(1e19, 1e3), (1e300, 1e-300), (1e-300, 1e300), (1.0, 1e308), (3.0, 1.0)])
+def test_the_log_of_a_mass_ratio_far_from_one_is_finite_and_exact(m1, m2):
+    """(m2 - m1) / m1 rounds to -1 when m2 is below an ulp of m1 (1e3 kg left of 1e19 kg): log1p gave -inf."""
+    exact = mpmath.log(mpmath.mpf(m2) / mpmath.mpf(m1))
+    got = float(rocket.log_mass_ratio(m1, m2))
+    assert abs(got - float(exact)) <= 2 * np.spacing(abs(float(exact))), (got, exact)  # measured 0 ulp

@@ -23,9 +23,17 @@ from numpy.typing import ArrayLike
 
 
 def log_mass_ratio(m1: ArrayLike, m2: ArrayLike) -> float | np.ndarray:
-    """ln(m2 / m1) (dimensionless) as log1p((m2 - m1) / m1): no loss of digits when m2 is close to m1."""
-    m1 = np.asarray(m1, dtype=float)
-    return np.log1p((m2 - m1) / m1)
+    """ln(m2 / m1) (dimensionless): log1p((m2 - m1) / m1) where m2 lies within half of m1 (no loss of digits when
+    m2 is close to m1), else log(m2 / m1), the ratio exact to half an ulp and far from 1; where that ratio leaves
+    float64's normal range (1e-300 kg from 1e300 kg), log(m2) - log(m1), whose terms then differ by more than 1400."""
+    m1, m2 = np.asarray(m1, dtype=float), np.asarray(m2, dtype=float)
+    with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):
+        difference = (m2 - m1) / m1
+        ratio = m2 / m1
+        normal = np.isfinite(ratio) & (ratio >= np.finfo(float).tiny)
+        far = np.where(normal, np.log(np.where(normal, ratio, 1.0)), np.log(m2) - np.log(m1))
+        return np.where(np.abs(difference) <= 0.5, np.log1p(np.where(np.abs(difference) <= 0.5, difference, 0.0)),
+                        far)
 
 
 def velocity_change(v_rel: ArrayLike, m1: ArrayLike, m2: ArrayLike) -> float | np.ndarray:

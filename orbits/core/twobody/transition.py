@@ -81,7 +81,8 @@ def relative_error(phi: ArrayLike, r0: ArrayLike, v0: ArrayLike, mu: ArrayLike) 
     scaled[..., :3, 3:] *= rate
     scaled[..., 3:, :3] /= rate
     radial = size * np.sqrt(np.sum(v0**2, axis=-1)) / np.sqrt(np.sum(np.cross(r0, v0) ** 2, axis=-1))
-    return ERROR_FLOOR + ERROR_GROWTH * (np.sum(scaled**2, axis=(-2, -1)) + radial)
+    with np.errstate(over="ignore"):  # a Phi~ beyond 1e154 (a flight of 1e80 s) has an infinite bound: no digit
+        return ERROR_FLOOR + ERROR_GROWTH * (np.sum(scaled**2, axis=(-2, -1)) + radial)
 
 
 def _checked(r0, v0, mu, dt):
