@@ -36,6 +36,7 @@ from orbits._common import display, inputs, units
 from orbits._common.constants import SPEED_OF_LIGHT, Body
 from orbits._common.tables import quantity_table
 from orbits.core import frames
+from orbits.core.checks import broadcast_shape
 from orbits.core.errors import ILL_CONDITIONED, IllConditionedWarning, OrbitDomainError
 from orbits.core.manoeuvres import lambert as lambert_core
 from orbits.core.twobody import elements
@@ -283,13 +284,27 @@ def lambert(
 
 
 def _solve(start, end, seconds, mu, revolutions, branch, prograde, direction, departure=None, arrival=None):
+    _refuse_relativistic(_chord_speed(start, end, seconds), "at least")  # before the solver meets such a flight
     solution = lambert_core.solve(start, end, seconds, mu, revolutions, branch, prograde, direction)
-    speeds = _fastest(solution)
+    _refuse_relativistic(_fastest(solution), "")
+    return _transfer(solution, start, end, seconds, mu, revolutions, branch, departure, arrival)
+
+
+def _refuse_relativistic(speeds: np.ndarray, bound: str) -> None:
+    """OrbitDomainError where a transfer's speed (m/s; `bound` "at least" for the chord's) is not Newtonian."""
     if np.any(~_newtonian(speeds)):
         fastest = float(np.max(speeds))
-        raise OrbitDomainError(f"the transfer needs {fastest / 1e3:.4g} km/s, {fastest / SPEED_OF_LIGHT:.3g} of the "
-                               f"speed of light, where two-body Newtonian gravity no longer holds: a longer flight")
-    return _transfer(solution, start, end, seconds, mu, revolutions, branch, departure, arrival)
+        raise OrbitDomainError(f"the transfer needs {bound + ' ' if bound else ''}{fastest / 1e3:.4g} km/s, "
+                               f"{fastest / SPEED_OF_LIGHT:.3g} of the speed of light, where two-body Newtonian "
+                               f"gravity no longer holds: a longer flight")
+
+
+def _chord_speed(start, end, seconds) -> np.ndarray:
+    """|r2 - r1| / tof (m/s): the mean speed along the chord, which the transfer's path reaches at some point."""
+    start, end = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
+    broadcast_shape(r1=start.shape[:-1], r2=end.shape[:-1], tof=np.shape(seconds))  # the core's names for them
+    with np.errstate(over="ignore"):
+        return np.linalg.norm(end - start, axis=-1) / np.asarray(seconds)
 
 
 def newtonian_transfers(start: np.ndarray, end: np.ndarray, seconds: np.ndarray, mu: float,
@@ -298,9 +313,11 @@ def newtonian_transfers(start: np.ndarray, end: np.ndarray, seconds: np.ndarray,
     angular momentum) that Newtonian two-body gravity describes, and which of the n they are (a boolean mask): a
     flight whose speed reaches 1 % of the speed of light (two dates hours apart across the solar system) is left
     out, where `lambert` refuses the whole batch."""
-    solution = lambert_core.solve(start, end, seconds, mu, 0, "right", True, direction)
-    kept = _newtonian(_fastest(solution))
-    solution = lambert_core.Solution(*(np.asarray(field)[kept] for field in solution))
+    kept = _newtonian(_chord_speed(start, end, seconds))  # before the solver meets such a flight
+    solution = lambert_core.solve(start[kept], end[kept], seconds[kept], mu, 0, "right", True, direction)
+    newtonian = _newtonian(_fastest(solution))
+    kept[kept] = newtonian
+    solution = lambert_core.Solution(*(np.asarray(field)[newtonian] for field in solution))
     return _transfer(solution, start[kept], end[kept], seconds[kept], mu, 0, "right"), kept
 
 

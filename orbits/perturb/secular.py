@@ -216,7 +216,7 @@ class Design(display.Displayed):
 
 def _size(primary, a, altitude):
     if (a is None) == (altitude is None):
-        raise TypeError("give exactly one of a= and altitude=")
+        raise TypeError("give the orbit's size: exactly one of a (the semi-major axis) and altitude")
     size = (inputs.positive(a, units.M, "semi-major axis a") if a is not None
             else primary.radius + inputs.positive(altitude, units.M, "altitude"))
     if np.any(size <= primary.radius):

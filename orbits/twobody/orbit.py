@@ -448,6 +448,7 @@ class Orbit(display.Displayed):
         dt_si = units.to_si(dt, units.S, "time step dt")
         units.check_broadcast("the orbits times the time steps dt", np.shape(self.mu), np.shape(dt_si))
         r, v = propagate.propagate(*self._state, self.mu, dt_si)
+        self._warn_if_too_long(dt_si)
         if not stm:
             return r << units.M, v << units.M_PER_S
         phi = transition.transition_matrix(*self._state, self.mu, dt_si)
@@ -458,6 +459,22 @@ class Orbit(display.Displayed):
                           f"starts nearly radial; {digits} can be trusted (error up to {worst:.2g} of its norm)",
                           IllConditionedWarning, stacklevel=2)
         return r << units.M, v << units.M_PER_S, phi
+
+    def _warn_if_too_long(self, dt: np.ndarray) -> None:
+        """IllConditionedWarning when an ellipse is followed so long that float64 rounding alone moves the body
+        along its track by more than ILL_CONDITIONED of |r|: about 3 n |dt| 2**-53 (the mean anomaly n dt moves by
+        its own rounding, by dt's and by 1.5 times a's: one rounding each), past 1e-8 after some 5 million
+        revolutions; 1e80 s of a low Earth orbit leaves no digit."""
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            a = np.where(self.e < 1.0, self.p / (1.0 - self.e * self.e), np.inf)
+            drift = np.where(self.e < 1.0, 3.0 * np.sqrt(self.mu / a**3) * np.abs(dt) * 2.0**-53, 0.0)
+        worst = float(np.max(drift, initial=0.0))
+        if worst > ILL_CONDITIONED:
+            digits = f"about {int(-np.log10(worst))} digits of it" if worst < 0.1 else "no digit of it"
+            turns = float(np.max(np.abs(dt) * np.sqrt(self.mu / a**3) / (2 * np.pi), initial=0.0))
+            warnings.warn(f"ill-conditioned propagation: over {turns:.3g} revolutions the rounding of dt and of the "
+                          f"orbit's size alone moves the body along its track by up to {worst:.2g} of |r|; "
+                          f"{digits} can be trusted", IllConditionedWarning, stacklevel=3)
 
     def at(self, dt: u.Quantity) -> "Orbit":
         """The Orbit reached a time dt later (same elements, new true anomaly)."""

@@ -158,3 +158,29 @@ def test_an_orbit_through_its_primary_says_so_whichever_constructor_built_it():
         Orbit.from_elements("Earth", a=[7000, 8000, 9000] * u.km, e=0.05)  # q = 6650 km and up: above
         Orbit.from_elements(3.986e14 * u.m**3 / u.s**2, a=7000 * u.km, e=0.5)  # a GM, no catalogue radius
         Orbit.from_body("Mars")
+
+
+def test_a_propagation_longer_than_float64_can_follow_says_so():
+    """A low orbit followed for 1e80 s came back as a position like any other: its mean anomaly, 1e77 rad, carries
+    no digit. The warning starts where rounding alone moves the body by 1e-8 of |r| along its track (3 n |dt|
+    2**-53: about 5 million revolutions), checked here against the spread the rounding of dt itself causes."""
+    import warnings
+
+    from orbits import IllConditionedWarning
+
+    leo = Orbit.circular("Earth", radius=7000 * u.km)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        leo.propagate(100 * u.yr)  # 5.4e5 revolutions: 1.1e-9, quiet
+    with pytest.warns(IllConditionedWarning, match=r"^ill-conditioned propagation: over 5\.41e\+06 revolutions .* "
+                                                   r"up to 1\.1e-08 of \|r\|; about 7 digits"):
+        leo.propagate(1000 * u.yr)
+    with pytest.warns(IllConditionedWarning, match="no digit of it can be trusted"):
+        leo.propagate(1e80 * u.s)
+    # the estimate against the real thing: one ulp of dt at 1e15 s (0.125 s) moves the body by 0.375 of it
+    dt = 1e15
+    with pytest.warns(IllConditionedWarning):
+        near, _ = leo.propagate([dt, np.nextafter(dt, np.inf)] * u.s)
+    moved = float(np.linalg.norm(near[1] - near[0]).to_value(u.m)) / 7e6
+    n = float(np.sqrt(BODIES["Earth"].gm / 7e6**3))
+    assert 0.1 < moved / (3 * n * dt * 2.0**-53) < 1.0
