@@ -54,7 +54,8 @@ _KERNEL_DEPENDENCIES = ("twobody/_kepler_shared.py", "twobody/_propagate_shared.
 #: tests/core/test_fast_kepler.py, test_propagate.py, test_propagate_long_flights.py) and never import numba.
 AUTO_MIN_BATCH = 1 << 16
 
-_state = {"mode": None, "threads": None, "pool": None, "cache_dir": None, "announced": set(), "kernels": []}
+_state = {"mode": None, "threads": None, "pool": None, "cache_dir": None, "announced": set(), "kernels": [],
+          "checked": {}}
 
 
 def _mode():
@@ -224,6 +225,7 @@ def run(kernel, n, *arrays):
     entry's signature, not whose code it is), is cleared, with one line on stderr, and the kernels are bypassed for
     the rest of the process (returning n: recompute all).
     """
+    loaded = _signatures(kernel)
     try:
         count = _run(kernel, n, *arrays)
     except _CORRUPT_CACHE as err:
@@ -234,6 +236,8 @@ def run(kernel, n, *arrays):
             raise
         _clear_corrupt_cache(f"held {_mismatched()}")
         return n
+    if _signatures(kernel) == loaded:  # nothing compiled or loaded by this call: nothing new to read
+        return count
     wrong = _mismatched()  # the same arity, another function's code: the counts (and results) are not this one's
     if wrong is not None:
         _clear_corrupt_cache(f"held {wrong}")
@@ -241,13 +245,24 @@ def run(kernel, n, *arrays):
     return count
 
 
+def _signatures(kernel) -> int:
+    """How many signatures a compiled kernel holds (0 for a plain function)."""
+    return len(getattr(kernel, "overloads", ()))
+
+
 def _mismatched():
-    """"the code of A under the name B" for the first compiled kernel whose loaded code is another function's,
-    else None."""
+    """"the code of A under the name B" for the first compiled kernel whose loaded code is another function's, else
+    None. A kernel's code is read once per compiled or loaded signature (numba adds one to its overloads each
+    time); run calls this only when the kernel it ran gained one, so a warm call reads nothing."""
+    seen = _state["checked"]
     for kernel in _state["kernels"]:
+        count = len(kernel.overloads)
+        if seen.get(kernel) == count:
+            continue
         for result in kernel.overloads.values():
             if result.fndesc.qualname != kernel.py_func.__qualname__:
                 return f"the code of {result.fndesc.qualname} under the name {kernel.py_func.__qualname__}"
+        seen[kernel] = count
     return None
 
 
