@@ -129,7 +129,7 @@ def at_epoch(body_name: str, epoch: str, source: str, others: list) -> "tuple[Or
     from orbits import Orbit, OrbitDomainError, body
     from orbits.ephemeris import positions as ephemeris
 
-    if any(x is not None for x in others):
+    if any(option is not None for option in others):
         raise typer.BadParameter(f"with --epoch, {body_name}'s orbit comes from the ephemeris: drop the elements")
     named = body(body_name)
     if named.parent is None:
@@ -167,8 +167,8 @@ def build(
     mass_q = None if mass is None else parse_quantity(mass, "mass", "--mass")
     elements = {"--a": a, "--p": p, "--q": q, "--e": e, "--inc": inc, "--raan": raan, "--argp": argp, "--nu": nu}
     if body_name is not None:
-        given = [k for k, x in {**elements, "--primary": primary, "--r": r, "--v": v, "--mass": mass}.items()
-                 if x is not None]
+        given = [flag for flag, option in {**elements, "--primary": primary, "--r": r, "--v": v, "--mass": mass}.items()
+                 if option is not None]
         if given:
             verb = "does" if len(given) == 1 else "do"
             raise typer.BadParameter(f"{', '.join(given)} {verb} not apply to {body_name}: a named body's orbit "
@@ -179,16 +179,17 @@ def build(
     if (r is None) != (v is None):
         raise typer.BadParameter("give both --r and --v for a state vector")
     if r is not None:
-        given = [k for k, x in elements.items() if x is not None]
+        given = [flag for flag, option in elements.items() if option is not None]
         if given:
             raise typer.BadParameter(f"give either a state vector (--r, --v) or elements ({', '.join(given)}), "
                                      f"not both")
         orbit = Orbit.from_vectors(center, parse_vector(r, "length", "--r"), parse_vector(v, "speed", "--v"),
                                    mass=mass_q)
         return orbit, "Orbit from a state vector"
-    if all(x is None for x in (a, p, q)):
+    if a is None and p is None and q is None:
         raise typer.BadParameter("give a size (--a, --p or --q), a state vector (--r and --v), or a BODY name")
-    sizes = {k: None if x is None else parse_quantity(x, "length", f"--{k}") for k, x in zip("apq", (a, p, q))}
-    angles = params.orientation(*(x or "0" for x in (inc, raan, argp, nu)))
+    sizes = {key: None if text is None else parse_quantity(text, "length", f"--{key}")
+             for key, text in zip("apq", (a, p, q))}
+    angles = params.orientation(*(angle or "0" for angle in (inc, raan, argp, nu)))
     orbit = Orbit.from_elements(center, e=0.0 if e is None else e, **angles, mass=mass_q, **sizes)
     return orbit, "Orbit from elements"

@@ -19,7 +19,14 @@ import numpy as np
 
 from orbits._common import units
 from orbits._common.constants import BODIES, STANDARD_GRAVITY, Body, G, body
-from orbits.core.checks import check_finite, first_where, require_magnitude, require_positive
+from orbits.core.checks import (
+    broadcast,
+    check_finite,
+    first_where,
+    require_magnitude,
+    require_no_underflow,
+    require_positive,
+)
 from orbits.core.errors import InsideBodyWarning, OrbitDomainError
 from orbits.core.twobody import elements, kepler
 
@@ -75,16 +82,8 @@ def parse_quantity(text: str, kind: str, name: str, bare_unit: u.UnitBase | None
             raise OrbitDomainError(f"{name}: {text!r} must be a plain number")
         raise OrbitDomainError(f"{name}: {text!r} is a {value.unit.physical_type}, not a {kind}")
     check_finite(value.value, name, value.unit.to_string())
-    _require_no_underflow(text.strip().split(" ")[0], value.value, name)
+    require_no_underflow(text.strip().split(" ")[0], value.value, name)
     return value
-
-
-def _require_no_underflow(literal: str, value: float | np.ndarray, name: str) -> None:
-    """OrbitDomainError when a number written nonzero ("1e-330") reads as 0 in float64 (below 5e-324): it would
-    be taken for an exact zero (a position on the primary, a zero mass)."""
-    mantissa = literal.lower().split("e")[0]
-    if np.all(np.asarray(value) == 0) and any(digit in mantissa for digit in "123456789"):
-        raise OrbitDomainError(f"{name}: {literal!r} is below the smallest float64 (5e-324) and would read as 0")
 
 
 def parse_angle(text: str, name: str) -> u.Quantity:
@@ -115,7 +114,7 @@ def parse_vector(text: str, kind: str, name: str) -> u.Quantity:
         raise OrbitDomainError(f"{name}: {text!r} needs three comma-separated components, e.g. '7000,0,0 km'")
     check_finite(values, name, unit_text)
     for literal, value in zip(numbers.split(","), values):
-        _require_no_underflow(literal.strip(), value, name)
+        require_no_underflow(literal.strip(), value, name)
     if not unit_text.strip():
         raise OrbitDomainError(f"{name}: {text!r} has no unit; write e.g. '{text.strip()} {_kind(kind)[1]}'")
     return parse_quantity(f"1 {unit_text}", kind, name) * values
@@ -276,14 +275,6 @@ def inclination(value: u.Quantity) -> np.ndarray:
     return angle_in(value, "inclination i", 0.0, np.pi, "[0, pi]")
 
 
-def true_anomaly(value: u.Quantity, e: np.ndarray) -> np.ndarray:
-    """True anomaly nu (rad, reduced to (-pi, pi]: periodic_angle) on a conic of (checked) eccentricity e: finite
-    and, on an open conic, strictly between the asymptotes (1 + e cos nu > 0)."""
-    nu = periodic_angle(value, "true anomaly nu")
-    elements.require_inside_asymptotes(e, nu)
-    return nu
-
-
 def vector(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
     """float64 array (..., 3) of a vector Quantity in `unit` (SI): finite, each nonzero length within
     MAGNITUDE_RANGE."""
@@ -296,58 +287,59 @@ def vector(value: u.Quantity, unit: u.UnitBase, name: str) -> np.ndarray:
     return si
 
 
-#: the largest eccentricity accepted: Kepler's hyperbolic equation is verified up to it (tests/core/test_kepler.py)
-MAX_ECCENTRICITY = 1e12
+def conic_elements(
+    primary: Body | str | u.Quantity, e: float | np.ndarray | u.Quantity, *, a: u.Quantity | None = None,
+    p: u.Quantity | None = None, q: u.Quantity | None = None, inc: u.Quantity, raan: u.Quantity, argp: u.Quantity,
+    nu: u.Quantity
+) -> list[np.ndarray]:
+    """The fields (mu, p, e, i, Omega, omega, nu) of an orbit given by elements: float64 SI arrays of one shape,
+    each owning its data (orbits.core.twobody.elements.conic_fields). Each value is read once, in this order: the
+    primary (gravitational_parameter), exactly one size element (a, p or q: size_element), the angles (i in
+    [0, pi], the others reduced modulo a turn), then e; they must broadcast together (an error names each
+    argument's shape), and e's own rules and those that join e to a size or to nu come last."""
+    mu = gravitational_parameter(primary, "primary mass or gravitational parameter")
+    element, size = size_element(a=a, p=p, q=q)
+    inc_si = inclination(inc)
+    raan_si = elements.wrap_two_pi(periodic_angle(raan, "longitude of the ascending node Omega"))
+    argp_si = elements.wrap_two_pi(periodic_angle(argp, "argument of periapsis omega"))
+    nu_si = periodic_angle(nu, "true anomaly nu")
+    ecc = units.to_number(e, "eccentricity e")
+    fields = broadcast(**{"e": ecc, element: size, "inc": inc_si, "raan": raan_si, "argp": argp_si, "nu": nu_si,
+                          "primary": mu})
+    return elements.conic_fields(element, *fields)
+
+
+def size_element(
+    a: u.Quantity | None = None, p: u.Quantity | None = None, q: u.Quantity | None = None
+) -> tuple[str, np.ndarray]:
+    """("a", "p" or "q", its value in m) of exactly one size element given: p and q positive within
+    MAGNITUDE_RANGE, a finite with |a| there or 0 (its sign is checked against e: elements.semi_latus_rectum)."""
+    given = {name: value for name, value in (("a", a), ("p", p), ("q", q)) if value is not None}
+    if len(given) != 1:
+        raise TypeError(f"give exactly one size element of a, p, q; got {list(given) or 'none'}")
+    if p is not None:
+        return "p", positive(p, units.M, "semi-latus rectum p")
+    if q is not None:
+        return "q", positive(q, units.M, "periapsis distance q")
+    value = units.to_si(a, units.M, "semi-major axis a")
+    check_finite(value, "semi-major axis a", "m")
+    require_magnitude(np.abs(value[value != 0]), "semi-major axis |a|", "m")
+    return "a", value
 
 
 def semi_latus_rectum(
     e: np.ndarray, a: u.Quantity | None = None, p: u.Quantity | None = None, q: u.Quantity | None = None
 ) -> np.ndarray:
-    """p (m) from e and exactly one size element: a (length, not on the parabola), p or q.
-
-    p as given, p = q (1 + e), or p = a (1 - e) (1 + e), with a > 0 for ellipses and a < 0 for hyperbolas.
-    """
-    given = [name for name, value in (("a", a), ("p", p), ("q", q)) if value is not None]
-    if len(given) != 1:
-        raise TypeError(f"give exactly one size element of a, p, q; got {given or 'none'}")
-    if p is not None:
-        return positive(p, units.M, "semi-latus rectum p").copy()  # to_si may return a view of the caller's data
-    if q is not None:
-        return positive(q, units.M, "periapsis distance q") * (1.0 + e)
-    value = units.to_si(a, units.M, "semi-major axis a")
-    size = value * (1.0 - e) * (1.0 + e)
-    if not ((size > 0.0) & (size < np.inf)).all():  # a valid a gives 0 < size < inf: check in detail otherwise
-        _check_semi_major_axis(value, e)
-    require_magnitude(np.abs(value), "semi-major axis |a|", "m")
-    return size
-
-
-def _check_semi_major_axis(value, e):
-    """Raise OrbitDomainError for the first non-finite a, for e = 1, or for an a of the wrong sign for its e
-    (a > 0 iff e < 1)."""
-    check_finite(value, "semi-major axis a", "m")
-    e = np.asarray(e, dtype=float)
-    if (e == 1.0).any():
-        raise OrbitDomainError("a parabola (e = 1) has no finite a: give q or p instead of a")
-    wrong = np.where(e < 1.0, value <= 0.0, value >= 0.0)
-    if wrong.any():
-        i = tuple(np.argwhere(np.broadcast_to(wrong, np.broadcast_shapes(value.shape, e.shape)))[0])
-        bad_a, bad_e = np.broadcast_to(value, wrong.shape)[i], np.broadcast_to(e, wrong.shape)[i]
-        rule = "a > 0 for a bound orbit (e < 1)" if bad_e < 1 else "a < 0 for a hyperbola (e > 1)"
-        raise OrbitDomainError(f"semi-major axis a = {float(bad_a) / 1e3:.10g} km with e = {float(bad_e)!r}: need "
-                               f"{rule}")
+    """p (m) from a checked e and exactly one size element (size_element, elements.semi_latus_rectum)."""
+    element, size = size_element(a=a, p=p, q=q)
+    return elements.semi_latus_rectum(element, *broadcast(size=size, e=e))
 
 
 def eccentricity(e: float | np.ndarray | u.Quantity) -> np.ndarray:
-    """float64 array of eccentricities (plain numbers or dimensionless Quantities), each finite and >= 0."""
+    """float64 array of eccentricities (plain numbers or dimensionless Quantities), each finite and in
+    [0, MAX_ECCENTRICITY] (elements.require_eccentricity)."""
     e = units.to_number(e, "eccentricity e")
-    if not np.isfinite(e).all() or (e < 0).any():
-        bad = e[~(np.isfinite(e) & (e >= 0))].flat[0]
-        raise OrbitDomainError(f"eccentricity e = {float(bad)!r} is outside [0, inf)")
-    if (e > MAX_ECCENTRICITY).any():
-        bad = e[e > MAX_ECCENTRICITY].flat[0]
-        raise OrbitDomainError(f"eccentricity e = {float(bad)!r} is outside [0, {MAX_ECCENTRICITY:g}], the range "
-                               f"where Kepler's equation is verified")
+    elements.require_eccentricity(e)
     return e
 
 

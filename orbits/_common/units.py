@@ -9,6 +9,8 @@ float32 are upcast to float64.
 import astropy.units as u
 import numpy as np
 
+from orbits.core.checks import check_size
+
 M = u.m
 S = u.s
 KG = u.kg
@@ -44,28 +46,6 @@ def _reject_bool(value, name):
                         f"first (e.g. value[~value.mask] or value.filled(...))")
     if np.iscomplexobj(value):
         raise TypeError(f"{name} = {value!r} is complex; pass real numbers")
-
-
-#: the most elements one argument, or one broadcast of several, may hold in a call: 2**25 (33.5 million), 268 MB
-#: as one float64 array and a few GB with the temporaries of the heaviest solver; a larger batch is split by its
-#: caller (orbits.tools.distributed runs one in chunks). Checked before anything of that size is made.
-MAX_ELEMENTS = 2**25
-
-
-def check_size(count: int, name: str) -> None:
-    """OrbitDomainError when `count` elements exceed MAX_ELEMENTS, naming what holds them."""
-    if count > MAX_ELEMENTS:
-        from orbits.core.errors import OrbitDomainError
-
-        raise OrbitDomainError(f"{name}: {count:,} elements, more than the {MAX_ELEMENTS:,} one call takes; split "
-                               f"the batch into chunks")
-
-
-def check_broadcast(name: str, *shapes: tuple[int, ...]) -> tuple[int, ...]:
-    """The broadcast of `shapes`, checked against MAX_ELEMENTS before any array of it exists."""
-    shape = np.broadcast_shapes(*shapes)
-    check_size(int(np.prod(shape, dtype=float)), name)
-    return shape
 
 
 #: Conversion factors already computed, {(from unit, to unit): scale}. Quantity.to_value recomputes the

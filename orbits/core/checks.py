@@ -17,6 +17,14 @@ def check_finite(x: ArrayLike, name: str, unit: str) -> None:
         raise OrbitDomainError(f"{name} = {float(bad)!r}{_spaced(unit)} is not finite; it must be a finite number")
 
 
+def require_no_underflow(literal: str, value: ArrayLike, name: str) -> None:
+    """OrbitDomainError when a number written nonzero ("1e-330") reads as 0 in float64 (below 5e-324): it would
+    be taken for an exact zero (a position on the primary, a zero mass)."""
+    mantissa = literal.lower().split("e")[0]
+    if np.all(np.asarray(value) == 0) and any(digit in mantissa for digit in "123456789"):
+        raise OrbitDomainError(f"{name}: {literal!r} is below the smallest float64 (5e-324) and would read as 0")
+
+
 def check_eccentricity(
     e: ArrayLike, low: float, high: float, low_open: bool, high_open: bool, conic: str, hint: str = ""
 ) -> None:
@@ -34,6 +42,26 @@ def check_eccentricity(
         )
 
 
+#: the most elements one argument, or one broadcast of several, may hold in a call: 2**25 (33.5 million), 268 MB
+#: as one float64 array and a few GB with the temporaries of the heaviest solver; a larger batch is split by its
+#: caller (orbits.tools.distributed runs one in chunks). Checked before anything of that size is made.
+MAX_ELEMENTS = 2**25
+
+
+def check_size(count: int, name: str) -> None:
+    """OrbitDomainError when `count` elements exceed MAX_ELEMENTS, naming what holds them."""
+    if count > MAX_ELEMENTS:
+        raise OrbitDomainError(f"{name}: {count:,} elements, more than the {MAX_ELEMENTS:,} one call takes; split "
+                               f"the batch into chunks")
+
+
+def check_broadcast(name: str, *shapes: tuple[int, ...]) -> tuple[int, ...]:
+    """The broadcast of `shapes`, checked against MAX_ELEMENTS before any array of it exists."""
+    shape = np.broadcast_shapes(*shapes)
+    check_size(int(np.prod(shape, dtype=float)), name)
+    return shape
+
+
 def broadcast_shape(**shapes: tuple[int, ...]) -> tuple[int, ...]:
     """The shape the named shapes broadcast to; OrbitDomainError naming every argument with its shape otherwise
     (NumPy's own message says only "arg 0" and "arg 1")."""
@@ -45,9 +73,11 @@ def broadcast_shape(**shapes: tuple[int, ...]) -> tuple[int, ...]:
 
 
 def broadcast(**arrays: ArrayLike) -> list[np.ndarray]:
-    """The named values as float64 arrays broadcast together, in order; broadcast_shape's error names them."""
+    """The named values as float64 arrays broadcast together (views), in order; broadcast_shape's error names them,
+    and a broadcast of more than MAX_ELEMENTS is refused before anything of its size is made."""
     values = [np.asarray(value, dtype=float) for value in arrays.values()]
-    broadcast_shape(**{name: value.shape for name, value in zip(arrays, values)})
+    shape = broadcast_shape(**{name: value.shape for name, value in zip(arrays, values)})
+    check_size(int(np.prod(shape, dtype=float)), f"the broadcast of {', '.join(arrays)}")
     return np.broadcast_arrays(*values)
 
 

@@ -23,7 +23,7 @@ import numpy as np
 from orbits._common import display, inputs, units
 from orbits._common.constants import Body, G, body
 from orbits._common.tables import quantity_table
-from orbits.core.checks import broadcast_shape, first_where
+from orbits.core.checks import broadcast_shape, check_broadcast, first_where
 from orbits.core.errors import ILL_CONDITIONED, IllConditionedWarning, OrbitDomainError
 from orbits.core.twobody import anomalies, elements, propagate, transition, twobody
 from orbits.ephemeris import catalogue as catalogue_orbits
@@ -35,20 +35,6 @@ if TYPE_CHECKING:
 PRIMARY = "primary mass or gravitational parameter"
 #: the relative slack of speed_at's range [q, Q]: a distance computed another way lands within a few ulp of an apsis
 APSIS_SLACK = 1e-12
-
-
-def _shape(x, name):
-    """Shape of an array, Quantity, list of Quantities (units.joined) or number (the attribute when there is one:
-    np.shape dispatches through Quantity.__array_function__)."""
-    x = units.joined(x, name)
-    return x.shape if hasattr(x, "shape") else np.shape(x)
-
-
-def _check_shapes(**arrays):
-    """Raise OrbitDomainError naming the arguments whose shapes do not broadcast together."""
-    shapes = {name: _shape(x, name) for name, x in arrays.items()}
-    if len(set(shapes.values()) - {()}) > 1:  # scalars and one shape: nothing to check
-        broadcast_shape(**shapes)
 
 
 @dataclass(frozen=True, eq=False)
@@ -71,6 +57,8 @@ class Orbit(display.Displayed):
     mass: np.ndarray | None = None
 
     def __post_init__(self):
+        if self.mass is not None and np.shape(self.mass) != self.p.shape:
+            object.__setattr__(self, "mass", _mass_field(self.mass, self.p.shape))
         inputs.warn_if_inside(self.p / (1.0 + self.e), [inputs.exact_body(self.mu)], type(self).__name__)
 
     # ---- constructors -------------------------------------------------------------------------
@@ -90,22 +78,9 @@ class Orbit(display.Displayed):
         mass: u.Quantity | None = None,
     ) -> "Orbit":
         """Orbit from one size element (a, p or q), e, i, Omega, omega and the true anomaly nu."""
-        e = inputs.eccentricity(e)
-        _check_shapes(e=e, a=a, p=p, q=q, inc=inc, raan=raan, argp=argp, nu=nu)
-        size = inputs.semi_latus_rectum(e + 0.0, a=a, p=p, q=q)
-        angles = [
-            inputs.inclination(inc),
-            inputs.periodic_angle(raan, "longitude of the ascending node Omega"),
-            inputs.periodic_angle(argp, "argument of periapsis omega"),
-            inputs.true_anomaly(nu, e),
-        ]
-        mu = inputs.gravitational_parameter(primary, PRIMARY)
-        shape = np.broadcast_shapes(*(np.shape(x) for x in (size, e, *angles, mu)))
-        # Wrapped before broadcasting: a scalar default (0 deg) is wrapped once, not once per orbit. Arrays
-        # computed here are new and kept as they are; the others are copied (they may be views of inputs).
-        wrapped = [elements.wrap_two_pi(angles[1]), elements.wrap_two_pi(angles[2]), elements.wrap_pi(angles[3])]
-        fresh = [_owned(x, shape) for x in (size, e + 0.0, *wrapped)]
-        return cls(_field(mu, shape), *fresh[:2], _field(angles[0], shape), *fresh[2:], mass=_mass(mass, shape))
+        mass_si = _mass(mass)
+        fields = inputs.conic_elements(primary, e, a=a, p=p, q=q, inc=inc, raan=raan, argp=argp, nu=nu)
+        return cls(*fields, mass=mass_si)
 
     @classmethod
     def from_vectors(
@@ -115,10 +90,10 @@ class Orbit(display.Displayed):
         mu = inputs.gravitational_parameter(primary, PRIMARY)
         r_si = inputs.position(r)
         v_si = inputs.vector(v, units.M_PER_S, "velocity v")
-        _check_shapes(r=r_si[..., 0], v=v_si[..., 0], mu=mu)
+        broadcast_shape(r=r_si.shape[:-1], v=v_si.shape[:-1], primary=np.shape(mu))
         fields = elements.state_to_elements_unchecked(r_si, v_si, mu)
         shape = fields[0].shape
-        return cls(np.broadcast_to(mu, shape).astype(float), *fields, mass=_mass(mass, shape))
+        return cls(np.broadcast_to(mu, shape).astype(float), *fields, mass=_mass(mass))
 
     @classmethod
     def circular(
@@ -446,7 +421,7 @@ class Orbit(display.Displayed):
         IllConditionedWarning when that passes 1e-8.
         """
         dt_si = units.to_si(dt, units.S, "time step dt")
-        units.check_broadcast("the orbits times the time steps dt", np.shape(self.mu), np.shape(dt_si))
+        check_broadcast("the orbits times the time steps dt", np.shape(self.mu), np.shape(dt_si))
         r, v = propagate.propagate(*self._state, self.mu, dt_si)
         self._warn_if_too_long(dt_si)
         if not stm:
@@ -521,23 +496,17 @@ class Orbit(display.Displayed):
         return getattr(self, name)
 
 
-def _field(x, shape):
-    """A float64 array of the given shape owning its data: x copied, or broadcast then copied."""
-    x = np.asarray(x, dtype=float)
-    return x.copy() if x.shape == shape else np.broadcast_to(x, shape).astype(float)
+def _mass(mass):
+    """The orbiting body's mass (kg; None when not given), checked positive; the orbit broadcasts it to its shape."""
+    return None if mass is None else inputs.positive(mass, units.KG, "orbiting body mass m")
 
 
-def _owned(x, shape):
-    """_field for an array the caller has just computed (nobody else holds it): no copy if x has the shape."""
-    x = np.asarray(x, dtype=float)
-    return x if x.shape == shape else np.broadcast_to(x, shape).astype(float)
-
-
-def _mass(mass, shape):
-    if mass is None:
-        return None
-    value = inputs.positive(mass, units.KG, "orbiting body mass m")
-    return np.broadcast_to(value, shape).astype(float)
+def _mass_field(mass, shape):
+    """The mass (kg) as a float64 array of the orbits' shape; OrbitDomainError if it holds more orbits than that."""
+    if broadcast_shape(**{"orbiting body mass m": np.shape(mass), "orbits": shape}) != shape:
+        raise OrbitDomainError(f"orbiting body mass m has shape {np.shape(mass)}, more than the orbits' {shape}: "
+                               f"give one mass per orbit or one for all")
+    return np.broadcast_to(mass, shape).astype(float)
 
 
 QUANTITY_NAMES = [

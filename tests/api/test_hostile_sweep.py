@@ -26,7 +26,7 @@ from hypothesis import strategies as st
 
 import orbits
 from orbits import OrbitsError
-from orbits._common.units import MAX_ELEMENTS
+from orbits.core.checks import MAX_ELEMENTS
 
 KINDS = ("scalar", "nan", "inf", "zero_d", "empty", "float16", "masked", "numpy_masked", "complex", "object",
          "boolean", "huge_broadcast", "mixed_list", "wrong_unit", "no_unit")

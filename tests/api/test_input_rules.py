@@ -212,7 +212,7 @@ def test_a_size_no_call_can_hold_is_refused_before_anything_is_made():
     takes; within the bound the call runs. Each refusal comes at once (nothing of that size was allocated)."""
     import tracemalloc
 
-    from orbits._common.units import MAX_ELEMENTS
+    from orbits.core.checks import MAX_ELEMENTS
 
     def huge(value):
         return np.broadcast_to(value, (10**9,))  # a view of one number

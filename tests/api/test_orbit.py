@@ -120,6 +120,10 @@ def test_hyperbola_has_no_period():
         (dict(a=7000 * u.km, p=6000 * u.km, e=0.1), TypeError, "exactly one size element"),
         (dict(a=[7000, 8000] * u.km, e=[0.1, 0.2, 0.3]), OrbitDomainError, r"e \(3,\), a \(2,\)"),
         (dict(q=7000 * u.km, e=2.0, nu=150 * u.deg), OrbitDomainError, "asymptote"),
+        (dict(a=7000 * u.km, e=0.1, mass=[1, 2] * u.kg), OrbitDomainError, r"mass m has shape \(2,\), more than"),
+        (dict(a=[7000, 8000] * u.km, mass=[1, 2, 3] * u.kg), OrbitDomainError, r"mass m \(3,\), orbits \(2,\)"),
+        (dict(a=np.full((2**13, 1), 7000) * u.km, e=np.zeros(2**13)), OrbitDomainError,
+         "the broadcast of e, a.*: 67,108,864 elements, more than"),
     ],
 )
 def test_bad_input_is_a_clear_error(kwargs, error, fragment):

@@ -20,6 +20,8 @@ IMPLIED = {
     "inclination": ("i",),
     "true_anomaly": ("nu",),
     "semi_latus_rectum": ("size",),
+    "size_element": ("size",),
+    "require_eccentricity": ("e",),
     "require_inside_asymptotes": ("nu",),
     "check_conic": ("size", "e", "nu"),
     "check_elements": ("size", "e", "i", "nu", "mu"),
@@ -36,8 +38,12 @@ KEYS = {
 }
 
 
-#: helpers of the rules that check shapes or quote values, not a quantity's value
-NOT_RULES = {"<module>", "broadcast", "broadcast_shape", "first_where", "_spaced"}
+#: helpers of the rules that check shapes and sizes or quote values, not a quantity's value
+NOT_RULES = {"<module>", "broadcast", "broadcast_shape", "check_size", "check_broadcast", "first_where", "_spaced"}
+
+#: functions of orbits._common.inputs that are no rule on one value: lookups by name, and conic_elements, which
+#: reads each element through that element's own rule (counted apart)
+COMPOSITES = ("names", "find_body", "named_body", "conic_elements")
 
 
 def _module(frame) -> str:
@@ -53,7 +59,7 @@ def _is_rule(frame) -> bool:
     if module == "orbits.core.checks":
         return True
     if module == "orbits._common.inputs":
-        return not name.startswith(("parse_", "_")) and name not in ("names", "find_body", "named_body")
+        return not name.startswith(("parse_", "_")) and name not in COMPOSITES
     return module.startswith("orbits.core.") and name.startswith(("check_", "require_"))
 
 

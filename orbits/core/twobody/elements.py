@@ -158,7 +158,11 @@ def require_inside_asymptotes(e: ArrayLike, nu: ArrayLike) -> None:
     """Raise unless 1 + e cos nu > 0: on an open conic (e >= 1) the true anomaly lies strictly between the
     asymptotes, |nu| < arccos(-1/e) (mod 2 pi), where the point is at a finite distance (e >= 0 and finite nu are
     the caller's)."""
-    e, nu = broadcast(e=e, nu=nu)
+    _require_inside_asymptotes(*broadcast(e=e, nu=nu))
+
+
+def _require_inside_asymptotes(e: np.ndarray, nu: np.ndarray) -> None:
+    """require_inside_asymptotes on arrays of one shape."""
     denominator = 1.0 + e * np.cos(nu)
     beyond = (e >= 1.0) & (denominator <= 0.0)
     if np.any(beyond):
@@ -168,6 +172,61 @@ def require_inside_asymptotes(e: ArrayLike, nu: ArrayLike) -> None:
             f"e = {float(e[i])!r}; allowed |nu| < arccos(-1/e) = {float(np.arccos(-1.0 / e[i]))!r} rad (there "
             f"1 + e cos nu = {float(denominator[i])!r} must be > 0: the point is at infinity)"
         )
+
+
+#: the largest eccentricity accepted: Kepler's hyperbolic equation is verified up to it (tests/core/test_kepler.py)
+MAX_ECCENTRICITY = 1e12
+
+
+def require_eccentricity(e: np.ndarray) -> None:
+    """Raise OrbitDomainError unless every e is finite and in [0, MAX_ECCENTRICITY], where Kepler's equation is
+    verified."""
+    if not np.isfinite(e).all() or (e < 0).any():
+        bad = e[~(np.isfinite(e) & (e >= 0))].flat[0]
+        raise OrbitDomainError(f"eccentricity e = {float(bad)!r} is outside [0, inf)")
+    if (e > MAX_ECCENTRICITY).any():
+        bad = e[e > MAX_ECCENTRICITY].flat[0]
+        raise OrbitDomainError(f"eccentricity e = {float(bad)!r} is outside [0, {MAX_ECCENTRICITY:g}], the range "
+                               f"where Kepler's equation is verified")
+
+
+def semi_latus_rectum(element: str, size: np.ndarray, e: np.ndarray) -> np.ndarray:
+    """p (m) from e and one size element (m) of the same shape: p as given (element "p"), p = q (1 + e) ("q"), or
+    p = a (1 - e) (1 + e) ("a"), with a > 0 for an ellipse, a < 0 for a hyperbola and no finite a on the parabola
+    (OrbitDomainError otherwise). The caller has checked size (p, q positive; |a| finite within MAGNITUDE_RANGE or
+    0) and e (require_eccentricity): p is then positive and finite, at most 1e60 m times 1e24."""
+    if element == "p":
+        return size
+    if element == "q":
+        return size * (1.0 + e)
+    p = size * (1.0 - e) * (1.0 + e)
+    if not (p > 0.0).all():
+        _refuse_semi_major_axis(size, e)
+    return p
+
+
+def _refuse_semi_major_axis(a: np.ndarray, e: np.ndarray) -> None:
+    """OrbitDomainError for the first a that does not fit its e: e = 1, or a of the wrong sign (a > 0 iff e < 1)."""
+    if (e == 1.0).any():
+        raise OrbitDomainError("a parabola (e = 1) has no finite a: give q or p instead of a")
+    wrong = np.where(e < 1.0, a <= 0.0, a >= 0.0)
+    i = tuple(np.argwhere(wrong)[0])
+    rule = "a > 0 for a bound orbit (e < 1)" if e[i] < 1 else "a < 0 for a hyperbola (e > 1)"
+    raise OrbitDomainError(f"semi-major axis a = {float(a[i]) / 1e3:.10g} km with e = {float(e[i])!r}: need {rule}")
+
+
+def conic_fields(
+    element: str, e: np.ndarray, size: np.ndarray, inc: np.ndarray, raan: np.ndarray, argp: np.ndarray,
+    nu: np.ndarray, mu: np.ndarray
+) -> list[np.ndarray]:
+    """(mu, p, e, i, Omega, omega, nu): new float64 arrays of one shape, each owning its data, from arrays already
+    broadcast together (views allowed) whose own rules hold (size as semi_latus_rectum takes it, i in [0, pi],
+    Omega and omega in [0, 2 pi), nu in (-pi, pi], mu > 0). Here e is checked (require_eccentricity), p found from
+    the size element and nu kept strictly inside an open conic's asymptotes."""
+    require_eccentricity(e)
+    p = semi_latus_rectum(element, size, e)
+    _require_inside_asymptotes(e, nu)
+    return [np.array(x, dtype=float) for x in (mu, p, e, inc, raan, argp, nu)]
 
 
 def check_elements(p: ArrayLike, e: ArrayLike, inc: ArrayLike, nu: ArrayLike, mu: ArrayLike) -> None:
