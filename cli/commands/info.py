@@ -12,11 +12,37 @@ WIDTH = 80
 
 def command(
     sources: Annotated[bool, typer.Option("--sources", help="also list the source of every constant")] = False,
+    compile_kernels: Annotated[bool, typer.Option(
+        "--compile", help="first compile every kernel not yet in the cache (once per machine and version)")] = False,
     fmt: FormatOption = Format.table,
 ) -> None:
-    """Versions of orbits and its dependencies, where the compiled code is cached, which ephemeris answers, and the
-    catalogue of bodies (GM, radius, rotation, J2); with --sources, the publication behind each constant."""
+    """Versions of orbits and its dependencies, where the compiled code is cached and which kernels it holds, which
+    ephemeris answers, and the catalogue of bodies (GM, radius, rotation, J2); with --sources, the publication
+    behind each constant.
+
+    A kernel absent from the cache compiles at the first batch of 65,536 elements or more that needs it (smaller
+    ones run the NumPy implementation meanwhile); --compile compiles them all now, saying how long each took.
+
+    Example:
+
+        orbits info --compile
+    """
+    if compile_kernels:
+        _compile()
     show(fmt.value, sources)
+
+
+def _compile() -> None:
+    """Compile the absent kernels, one line on stderr for each, with its time."""
+    from orbits.tools.kernels import compile_all
+
+    def report(kernel: str, seconds: float | None) -> None:
+        if seconds is not None:
+            typer.echo(f"orbits: compiled {kernel} in {seconds:.1f} s", err=True)
+
+    spent = compile_all(report)
+    if spent:
+        typer.echo(f"orbits: {len(spent)} kernels compiled in {sum(spent.values()):.0f} s", err=True)
 
 
 def show(fmt: str, sources: bool = False) -> None:
@@ -54,10 +80,20 @@ def _summary(facts: dict) -> list[str]:
     lines += _wrapped("ephemeris", facts["ephemeris"])
     caches = dict(facts["caches"])
     lines += _wrapped("compiled kernels in use", caches.pop("compiled kernels in use (ORBITS_JIT)"))
+    lines += _wrapped("kernels in the cache", _readiness(facts["kernels_ready"]))
     lines.append("caches:")
     for label, path in caches.items():
         lines += wrapped(label, WIDTH, initial_indent="  ", subsequent_indent="  ") + [f"    {path}"]
     return lines + [""]
+
+
+def _readiness(ready: dict[str, bool]) -> str:
+    """"all 7" or "3 of 7; absent: ..., compiled by orbits info --compile"."""
+    absent = [kernel.rpartition("._fast_")[2] for kernel, is_ready in ready.items() if not is_ready]
+    if not absent:
+        return f"all {len(ready)}"
+    return (f"{len(ready) - len(absent)} of {len(ready)}; absent: {', '.join(absent)} (orbits info --compile "
+            f"compiles them)")
 
 
 def _sources(constants: dict) -> list[str]:

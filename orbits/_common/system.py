@@ -32,6 +32,7 @@ def info() -> dict[str, Any]:
         "caches": {"heyoka compiled integrators (HEYOKA_CACHE_DIR)": heyoka_cache,
                    "orbits compiled kernels (numba; NUMBA_CACHE_DIR)": _fast.cache_dir() or "in memory (no folder)",
                    "compiled kernels in use (ORBITS_JIT)": _kernels_in_use()},
+        "kernels_ready": {kernel: _fast.ready(kernel) for kernel in _entry_kernels()},
         "ephemeris": _ephemeris(),
         "constants": {"G": "CODATA 2018 (astropy.constants)", **{b.name: b.source for b in BODIES.values()}},
         "bodies": [{"name": b.name, "kind": b.kind, "parent": b.parent, "gm_m3_s2": b.gm,
@@ -48,10 +49,19 @@ def _ephemeris() -> str:
     return "astropy built-in (approximate; pip install 'orbits[ephemeris]' for JPL DE421)"
 
 
+def _entry_kernels() -> list[str]:
+    """The solvers' entry kernels ("twobody._fast_kepler.elliptic"), as orbits.core._fast.ENTRY_KERNELS lists them."""
+    return [f"{module}.{name}" for module, names in _fast.ENTRY_KERNELS.items() for name in names]
+
+
 def _kernels_in_use() -> str:
-    """Whether the compiled kernels would run, told without importing numba (orbits.core._fast.enabled)."""
-    if os.environ.get("ORBITS_JIT", "1").strip().lower() in ("0", "false", "no", "off"):
+    """When the compiled kernels run, told without importing numba (orbits.core._fast.use)."""
+    setting = os.environ.get("ORBITS_JIT", "auto").strip().lower()
+    if setting in ("0", "false", "no", "off"):
         return "no: ORBITS_JIT is off, the NumPy implementations run"
     if importlib.util.find_spec("numba") is None:
         return "no: numba is not installed, the NumPy implementations run"
-    return "yes"
+    if setting in ("1", "true", "yes", "on"):
+        return "always (ORBITS_JIT=1): an absent kernel compiles at its first call"
+    return (f"a cached kernel for any batch, an absent one compiles for batches of {_fast.AUTO_MIN_BATCH:,} or more "
+            f"(ORBITS_JIT=auto)")

@@ -15,10 +15,11 @@ modules they take constants from: numba checks only the file that defines a cach
 without it a change to a helper or a constant in another file would load stale machine code.
 
 Settings, read once per process:
-- ``ORBITS_JIT`` chooses when the compiled kernels run: ``auto`` (the default) for Kepler and propagation batches
-  of at least AUTO_MIN_BATCH elements, so that a calculator query or a scene's few hundred outputs never import
-  numba; ``1`` always; ``0`` never. The float64
-  NumPy implementations (tested against the same mpmath references) run otherwise, and when numba is not
+- ``ORBITS_JIT`` chooses when the compiled kernels run: ``auto`` (the default) runs a kernel whose machine code is
+  ready (loaded in this process or in the disk cache: ``ready``) for a batch of any size, and compiles an absent
+  one only for a batch of at least AUTO_MIN_BATCH elements, so that a calculator query never waits for a compile
+  (``orbits info --compile`` compiles them all ahead: ``orbits.tools.kernels``); ``1`` always; ``0`` never. The
+  float64 NumPy implementations (tested against the same mpmath references) run otherwise, and when numba is not
   installed.
 - ``ORBITS_NUM_THREADS`` caps the threads a large batch is split over (default: the cores this process
   may run on). The kernels release the GIL, and every element is computed independently, so the
@@ -49,13 +50,23 @@ ROUND = 1 << 16
 _KERNEL_DEPENDENCIES = ("twobody/_kepler_shared.py", "twobody/_propagate_shared.py",
                         "manoeuvres/_lambert_shared.py", "_dop853_shared.py", "_roots.py", "series.py")
 
-#: Kepler and propagation batches from this size on start the compiled kernels by themselves ("auto" mode); smaller
-#: ones, such as a calculator query, take the NumPy implementation (the same algorithm and accuracy:
-#: tests/core/test_fast_kepler.py, test_propagate.py, test_propagate_long_flights.py) and never import numba.
+#: Batches from this size on compile an absent kernel ("auto" mode); smaller ones, such as a calculator query, run
+#: a kernel only when its machine code is ready, and the NumPy implementation otherwise (the same algorithm and
+#: accuracy: tests/core/test_fast_kepler.py, test_propagate.py, test_propagate_long_flights.py) without numba.
 AUTO_MIN_BATCH = 1 << 16
 
+#: The kernels the solvers start, by module under orbits.core: what `ready` looks for, `orbits info` reports and
+#: orbits.tools.kernels compiles ahead.
+ENTRY_KERNELS = {
+    "twobody._fast_kepler": ("elliptic", "hyperbolic", "parabolic"),
+    "twobody._fast_propagate": ("propagate",),
+    "twobody._fast_transition": ("transition",),
+    "manoeuvres._fast_lambert": ("solve",),
+    "periodic._fast_cr3bp": ("integrate",),
+}
+
 _state = {"mode": None, "threads": None, "pool": None, "cache_dir": None, "announced": set(), "kernels": [],
-          "checked": {}}
+          "checked": {}, "ready": {}}
 
 
 def _mode():
@@ -71,13 +82,33 @@ def _numba_installed():
     return importlib.util.find_spec("numba") is not None
 
 
-def use(n):
-    """Whether a batch of n elements runs the compiled kernels: never with ORBITS_JIT=0 or without numba, always
-    with ORBITS_JIT=1 (or set_enabled(True)), and in the default "auto" mode from AUTO_MIN_BATCH elements on."""
+def use(n, kernel):
+    """Whether a batch of n elements runs the compiled `kernel` ("twobody._fast_kepler.elliptic": module under
+    orbits.core, then name): never with ORBITS_JIT=0 or without numba, always with ORBITS_JIT=1 (or
+    set_enabled(True)), and in the default "auto" mode when it is ready (any n) or n >= AUTO_MIN_BATCH."""
     mode = _mode()
-    if mode is False or (mode == "auto" and n < AUTO_MIN_BATCH):
+    if mode is False or (mode == "auto" and n < AUTO_MIN_BATCH and not ready(kernel)):
         return False
     return _numba_installed() and _numba_imports()
+
+
+def ready(kernel):
+    """Whether the compiled `kernel` runs without compiling: loaded in this process, or its machine code filed in
+    the disk cache for this Python (looked up once per process, without importing numba). A cache written by
+    another CPU model is filed but not loadable, and compiles again on first use."""
+    known = _state["ready"].get(kernel)
+    if known is None:
+        folder = cache_dir()
+        module, _, name = kernel.rpartition(".")
+        index = f"*/{module.rpartition('.')[2]}.{name}-*.py{sys.version_info[0]}{sys.version_info[1]}.nbi"
+        known = _state["ready"][kernel] = folder is not None and any(Path(folder).glob(index))
+    return known
+
+
+def _mark_ready(kernel):
+    """Remember that a kernel (a numba dispatcher) has run in this process: later calls of any size may use it."""
+    module = kernel.py_func.__module__.removeprefix("orbits.core.")
+    _state["ready"][f"{module}.{kernel.py_func.__qualname__}"] = True
 
 
 def enabled():
@@ -242,6 +273,7 @@ def run(kernel, n, *arrays):
     if wrong is not None:
         _clear_corrupt_cache(f"held {wrong}")
         return n
+    _mark_ready(kernel)
     return count
 
 

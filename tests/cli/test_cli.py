@@ -78,6 +78,32 @@ def test_info_lists_versions_without_importing_backends():
     assert data["versions"]["numpy"] and "heyoka compiled integrators (HEYOKA_CACHE_DIR)" in data["caches"]
 
 
+def test_info_says_which_kernels_the_cache_holds_and_compile_fills_the_gaps(monkeypatch):
+    """`orbits info` reports each entry kernel as orbits.core._fast.ready finds it; --compile starts, through
+    orbits.tools.kernels, exactly the kernels not ready (two pretended absent here, their starters replaced by
+    recorders), one line each on stderr, and leaves ORBITS_JIT's mode as it was."""
+    from orbits.core import _fast
+    from orbits.tools import kernels
+
+    names = kernels.entry_kernels()
+    assert len(names) == 7 and set(names) == set(kernels.STARTERS)
+    absent = ["twobody._fast_propagate.propagate", "manoeuvres._fast_lambert.solve"]
+    monkeypatch.setitem(_fast._state, "ready", {name: name not in absent for name in names})
+    monkeypatch.setattr(_fast, "enabled", lambda: True)
+    started = []
+    for name in absent:
+        monkeypatch.setitem(kernels.STARTERS, name, lambda name=name: started.append((name, _fast._mode())))
+    mode = _fast._mode()
+    data = json.loads(run("info", "--format", "json").stdout)
+    assert [name for name, ready in data["kernels_ready"].items() if not ready] == absent
+    result = run("info", "--compile")
+    assert started == [(name, True) for name in absent] and _fast._mode() == mode
+    assert "kernels in the cache: 5 of 7; absent: propagate.propagate, lambert.solve" in result.stdout
+    assert [line.split(" in ")[0] for line in result.stderr.splitlines()] == [
+        "orbits: compiled twobody._fast_propagate.propagate", "orbits: compiled manoeuvres._fast_lambert.solve",
+        "orbits: 2 kernels compiled"]
+
+
 def test_help_does_not_load_heavy_modules():
     code = (
         "import sys; from orbits_cli.main import app; from typer.testing import CliRunner; "

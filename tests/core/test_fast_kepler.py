@@ -196,18 +196,29 @@ def test_orbits_jit_0_runs_numpy_without_numba():
     assert run_python(code, ORBITS_JIT="0").strip() == "False"
 
 
-def test_a_small_query_never_imports_numba_and_a_large_batch_compiles_once_with_a_word(tmp_path):
-    """The default ("auto"): a calculator query takes the NumPy path; a batch of AUTO_MIN_BATCH elements starts
-    the kernels, saying so once on stderr when nothing is cached yet."""
+def test_a_small_query_waits_for_no_compile_and_a_cached_kernel_serves_any_size(tmp_path):
+    """The default ("auto"): on an empty cache a calculator query takes the NumPy path without importing numba; a
+    batch of AUTO_MIN_BATCH elements compiles the kernel, saying so once on stderr; from then on a fresh process
+    runs the cached kernel for a one-element query, loading it (a cache hit), compiling nothing."""
+    cache = {"NUMBA_CACHE_DIR": str(tmp_path)}
     small = ("import sys; from orbits.core.twobody import kepler; kepler.eccentric_anomaly([0.1, 1.0], 0.5); "
              "kepler.hyperbolic_anomaly(3.0, 2.0); kepler.parabolic_anomaly(1.0); print('numba' in sys.modules)")
-    assert run_python(small).strip() == "False"
+    assert run_python(small, **cache).strip() == "False"
     large = ("import sys, numpy as np; from orbits.core import _fast; from orbits.core.twobody import kepler; "
              "kepler.eccentric_anomaly(np.linspace(0, 3, _fast.AUTO_MIN_BATCH), 0.5); print('numba' in sys.modules)")
     result = subprocess.run([sys.executable, "-c", large], capture_output=True, text=True, check=True,
-                            env={**os.environ, "NUMBA_CACHE_DIR": str(tmp_path)})
+                            env={**os.environ, **cache})
     assert result.stdout.strip() == "True"
     assert [line for line in result.stderr.splitlines() if line.startswith("orbits: compiling")] != []
+    one = ("import json; from orbits.core.twobody import kepler; E = kepler.eccentric_anomaly(1.0, 0.5); "
+           "from orbits.core.twobody import _fast_kepler as k; "
+           "print(json.dumps([float(E), sum(k.elliptic.stats.cache_hits.values()), "
+           "sum(k.elliptic.stats.cache_misses.values())]))")
+    result = subprocess.run([sys.executable, "-c", one], capture_output=True, text=True, check=True,
+                            env={**os.environ, **cache})
+    value, hits, misses = json.loads(result.stdout)
+    assert (hits, misses) == (1, 0) and "compiling" not in result.stderr
+    assert abs(value - kepler.eccentric_anomaly(1.0, 0.5)) <= 4 * np.spacing(value)  # either path: within 4 ulp
 
 
 def test_disk_cache_is_written_then_loaded(tmp_path):

@@ -97,8 +97,9 @@ def test_random_flybys_stay_near_their_conditioning(path):
     assert worst[0] <= 3e-14 and worst[1] <= 3e-14, worst
 
 
-def test_small_batches_never_import_numba():
-    """The default (auto) mode propagates a calculator-sized batch in NumPy without importing numba."""
+def test_small_batches_never_import_numba(tmp_path):
+    """The default (auto) mode propagates a calculator-sized batch in NumPy without importing numba while the
+    kernel is not in the cache (here an empty one)."""
     code = (
         "import sys, numpy as np\n"
         "from orbits.core.twobody.propagate import propagate\n"
@@ -107,7 +108,7 @@ def test_small_batches_never_import_numba():
         "assert r.shape == (500, 3) and np.all(np.isfinite(r))\n"
         "print('numba' in sys.modules)\n"
     )
-    env = {k: v for k, v in os.environ.items() if k != "ORBITS_JIT"}
+    env = {**{k: v for k, v in os.environ.items() if k != "ORBITS_JIT"}, "NUMBA_CACHE_DIR": str(tmp_path)}
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, check=True)
     assert out.stdout.strip() == "False", out.stdout + out.stderr
     assert "compiling" not in out.stderr

@@ -432,7 +432,7 @@ def solve(r1: ArrayLike, r2: ArrayLike, tof: ArrayLike, mu: ArrayLike, revolutio
     r1, r2 = _position(r1, "r1"), _position(r2, "r2")
     shape = broadcast_shape(r1=r1.shape[:-1], r2=r2.shape[:-1], tof=tof.shape, mu=mu.shape,
                             revolutions=revolutions.shape, normal=() if normal is None else np.shape(normal)[:-1])
-    if _fast.use(int(np.prod(shape))):
+    if _fast.use(int(np.prod(shape)), "manoeuvres._fast_lambert.solve"):
         solution = _compiled(r1, r2, tof, mu, revolutions, branch, prograde, normal, shape)
         if solution is not None:
             return solution

@@ -167,12 +167,13 @@ class Flow:
 
 
 def use_compiled(continuation: bool) -> bool:
-    """Whether corrections run the compiled integrator: under ORBITS_JIT=auto (the default) for continuations along a
-    family, which integrate hundreds of trajectories, and not for a single correction from a first guess, which
-    would spend longer loading numba than integrating; always with ORBITS_JIT=1, never with 0 or without numba."""
+    """Whether corrections run the compiled integrator: under ORBITS_JIT=auto (the default) when its machine code is
+    in the cache, and otherwise for continuations along a family, which integrate hundreds of trajectories and repay
+    the compile, not for a single correction from a first guess; always with ORBITS_JIT=1, never with 0 or without
+    numba."""
     from orbits.core import _fast
 
-    return _fast.use(_fast.AUTO_MIN_BATCH if continuation else 1)
+    return _fast.use(_fast.AUTO_MIN_BATCH if continuation else 1, "periodic._fast_cr3bp.integrate")
 
 
 @dataclass(frozen=True, eq=False)

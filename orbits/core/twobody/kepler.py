@@ -157,7 +157,7 @@ def eccentric_anomaly(M: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     Accuracy: within 4 ulp of the exact root for e <= 1 - 2**-53 (tests/core/test_kepler.py).
     """
     M, e = broadcast(M=M, e=e)
-    if _fast.use(M.size):
+    if _fast.use(M.size, "twobody._fast_kepler.elliptic"):
         return _compiled("elliptic", _eccentric_anomaly_numpy, M, e)
     return _eccentric_anomaly_numpy(M, e)
 
@@ -280,7 +280,7 @@ def hyperbolic_anomaly(M: ArrayLike, e: ArrayLike) -> float | np.ndarray:
     form H + log1p(-exp(-2H)) = log((M + H) / (e / 2)).
     """
     M, e = broadcast(M=M, e=e)
-    if _fast.use(M.size):
+    if _fast.use(M.size, "twobody._fast_kepler.hyperbolic"):
         return _compiled("hyperbolic", _hyperbolic_anomaly_numpy, M, e)
     return _hyperbolic_anomaly_numpy(M, e)
 
@@ -399,7 +399,7 @@ def parabolic_anomaly(W: ArrayLike) -> float | np.ndarray:
     Odd in W; W = 0 gives 0 exactly; finite for every finite W.
     """
     W = np.asarray(W, dtype=float)
-    if _fast.use(W.size):
+    if _fast.use(W.size, "twobody._fast_kepler.parabolic"):
         return _compiled("parabolic", _parabolic_anomaly_numpy, W)
     return _parabolic_anomaly_numpy(W)
 

@@ -330,7 +330,7 @@ def propagate(r0: ArrayLike, v0: ArrayLike, mu: ArrayLike, dt: ArrayLike) -> tup
     Batches from orbits.core._fast.AUTO_MIN_BATCH states on run the compiled port of this algorithm (ORBITS_JIT
     decides).
     """
-    if _fast.use(_batch_size(r0, v0, mu, dt)):
+    if _fast.use(_batch_size(r0, v0, mu, dt), "twobody._fast_propagate.propagate"):
         result = _propagate_compiled(r0, v0, mu, dt)
         if result is not None:
             return result

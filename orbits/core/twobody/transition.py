@@ -45,7 +45,7 @@ def transition_matrix(r0: ArrayLike, v0: ArrayLike, mu: ArrayLike, dt: ArrayLike
     DegenerateOrbitError, as in orbits.core.twobody.propagate.propagate; a matrix that leaves float64 (a flight that all
     but hits the focus) raises OrbitDomainError. Its error: relative_error(phi, r0, v0, mu)."""
     r0, v0, mu, dt, batch = _checked(r0, v0, mu, dt)
-    phi = _compiled(r0, v0, mu, dt) if _fast.use(dt.size) else None
+    phi = _compiled(r0, v0, mu, dt) if _fast.use(dt.size, "twobody._fast_transition.transition") else None
     if phi is None:
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
             phi = _transition_numpy(r0, v0, mu, dt)
