@@ -55,6 +55,7 @@ SUMMARY = {
     "bench propagate": "Two-body propagation against heyoka's lagrange_prop.",
     "bench periodic": "Periodic orbits: one halo and a family, corrections counted.",
     "bench api": "The unit-aware API's cost over the float64 core.",
+    "bench call": "One call and small batches against heyoka's cfuncs.",
     "bench cli": "Command-line cold start in fresh processes.",
     "bench validate": "Where the time of orbits validate goes.",
     "bench lambert": "Lambert solvers against lamberthub (and pykep, hapsira).",
@@ -248,6 +249,9 @@ EXAMPLES = {
     "bench api": [
         "orbits bench api --sizes 1,1000",
         "orbits bench api --sizes 1,100000 --repeats 3",
+    ],
+    "bench call": [
+        "orbits bench call --sizes 1,1000 --repeats 3 --no-compile  # the cache as it is",
     ],
     "bench cli": [
         "orbits bench cli --runs 1 --no-first-run",

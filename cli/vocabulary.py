@@ -164,6 +164,7 @@ VOCABULARY = {
     "--sizes": "batch sizes",
     "--runs": "command runs",
     "--first-run": "a first run on an empty cache",
+    "--compile": "the compiled kernels the cache lacks, compiled first",
     "--transfers": "Lambert transfers per benchmark",
     "--epochs": "epochs per benchmark",
     "--quick": "a shorter run",

@@ -117,6 +117,27 @@ def api(
     _emit(rows_to_json(rows), format_api(rows), fmt, output)
 
 
+def call(
+    sizes: Annotated[str, typer.Option(help="comma-separated batch sizes (1 = one element, as scalars)")] = (
+        "1,1000,10000"),
+    repeats: RepeatsOption = 5,
+    compile_first: Annotated[bool, typer.Option(
+        "--compile/--no-compile", help="compile the kernels the cache lacks first (else those calls run NumPy)"
+    )] = True,
+    output: OutputOption = None,
+    fmt: FormatOption = Format.table,
+) -> None:
+    """Time per call where users are: Kepler's equation, propagation, the transition matrix, Lambert and
+    Orbit.propagate on one element and on small batches, one thread, default settings, beside heyoka's compiled
+    kepE and lagrange_prop on the same inputs. Kernels absent from the cache are compiled first (the time is not
+    counted), unless --no-compile."""
+    from orbits.tools.bench.call import bench_call, format_call
+    from orbits.tools.bench.table import rows_to_json
+
+    rows = bench_call(sizes=_sizes(sizes), repeats=repeats, compile_first=compile_first)
+    _emit(rows_to_json(rows), format_call(rows), fmt, output)
+
+
 def _sizes(text):
     try:
         sizes = tuple(int(s) for s in text.split(",") if s.strip())
@@ -212,6 +233,7 @@ def all_(
             "periodic": {"members": 10, "numpy": False},
             "ephemeris": {"n": 10_000},
             "api": {"sizes": (1, 100_000)},
+            "call": {"sizes": (1, 1000)},
             "cli": {"runs": 3},
         }
     report = bench_all(names=_benchmark_names(only), **options)

@@ -21,12 +21,7 @@ def command(
     behind each constant.
 
     A kernel absent from the cache compiles at the first batch of 65,536 elements or more that needs it (smaller
-    ones run the NumPy implementation meanwhile); --compile compiles them all now, saying how long each took.
-
-    Example:
-
-        orbits info --compile
-    """
+    ones run the NumPy implementation meanwhile); --compile compiles them all now, saying how long each took."""
     if compile_kernels:
         _compile()
     show(fmt.value, sources)

@@ -79,9 +79,11 @@ class Body:
     j2_radius: float | None = None
     retrograde: bool = False
     system_gm: float | None = None
-    #: the third and fourth zonal harmonics at j2_radius, where the catalogue has them (the Earth)
+    #: the third to sixth zonal harmonics at j2_radius, where the catalogue has them (the Earth)
     j3: float | None = None
     j4: float | None = None
+    j5: float | None = None
+    j6: float | None = None
 
     @property
     def mass(self) -> float:
@@ -160,15 +162,18 @@ _CATALOGUE = [
                       "(normalised C20 = -1.96972335776e-6 at the 6051.0 km reference radius; J2 = -sqrt(5) C20)"),
     Body("Earth", 3.986004e14, 6.3781e6, SIDEREAL_DAY,
          f"GM and equatorial radius: {_IAU2015}; rotation: IERS sidereal day; J2: IERS Conventions (2010), Table 1.1; "
-         "J3 and J4: EGM2008 (Pavlis et al. 2012, JGR 117, B04406), J_n = -sqrt(2n + 1) C_n0 from its normalised "
-         "C30 = 9.57161207093473e-7 and C40 = 5.39965866638991e-7 at 6378136.3 m, rescaled to 6378136.6 m; "
+         "J3 to J6: EGM2008 (Pavlis et al. 2012, JGR 117, B04406), J_n = -sqrt(2n + 1) C_n0 from its normalised "
+         "C30 = 9.57161207093473e-7, C40 = 5.39965866638991e-7, C50 = 6.86702913736681e-8 and "
+         "C60 = -1.49953927978527e-7 at 6378136.3 m, rescaled to 6378136.6 m; "
          f"system GM (Earth and Moon): {_DE430}",
          MeanElements("Sun", 1.00000261 * AU, 0.01671123, _deg(0.00001531), _deg(180.0),
                       _deg(102.93768193 - 180.0 + 360.0), _deg(100.46457166 - 102.93768193),
                       _STANDISH + ", Earth-Moon barycentre (I = -0.00001531 deg written as +I with the node at 180)"),
          "Sun", "planet", 1.0826359e-3, 6_378_136.6, system_gm=403_503.235502259810 * _KM3,
          j3=-math.sqrt(7.0) * 9.57161207093473e-7 * (6_378_136.3 / 6_378_136.6) ** 3,
-         j4=-3.0 * 5.39965866638991e-7 * (6_378_136.3 / 6_378_136.6) ** 4),
+         j4=-3.0 * 5.39965866638991e-7 * (6_378_136.3 / 6_378_136.6) ** 4,
+         j5=-math.sqrt(11.0) * 6.86702913736681e-8 * (6_378_136.3 / 6_378_136.6) ** 5,
+         j6=math.sqrt(13.0) * 1.49953927978527e-7 * (6_378_136.3 / 6_378_136.6) ** 6),
     _planet("Mars", 42_828.37362069909 * _KM3, _HORIZONS, 3396.19, 1.02595676,
             "WGCCRE 2015 (350.891982 deg/d)",
             _standish(1.52371034, 0.09339410, 1.84969142, -4.55343205, -23.94362959, 49.55953891),

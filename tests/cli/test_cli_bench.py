@@ -27,6 +27,22 @@ def test_bench_api_json_format():
     assert {r["case"].split()[0] for r in json.loads(result.output)} == {"Orbit.propagate", "Orbit.from_elements"}
 
 
+def test_bench_call_times_each_case_beside_heyoka_where_it_has_a_cfunc():
+    """One row per case and size; heyoka's kepE and lagrange_prop time the same inputs (when heyoka is installed),
+    the other cases have no yardstick; every time is a positive number of seconds."""
+    result = run("bench", "call", "--sizes", "1,3", "--repeats", "1", "--no-compile", "--format", "json")
+    assert result.exit_code == 0, result.output
+    rows = json.loads(result.output)
+    cases = ["Kepler E", "propagation", "STM", "Lambert", "Orbit.propagate", "Orbit.propagate, stm=True"]
+    assert [(r["case"], r["n"]) for r in rows] == [(case, n) for case in cases for n in (1, 3)]
+    assert all(r["orbits_seconds"] > 0 for r in rows)
+    peers = {r["case"]: r["peer"] for r in rows if r["peer_seconds"] is not None}
+    pytest.importorskip("heyoka")
+    assert peers == {"Kepler E": "heyoka kepE", "propagation": "heyoka lagrange_prop"}
+    table = run("bench", "call", "--sizes", "1", "--repeats", "1", "--no-compile").output
+    assert "Kepler E (beside heyoka kepE)" in table and max(len(line) for line in table.splitlines()) <= 80
+
+
 def test_bench_api_rejects_bad_sizes():
     result = run("bench", "api", "--sizes", "1,x")
     assert result.exit_code == 2 and "comma-separated" in result.output

@@ -4,6 +4,7 @@ from collections.abc import Iterable, Mapping, Sequence
 from typing import Any
 
 from orbits.tools.bench.api import bench_api, format_api
+from orbits.tools.bench.call import bench_call, format_call
 from orbits.tools.bench.cli import bench_cli, format_cli
 from orbits.tools.bench.ephemeris import bench_ephemeris, format_ephemeris
 from orbits.tools.bench.kepler import bench_kepler, format_rows
@@ -23,6 +24,7 @@ BENCHMARKS = {
     "periodic": (bench_periodic, format_periodic),
     "ephemeris": (bench_ephemeris, format_ephemeris),
     "api": (bench_api, format_api),
+    "call": (bench_call, format_call),
     "cli": (bench_cli, format_cli),
     "validate": (bench_validate, format_validate),
 }
