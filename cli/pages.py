@@ -252,6 +252,7 @@ EXAMPLES = {
     ],
     "bench call": [
         "orbits bench call --sizes 1,1000 --repeats 3 --no-compile  # the cache as it is",
+        "orbits bench call --sizes 1 --repeats 1 --no-compile --format json",
     ],
     "bench cli": [
         "orbits bench cli --runs 1 --no-first-run",

@@ -66,7 +66,7 @@ ENTRY_KERNELS = {
 }
 
 _state = {"mode": None, "threads": None, "pool": None, "cache_dir": None, "announced": set(), "kernels": [],
-          "checked": {}, "ready": {}}
+          "checked": {}, "ready": {}, "numba": None}
 
 
 def _mode():
@@ -79,7 +79,10 @@ def _mode():
 
 
 def _numba_installed():
-    return importlib.util.find_spec("numba") is not None
+    """Whether numba can be imported (looked up once per process: the lookup reads the file system)."""
+    if _state["numba"] is None:
+        _state["numba"] = importlib.util.find_spec("numba") is not None
+    return _state["numba"]
 
 
 def use(n, kernel):
@@ -90,6 +93,16 @@ def use(n, kernel):
     if mode is False or (mode == "auto" and n < AUTO_MIN_BATCH and not ready(kernel)):
         return False
     return _numba_installed() and _numba_imports()
+
+
+def kernel_array(x):
+    """x as the array type every kernel takes, a writable C-contiguous float64 array: x itself when it is one, else a
+    copy (one array type per kernel, so numba compiles it once). A broadcast view is copied whatever its flags say
+    (zero strides: one element stands for many), also when it holds one element or none."""
+    x = np.asarray(x, dtype=float)
+    if not (x.base is not None and 0 in x.strides) and x.flags.c_contiguous and x.flags.writeable:  # strides first:
+        return x  # reading a broadcast view's writeable flag warns
+    return np.array(x, dtype=float, order="C")
 
 
 def ready(kernel):

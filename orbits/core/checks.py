@@ -4,6 +4,8 @@ Each error is an OrbitDomainError naming the quantity, its first offending value
 The unit-aware rules (quantities, strings, primaries, size elements) build on these in orbits._common.inputs.
 """
 
+import math
+
 import numpy as np
 from numpy.typing import ArrayLike
 
@@ -58,7 +60,7 @@ def check_size(count: int, name: str) -> None:
 def check_broadcast(name: str, *shapes: tuple[int, ...]) -> tuple[int, ...]:
     """The broadcast of `shapes`, checked against MAX_ELEMENTS before any array of it exists."""
     shape = np.broadcast_shapes(*shapes)
-    check_size(int(np.prod(shape, dtype=float)), name)
+    check_size(math.prod(shape), name)
     return shape
 
 
@@ -73,12 +75,21 @@ def broadcast_shape(**shapes: tuple[int, ...]) -> tuple[int, ...]:
 
 
 def broadcast(**arrays: ArrayLike) -> list[np.ndarray]:
-    """The named values as float64 arrays broadcast together (views), in order; broadcast_shape's error names them,
-    and a broadcast of more than MAX_ELEMENTS is refused before anything of its size is made."""
+    """The named values as float64 arrays broadcast together, in order: each value itself where its shape is the
+    broadcast's, else a read-only view (a compiled kernel copies it to the writable array it takes).
+    broadcast_shape's error names them, and a broadcast of more than MAX_ELEMENTS is refused before anything of its
+    size is made."""
     values = [np.asarray(value, dtype=float) for value in arrays.values()]
-    shape = broadcast_shape(**{name: value.shape for name, value in zip(arrays, values)})
-    check_size(int(np.prod(shape, dtype=float)), f"the broadcast of {', '.join(arrays)}")
-    return np.broadcast_arrays(*values)
+    shapes = [value.shape for value in values]
+    if all(shape == shapes[0] for shape in shapes):  # nothing to broadcast (one value per call, the common case)
+        return values
+    shape = broadcast_shape(**dict(zip(arrays, shapes)))
+    check_size(math.prod(shape), f"the broadcast of {', '.join(arrays)}")
+    views = np.broadcast_arrays(*values)
+    for view, value in zip(views, values):
+        if view.shape != value.shape:  # a broadcast view: one element stands for many, so it is read-only
+            view.flags.writeable = False
+    return views
 
 
 def first_where(mask: ArrayLike, *arrays: ArrayLike) -> list[float]:

@@ -330,6 +330,16 @@ def _threads(heyoka, threads: int) -> Iterator[None]:
         heyoka.set_nthreads(previous)
 
 
+@contextlib.contextmanager
+def pinned_threads(count: int) -> Iterator[None]:
+    """heyoka's compiled functions on `count` threads inside the block: a benchmark pins them once around its timing
+    loop and times each solver's `bare` call, the cfunc alone."""
+    import heyoka
+
+    with _threads(heyoka, count):
+        yield
+
+
 def kepler_solver(threads: int = 1) -> Callable[[np.ndarray], np.ndarray]:
     """heyoka's kepE compiled as a cfunc: a function of a (2, n) array of (e, M) returning E (n,), run on `threads`
     threads (elliptic only: NaN for e >= 1)."""
@@ -343,6 +353,7 @@ def kepler_solver(threads: int = 1) -> Callable[[np.ndarray], np.ndarray]:
         with _threads(heyoka, threads):
             return cf(inputs)[0]
 
+    solve.bare = lambda inputs: cf(inputs)[0]  # the cfunc alone, on the threads set around it (pinned_threads)
     return solve
 
 
@@ -363,4 +374,5 @@ def lagrange_propagator(threads: int = 1) -> Callable[[np.ndarray], np.ndarray]:
         with _threads(heyoka, threads):
             return cf(inputs)
 
+    propagate.bare = cf  # the cfunc alone, on the threads set around it (pinned_threads)
     return propagate

@@ -167,9 +167,7 @@ def _compiled(kernel, numpy_version, *inputs):
     _fast.announce("_fast_kepler")
     from orbits.core.twobody import _fast_kepler
 
-    # Writable C-contiguous inputs (copied only if needed): one array type per kernel, so numba compiles
-    # each kernel once rather than again for read-only arrays.
-    flat = [np.require(x, requirements=["C", "W"]).reshape(-1) for x in inputs]
+    flat = [_fast.kernel_array(x).reshape(-1) for x in inputs]
     out = np.empty_like(flat[0])
     if _fast.run(getattr(_fast_kepler, kernel), out.size, *flat, out):
         return numpy_version(*inputs)

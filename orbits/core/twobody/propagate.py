@@ -371,7 +371,7 @@ def _contiguous(x, shape):
     passes the kernel the same array types, so numba compiles it once."""
     if x.shape != shape:
         x = np.broadcast_to(x, shape)
-    return np.require(x, requirements=["C", "W"])
+    return _fast.kernel_array(x)
 
 
 def _lagrange(chi, r0, sigma0, alpha, grow, decay):

@@ -107,8 +107,7 @@ def _compiled(r0, v0, mu, dt):
     _fast.announce("_fast_transition")
     from orbits.core.twobody import _fast_transition
 
-    r0, v0 = (np.require(x, requirements=["C", "W"]) for x in (r0, v0))
-    mu, dt = (np.require(x, requirements=["C", "W"]) for x in (mu, dt))
+    r0, v0, mu, dt = (_fast.kernel_array(x) for x in (r0, v0, mu, dt))
     phi = np.empty((dt.size, 6, 6))
     if _fast.run(_fast_transition.transition, dt.size, r0, v0, mu, dt, phi):
         return None

@@ -73,7 +73,7 @@ def _kepler_case(n, rng, heyoka):
         M, e = float(M[0]), float(e[0])
     pairs = np.ascontiguousarray(np.vstack([np.atleast_1d(e), np.atleast_1d(M)]))
     return ("Kepler E", lambda: kepler.eccentric_anomaly(M, e), "heyoka kepE",
-            None if heyoka is None else (lambda: heyoka[0](pairs)))
+            None if heyoka is None else (lambda: heyoka[0].bare(pairs)))
 
 
 def _propagation_case(n, rng, heyoka):
@@ -83,7 +83,7 @@ def _propagation_case(n, rng, heyoka):
     inputs = np.ascontiguousarray(np.vstack([np.atleast_2d(r0).T, np.atleast_2d(v0).T,
                                              np.full(np.size(dt), MU_EARTH), np.atleast_1d(dt)]))
     return ("propagation", lambda: propagate.propagate(r0, v0, MU_EARTH, dt), "heyoka lagrange_prop",
-            None if heyoka is None else (lambda: heyoka[1](inputs)))
+            None if heyoka is None else (lambda: heyoka[1].bare(inputs)))
 
 
 def _transition_case(n, rng, heyoka):
@@ -118,13 +118,25 @@ CASES = (_kepler_case, _propagation_case, _transition_case, _lambert_case, _orbi
 
 
 def _heyoka_cfuncs():
-    """(kepE, lagrange_prop) cfuncs on one thread, or None without heyoka."""
+    """(kepE, lagrange_prop) cfuncs, or None without heyoka; each one's `bare` call is timed, inside
+    _heyoka_single_thread."""
     try:
         from orbits.validate import peers
 
         return peers.heyoka_kepler_solver(1), peers.heyoka_lagrange_propagator(1)
     except ImportError:
         return None
+
+
+def _heyoka_single_thread(heyoka):
+    """heyoka's cfuncs pinned to one thread for the whole run (a no-op without heyoka)."""
+    import contextlib
+
+    if heyoka is None:
+        return contextlib.nullcontext()
+    from orbits.validate import peers
+
+    return peers.heyoka_threads(1)
 
 
 def bench_call(sizes: Iterable[int] = (1, 1000, 10_000), repeats: int = 5, seed: int = 0,
@@ -144,11 +156,12 @@ def bench_call(sizes: Iterable[int] = (1, 1000, 10_000), repeats: int = 5, seed:
     previous = _fast.set_num_threads(1)
     rows = []
     try:
-        for make in CASES:
-            for n in sizes:
-                case, ours, peer, theirs = make(n, rng, heyoka)
-                rows.append(CallRow(case, n, per_call(ours, repeats), peer if theirs else "",
-                                    None if theirs is None else per_call(theirs, repeats)))
+        with _heyoka_single_thread(heyoka):
+            for make in CASES:
+                for n in sizes:
+                    case, ours, peer, theirs = make(n, rng, heyoka)
+                    rows.append(CallRow(case, n, per_call(ours, repeats), peer if theirs else "",
+                                        None if theirs is None else per_call(theirs, repeats)))
     finally:
         _fast.set_num_threads(previous)
     return rows
