@@ -32,7 +32,7 @@ def info() -> dict[str, Any]:
         "caches": {"heyoka compiled integrators (HEYOKA_CACHE_DIR)": heyoka_cache,
                    "orbits compiled kernels (numba; NUMBA_CACHE_DIR)": _fast.cache_dir() or "in memory (no folder)",
                    "compiled kernels in use (ORBITS_JIT)": _kernels_in_use()},
-        "kernels_ready": {kernel: _fast.ready(kernel) for kernel in _entry_kernels()},
+        "kernels_ready": {kernel: _fast.ready(kernel) for kernel in _fast.entry_kernels()},
         "ephemeris": _ephemeris(),
         "constants": {"G": "CODATA 2018 (astropy.constants)", **{b.name: b.source for b in BODIES.values()}},
         "bodies": [{"name": b.name, "kind": b.kind, "parent": b.parent, "gm_m3_s2": b.gm,
@@ -47,11 +47,6 @@ def _ephemeris() -> str:
     if all(importlib.util.find_spec(m) is not None for m in ("skyfield_data", "jplephem")):
         return "JPL DE421 (skyfield-data, read by jplephem), 1899-07-29 to 2053-10-09"
     return "astropy built-in (approximate; pip install 'orbits[ephemeris]' for JPL DE421)"
-
-
-def _entry_kernels() -> list[str]:
-    """The solvers' entry kernels ("twobody._fast_kepler.elliptic"), as orbits.core._fast.ENTRY_KERNELS lists them."""
-    return [f"{module}.{name}" for module, names in _fast.ENTRY_KERNELS.items() for name in names]
 
 
 def _kernels_in_use() -> str:

@@ -65,6 +65,11 @@ ENTRY_KERNELS = {
     "periodic._fast_cr3bp": ("integrate",),
 }
 
+def entry_kernels():
+    """Every entry kernel's name ("twobody._fast_kepler.elliptic"), in ENTRY_KERNELS' order."""
+    return [f"{module}.{name}" for module, names in ENTRY_KERNELS.items() for name in names]
+
+
 _state = {"mode": None, "threads": None, "pool": None, "cache_dir": None, "announced": set(), "kernels": [],
           "checked": {}, "ready": {}, "numba": None}
 

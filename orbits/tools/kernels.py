@@ -63,11 +63,6 @@ STARTERS = {
 }
 
 
-def entry_kernels() -> list[str]:
-    """Every entry kernel's name ("twobody._fast_kepler.elliptic"), in orbits.core._fast.ENTRY_KERNELS' order."""
-    return [f"{module}.{name}" for module, names in _fast.ENTRY_KERNELS.items() for name in names]
-
-
 def compile_all(report: Callable[[str, float | None], None] = lambda kernel, seconds: None) -> dict[str, float]:
     """Compile (or load) every entry kernel that is not ready, in this process and into the disk cache; returns
     {kernel: seconds} for those compiled, calling report(kernel, None) before each and report(kernel, seconds)
@@ -77,7 +72,7 @@ def compile_all(report: Callable[[str, float | None], None] = lambda kernel, sec
     previous = _fast.set_enabled(True)
     spent = {}
     try:
-        for kernel in entry_kernels():
+        for kernel in _fast.entry_kernels():
             if _fast.ready(kernel):
                 continue
             report(kernel, None)
